@@ -1,0 +1,35 @@
+# `make all` sets up .venv when needed, runs the whole pipeline on the default split and prints the accuracy table.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+SPLIT ?= small
+WORKERS ?= 2
+
+.PHONY: all setup test smoke bench realistic clean
+
+all: $(STAMP)
+	$(BIN)/dynclevr run --split $(SPLIT) --workers $(WORKERS)
+	$(BIN)/dynclevr report --split $(SPLIT)
+
+setup: $(STAMP)
+
+# torch first and pinned, so that no other requirement can pull a CUDA build.
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install -q --disable-pip-version-check torch==2.13.0
+	$(BIN)/pip install -q --disable-pip-version-check -e '.[test]'
+	touch $(STAMP)
+
+test: $(STAMP)
+	$(BIN)/pytest
+
+smoke: $(STAMP)
+	$(BIN)/dynclevr run --split tiny --workers $(WORKERS) --data-dir data
+	$(BIN)/dynclevr report --split tiny
+
+bench: $(STAMP)
+	$(BIN)/python -m benchmarks
+
+clean:
+	rm -rf data/tiny data/small

@@ -1,0 +1,161 @@
+"""The artifact store: `<data-dir>/<split>/<stage-dir>/`, manifests, atomic writes, schema-checked reads.
+
+Every artifact carries its schema name and version (MCAP metadata record `dynclevr`, Parquet schema metadata);
+every stage directory holds a `manifest.json` with one entry per output: stage version, the params it used, the
+digests of its inputs and its own digest. A stage reruns an output only when that cache key changes (as `dvc repro`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import pyarrow as pa
+import pyarrow.parquet as pq
+
+from dynclevr import DynclevrError
+
+# Stage name -> directory name under <data-dir>/<split>/ (DESIGN.md's artifact table).
+STAGE_DIRS = {
+    "simulate": "sim",
+    "render": "video",
+    "annotate": "labels",
+    "parse-scene": "parsed",
+    "simulate-future": "future",
+    "answer": "answers",
+}
+# Which stage makes each artifact kind: named in "rerun ..." hints.
+DIR_STAGES = {v: k for k, v in STAGE_DIRS.items()}
+
+
+class ArtifactError(DynclevrError):
+    pass
+
+
+def file_digest(path: Path) -> str:
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+@contextlib.contextmanager
+def atomic_path(path: Path):
+    """Yield a temporary path beside `path`; rename it into place only if the block succeeds."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def write_json_atomic(path: Path, obj) -> None:
+    with atomic_path(path) as tmp:
+        tmp.write_text(json.dumps(obj, indent=1, sort_keys=True) + "\n")
+
+
+@dataclass
+class Store:
+    """Paths of one split's artifacts."""
+
+    data_dir: Path
+    split: str
+
+    @property
+    def root(self) -> Path:
+        return Path(self.data_dir) / self.split
+
+    def stage_dir(self, stage: str) -> Path:
+        return self.root / STAGE_DIRS[stage]
+
+    def path(self, stage: str, scene: str, suffix: str) -> Path:
+        return self.stage_dir(stage) / f"{scene}{suffix}"
+
+    def split_file(self, name: str) -> Path:
+        """A split-level artifact such as questions.parquet or objects.parquet."""
+        return self.root / name
+
+    def manifest(self, stage: str) -> "Manifest":
+        return Manifest(self.stage_dir(stage) / "manifest.json")
+
+
+class Manifest:
+    """One stage directory's lock file: output name -> {key, params, inputs, digest, stage_version}."""
+
+    def __init__(self, path: Path):
+        self.path = Path(path)
+        self.entries: dict[str, dict] = {}
+        if self.path.exists():
+            try:
+                self.entries = json.loads(self.path.read_text())["entries"]
+            except (ValueError, KeyError):
+                # A corrupt lock only costs a rerun; the artifacts themselves are checked on read.
+                self.entries = {}
+
+    def fresh(self, name: str, key: str, outputs: list[Path]) -> bool:
+        e = self.entries.get(name)
+        if e is None or e["key"] != key or not all(p.exists() for p in outputs):
+            return False
+        return e["digest"] == digest_outputs(outputs)
+
+    def record(self, name: str, key: str, outputs: list[Path], **info) -> None:
+        self.entries[name] = {"key": key, "digest": digest_outputs(outputs), **info}
+
+    def digest(self, name: str) -> str | None:
+        e = self.entries.get(name)
+        return e["digest"] if e else None
+
+    def save(self) -> None:
+        write_json_atomic(self.path, {"entries": dict(sorted(self.entries.items()))})
+
+
+def digest_outputs(outputs: list[Path]) -> str:
+    if len(outputs) == 1:
+        return file_digest(outputs[0])
+    return hashlib.sha256("".join(file_digest(p) for p in outputs).encode()).hexdigest()
+
+
+def _rerun_hint(path: Path) -> str:
+    stage = DIR_STAGES.get(Path(path).parent.name)
+    return f"rerun `dynclevr {stage} --force`" if stage else "regenerate it"
+
+
+# ---- Parquet ---------------------------------------------------------------------------------------------------
+
+def write_parquet(table: pa.Table, path: Path, schema: str, version: int) -> None:
+    """Write `table` atomically, stamped with its schema name and version."""
+    meta = dict(table.schema.metadata or {})
+    meta.update({b"dynclevr.schema": schema.encode(), b"dynclevr.version": str(version).encode()})
+    table = table.replace_schema_metadata(meta)
+    with atomic_path(path) as tmp:
+        pq.write_table(table, tmp, compression="zstd")
+
+
+def read_parquet(path: Path, schema: str, version: int, columns: list[str] | None = None) -> pa.Table:
+    """Read a stamped table; a missing, corrupt or other-version file raises one clear ArtifactError."""
+    path = Path(path)
+    if not path.exists():
+        raise ArtifactError(f"{path} is missing: {_rerun_hint(path)}")
+    try:
+        meta = pq.read_schema(path).metadata or {}
+    except (pa.ArrowException, OSError) as e:
+        raise ArtifactError(f"{path} is not a readable Parquet file ({e}): {_rerun_hint(path)}") from None
+    found = (meta.get(b"dynclevr.schema", b"?").decode(), meta.get(b"dynclevr.version", b"?").decode())
+    if found != (schema, str(version)):
+        raise ArtifactError(f"{path} has schema {found[0]} v{found[1]}, expected {schema} v{version}: "
+                            f"{_rerun_hint(path)}")
+    try:
+        return pq.read_table(path, columns=columns)
+    except (pa.ArrowException, OSError) as e:
+        raise ArtifactError(f"{path} is corrupt ({e}): {_rerun_hint(path)}") from None

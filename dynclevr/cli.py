@@ -1,0 +1,99 @@
+"""`dynclevr <stage> --split NAME [--scenes 0-9] [--force] [--config FILE] [--workers N]`, plus run, status and the
+commands each part of the system registers from dynclevr/commands/. Errors are one line, never a traceback."""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from dynclevr import DynclevrError
+from dynclevr.config import Config
+from dynclevr.pipeline import ORDER, Runner, parse_scenes
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+                  help="DynSuperCLEVR data generation and the NS-4DPhysics model, as a staged, cached pipeline.")
+
+SplitOpt = typer.Option(None, "--split", help="split name from pipeline.toml (default: its default_split)")
+ScenesOpt = typer.Option(None, "--scenes", help="subset of scene indices, e.g. 3-5 or 0,2,7-9")
+ForceOpt = typer.Option(False, "--force", help="rerun even where the cache is fresh")
+ConfigOpt = typer.Option(None, "--config", help="a TOML file merged over pipeline.toml")
+WorkersOpt = typer.Option(1, "--workers", min=1, help="scenes run in parallel processes")
+DataOpt = typer.Option(Path("data"), "--data-dir", help="artifact root: <data-dir>/<split>/<stage>/")
+
+
+def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1) -> Runner:
+    cfg = Config.load(config)
+    return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
+
+
+def _stage_command(name: str):
+    def command(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
+                config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt):
+        r = runner(split, config, data_dir, workers)
+        r.run(name, parse_scenes(scenes, r.split), force)
+
+    command.__doc__ = f"Run the {name} stage over a split (cached per scene)."
+    return command
+
+
+for _name in ORDER:
+    app.command(_name)(_stage_command(_name))
+
+
+@app.command()
+def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
+        config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt):
+    """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer."""
+    r = runner(split, config, data_dir, workers)
+    indices = parse_scenes(scenes, r.split)
+    for name in ORDER:
+        r.run(name, indices, force)
+
+
+@app.command()
+def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt):
+    """Per stage: how many scenes are done (fresh), stale (inputs or params changed) or missing."""
+    r = runner(split, config, data_dir)
+    typer.echo(f"split {r.split.name}: {r.split.scenes} scenes under {r.store.root}")
+    for name in ORDER:
+        try:
+            st = r.status(name)
+        except DynclevrError as e:
+            typer.echo(f"  {name:16s} {e}")
+            continue
+        line = "  ".join(f"{k} {len(v)}" for k, v in st.items())
+        hint = f"  (stale: {', '.join(st['stale'][:5])}{'...' if len(st['stale']) > 5 else ''})" if st["stale"] else ""
+        typer.echo(f"  {name:16s} {line}{hint}")
+
+
+def _register_commands() -> None:
+    import dynclevr.commands as commands
+
+    for info in pkgutil.iter_modules(commands.__path__):
+        importlib.import_module(f"dynclevr.commands.{info.name}").register(app)
+
+
+def main() -> None:
+    _register_commands()
+    try:
+        app(standalone_mode=False)
+    except DynclevrError as e:
+        typer.secho(f"error: {e}", err=True, fg="red")
+        sys.exit(2)
+    except KeyboardInterrupt:
+        typer.echo("interrupted: finished scenes are kept; rerun to continue", err=True)
+        sys.exit(130)
+    except Exception as e:  # click's usage errors and aborts
+        import click
+
+        if isinstance(e, click.exceptions.ClickException):
+            e.show()
+            sys.exit(e.exit_code)
+        if isinstance(e, click.exceptions.Abort):
+            sys.exit(1)
+        raise

@@ -1,0 +1,205 @@
+"""Stages as DVC-like functions of (scene, params, inputs), and the runner that maps them over a split with a cache.
+
+A stage declares what it reads (upstream stages, plus split-level files or weights through `extra_inputs`), its
+params (a config subset) and its version. Its cache key per scene is the digest of all of them; an unchanged key
+with an intact output means the scene is skipped. Split-level outputs (objects.parquet, questions.parquet, ...)
+are written by `finalize` once every scene of the split is done.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass, field
+from multiprocessing import get_context
+from pathlib import Path
+from typing import Callable
+
+from dynclevr import DynclevrError
+from dynclevr.artifacts import STAGE_DIRS, Manifest, Store
+from dynclevr.config import Config, Split, scene_seed, stable_digest
+
+ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
+SPLIT_ENTRY = "_split"
+
+
+@dataclass(frozen=True)
+class SceneJob:
+    """Everything one stage needs to make one scene's outputs. Picklable, so a worker process can run it."""
+
+    split: str
+    scene: str
+    index: int
+    seed: int
+    config: dict
+    data_dir: Path
+    inputs: dict[str, list[Path]]   # upstream stage -> its output paths for this scene
+    outputs: list[Path]             # where to write (with atomic writers)
+
+    @property
+    def cfg(self) -> Config:
+        return Config(self.config)
+
+    @property
+    def store(self) -> Store:
+        return Store(self.data_dir, self.split)
+
+
+@dataclass(frozen=True)
+class Stage:
+    name: str
+    version: int
+    inputs: tuple[str, ...]                          # upstream per-scene stages
+    params: Callable[[Config], dict]                 # the config subset the outputs depend on
+    outputs: tuple[str, ...]                         # per-scene output suffixes
+    run_scene: Callable[[SceneJob], None]
+    finalize: Callable[[Store, Config, list[str]], list[Path]] | None = None
+    extra_inputs: Callable[[Store, Config], dict[str, str]] = field(default=lambda store, cfg: {})
+
+
+def get_stage(name: str) -> Stage:
+    if name not in STAGE_DIRS:
+        raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER)}")
+    module = "dynclevr.stages." + name.replace("-", "_")
+    try:
+        return importlib.import_module(module).STAGE
+    except ModuleNotFoundError as e:
+        if e.name == module:
+            raise DynclevrError(f"stage '{name}' is not built yet ({module} is missing)") from None
+        raise
+
+
+def parse_scenes(spec: str | None, split: Split) -> list[int]:
+    """'3-5' or '0,2,7-9' -> indices; None -> the whole split."""
+    if not spec:
+        return list(range(split.scenes))
+    out: list[int] = []
+    try:
+        for part in spec.split(","):
+            lo, _, hi = part.partition("-")
+            out.extend(range(int(lo), int(hi or lo) + 1))
+    except ValueError:
+        raise DynclevrError(f"--scenes '{spec}' is not a list of indices or ranges such as 3-5 or 0,2,7-9") from None
+    bad = [i for i in out if not 0 <= i < split.scenes]
+    if bad:
+        raise DynclevrError(f"--scenes {spec}: split '{split.name}' has scenes 0-{split.scenes - 1} only")
+    return sorted(set(out))
+
+
+class Runner:
+    def __init__(self, cfg: Config, split: Split, data_dir: Path, workers: int = 1, echo=print):
+        self.cfg, self.split, self.store = cfg, split, Store(Path(data_dir), split.name)
+        self.workers, self.echo = max(1, workers), echo
+
+    # ---- cache keys ----------------------------------------------------------------------------------------------
+
+    def _input_digests(self, stage: Stage, scene: str, manifests: dict[str, Manifest]) -> dict[str, str]:
+        digests = {}
+        for up in stage.inputs:
+            d = manifests[up].digest(scene)
+            if d is None:
+                raise DynclevrError(f"{STAGE_DIRS[up]}/{scene} is missing for {stage.name}: run `dynclevr {up} "
+                                    f"--split {self.split.name}` first")
+            digests[up] = d
+        return digests
+
+    def scene_key(self, stage: Stage, scene: str, index: int, manifests, extra: dict) -> str:
+        return stable_digest({"stage": stage.name, "version": stage.version, "params": stage.params(self.cfg),
+                              "seed": scene_seed(self.split.seed, index),
+                              "inputs": self._input_digests(stage, scene, manifests), "extra": extra})
+
+    def _outputs(self, stage: Stage, scene: str) -> list[Path]:
+        return [self.store.path(stage.name, scene, s) for s in stage.outputs]
+
+    # ---- running -------------------------------------------------------------------------------------------------
+
+    def run(self, name: str, indices: list[int], force: bool = False) -> dict[str, int]:
+        stage = get_stage(name)
+        manifests = {up: self.store.manifest(up) for up in stage.inputs}
+        manifest = self.store.manifest(stage.name)
+        extra = stage.extra_inputs(self.store, self.cfg)
+        todo, cached = [], 0
+        for i in indices:
+            scene = self.split.scene_names()[i]
+            key = self.scene_key(stage, scene, i, manifests, extra)
+            if not force and manifest.fresh(scene, key, self._outputs(stage, scene)):
+                cached += 1
+                continue
+            job = SceneJob(self.split.name, scene, i, scene_seed(self.split.seed, i), self.cfg.data,
+                           self.store.data_dir, {up: self._outputs(get_stage(up), scene) for up in stage.inputs},
+                           self._outputs(stage, scene))
+            todo.append((job, key))
+        self.echo(f"{stage.name}: {len(todo)} to run, {cached} cached (unchanged inputs, params and version)")
+        for job, key in self._map(stage, todo):
+            manifest.record(job.scene, key, job.outputs, stage_version=stage.version, params=stage.params(self.cfg))
+            manifest.save()
+        if stage.finalize:
+            self._finalize(stage, manifest, force)
+        return {"ran": len(todo), "cached": cached}
+
+    def _map(self, stage: Stage, todo):
+        from rich.progress import Progress
+
+        if not todo:
+            return
+        with Progress(transient=True) as bar:
+            task = bar.add_task(stage.name, total=len(todo))
+            if self.workers == 1 or len(todo) == 1:
+                for job, key in todo:
+                    stage.run_scene(job)
+                    bar.advance(task)
+                    yield job, key
+                return
+            with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
+                                     initializer=_worker_init) as pool:
+                futures = [(pool.submit(_run_in_worker, stage.name, job), job, key) for job, key in todo]
+                for fut, job, key in futures:
+                    fut.result()
+                    bar.advance(task)
+                    yield job, key
+
+    def _finalize(self, stage: Stage, manifest: Manifest, force: bool) -> None:
+        scenes = self.split.scene_names()
+        missing = [s for s in scenes if manifest.digest(s) is None]
+        if missing:
+            self.echo(f"{stage.name}: split-level outputs wait for {len(missing)} scenes not yet run")
+            return
+        key = stable_digest({"version": stage.version, "params": stage.params(self.cfg),
+                             "scenes": [manifest.digest(s) for s in scenes],
+                             "extra": stage.extra_inputs(self.store, self.cfg)})
+        prev = manifest.entries.get(SPLIT_ENTRY)
+        if not force and prev and prev["key"] == key and all(Path(p).exists() for p in prev["paths"]):
+            return
+        paths = stage.finalize(self.store, self.cfg, scenes)
+        manifest.record(SPLIT_ENTRY, key, paths, paths=[str(p) for p in paths])
+        manifest.save()
+
+    # ---- status --------------------------------------------------------------------------------------------------
+
+    def status(self, name: str) -> dict[str, list[str]]:
+        stage = get_stage(name)
+        manifests = {up: self.store.manifest(up) for up in stage.inputs}
+        manifest = self.store.manifest(stage.name)
+        extra = stage.extra_inputs(self.store, self.cfg)
+        out = {"done": [], "stale": [], "missing": []}
+        for i, scene in enumerate(self.split.scene_names()):
+            if manifest.digest(scene) is None or not all(p.exists() for p in self._outputs(stage, scene)):
+                out["missing"].append(scene)
+                continue
+            try:
+                key = self.scene_key(stage, scene, i, manifests, extra)
+            except DynclevrError:
+                out["stale"].append(scene)
+                continue
+            out["done" if manifest.fresh(scene, key, self._outputs(stage, scene)) else "stale"].append(scene)
+        return out
+
+
+def _worker_init() -> None:
+    # One core per worker: the pool is the parallelism.
+    os.environ["OMP_NUM_THREADS"] = "1"
+
+
+def _run_in_worker(name: str, job: SceneJob) -> None:
+    get_stage(name).run_scene(job)

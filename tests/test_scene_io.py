@@ -1,0 +1,31 @@
+import numpy as np
+import pytest
+
+from dynclevr.artifacts import ArtifactError
+from dynclevr.mcapio import McapOut
+from dynclevr.scene import Scene4D
+
+
+def test_scene_roundtrip_and_bytes(tiny_scene, tmp_path):
+    a, b = tmp_path / "a.mcap", tmp_path / "b.mcap"
+    tiny_scene.write(a, kind="truth")
+    tiny_scene.write(b, kind="truth")
+    assert a.read_bytes() == b.read_bytes()  # no wall clock in files
+    back = Scene4D.read(a)
+    assert [o.shape for o in back.objects] == ["sedan", "school_bus"]
+    np.testing.assert_allclose(back.position, tiny_scene.position)
+    assert back.collisions[0].pair() == frozenset({0, 1})
+    assert back.counterfactuals == {(1, "static"): []}
+    assert back.camera == tiny_scene.camera
+
+
+def test_corrupt_and_wrong_version(tiny_scene, tmp_path):
+    p = tmp_path / "000000.mcap"
+    tiny_scene.write(p, kind="truth")
+    p.write_bytes(p.read_bytes()[: len(p.read_bytes()) // 2])
+    with pytest.raises(ArtifactError, match="not a readable MCAP|corrupt"):
+        Scene4D.read(p)
+    with McapOut(p, "dynclevr.scene4d", 99):
+        pass
+    with pytest.raises(ArtifactError, match="v99, expected dynclevr.scene4d v1"):
+        Scene4D.read(p)
