@@ -1,0 +1,38 @@
+"""`dynclevr train parser` and `dynclevr train qparser`: reproduce the shipped weights from the train split."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from dynclevr import WEIGHTS_DIR
+
+
+def register(app: typer.Typer) -> None:
+    from dynclevr.cli import ConfigOpt, DataOpt, WorkersOpt
+
+    train = typer.Typer(no_args_is_help=True, help="Train the model's parts on a split; writes weights + manifest.")
+    app.add_typer(train, name="train")
+
+    @train.command("parser")
+    def parser(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
+               data_dir: Path = DataOpt, workers: int = WorkersOpt,
+               out: Path = typer.Option(WEIGHTS_DIR / "parser", "--out")):
+        """Scene parser: feature CNN, neural mesh models, background model, colour classifier."""
+        from dynclevr.config import Config
+        from dynclevr.perception.train import train_parser
+
+        cfg = Config.load(config)
+        train_parser(cfg, data_dir, cfg.split(split), out, workers, echo=typer.echo)
+
+    @train.command("qparser")
+    def qparser(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
+                data_dir: Path = DataOpt, out: Path = typer.Option(WEIGHTS_DIR / "qparser", "--out")):
+        """Question parser: attention LSTM seq2seq from question text to program; also the blind baseline."""
+        from dynclevr.config import Config
+        from dynclevr.language.train import train_qparser
+
+        cfg = Config.load(config)
+        train_qparser(cfg, data_dir, cfg.split(split), out, echo=typer.echo)
