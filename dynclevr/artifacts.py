@@ -31,6 +31,9 @@ STAGE_DIRS = {
 }
 # Which stage makes each artifact kind: named in "rerun ..." hints.
 DIR_STAGES = {v: k for k, v in STAGE_DIRS.items()}
+# The model's stages; a model variant (the paper's ablation without the physics prior) writes them to
+# `<dir>-<variant>/` beside the main model's outputs so both rows of the report come from one data directory.
+MODEL_STAGES = ("parse-scene", "simulate-future", "answer")
 
 
 class ArtifactError(DynclevrError):
@@ -71,13 +74,15 @@ class Store:
 
     data_dir: Path
     split: str
+    variant: str = ""
 
     @property
     def root(self) -> Path:
         return Path(self.data_dir) / self.split
 
     def stage_dir(self, stage: str) -> Path:
-        return self.root / STAGE_DIRS[stage]
+        suffix = f"-{self.variant}" if self.variant and stage in MODEL_STAGES else ""
+        return self.root / (STAGE_DIRS[stage] + suffix)
 
     def path(self, stage: str, scene: str, suffix: str) -> Path:
         return self.stage_dir(stage) / f"{scene}{suffix}"
@@ -127,7 +132,7 @@ def digest_outputs(outputs: list[Path]) -> str:
 
 
 def _rerun_hint(path: Path) -> str:
-    stage = DIR_STAGES.get(Path(path).parent.name)
+    stage = DIR_STAGES.get(Path(path).parent.name.split("-")[0])
     return f"rerun `dynclevr {stage} --force`" if stage else "regenerate it"
 
 

@@ -24,17 +24,29 @@ ForceOpt = typer.Option(False, "--force", help="rerun even where the cache is fr
 ConfigOpt = typer.Option(None, "--config", help="a TOML file merged over pipeline.toml")
 WorkersOpt = typer.Option(1, "--workers", min=1, help="scenes run in parallel processes")
 DataOpt = typer.Option(Path("data"), "--data-dir", help="artifact root: <data-dir>/<split>/<stage>/")
+NoPriorOpt = typer.Option(False, "--no-physics-prior",
+                          help="the paper's ablation: the scene parser without the physics prior; model outputs "
+                               "go to parsed-noprior/, future-noprior/, answers-noprior/")
 
 
-def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1) -> Runner:
+def load_config(config: Path | None, no_physics_prior: bool = False) -> Config:
     cfg = Config.load(config)
+    if no_physics_prior:
+        cfg.data.setdefault("parser", {})["physics_prior"] = False
+    return cfg
+
+
+def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1,
+           no_physics_prior: bool = False) -> Runner:
+    cfg = load_config(config, no_physics_prior)
     return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
 
 
 def _stage_command(name: str):
     def command(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
-                config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt):
-        r = runner(split, config, data_dir, workers)
+                config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
+                no_physics_prior: bool = NoPriorOpt):
+        r = runner(split, config, data_dir, workers, no_physics_prior)
         r.run(name, parse_scenes(scenes, r.split), force)
 
     command.__doc__ = f"Run the {name} stage over a split (cached per scene)."
@@ -47,12 +59,19 @@ for _name in ORDER:
 
 @app.command()
 def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
-        config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt):
+        config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
+        ablation: bool = typer.Option(True, "--ablation/--no-ablation",
+                                      help="also run the model without the physics prior (the report's 2nd row)")):
     """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer."""
     r = runner(split, config, data_dir, workers)
     indices = parse_scenes(scenes, r.split)
     for name in ORDER:
         r.run(name, indices, force)
+    if ablation:
+        r = runner(split, config, data_dir, workers, no_physics_prior=True)
+        typer.echo("ablation without the physics prior:")
+        for name in ORDER[3:]:
+            r.run(name, indices, force)
 
 
 @app.command()

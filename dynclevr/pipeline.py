@@ -58,6 +58,11 @@ class Stage:
     extra_inputs: Callable[[Store, Config], dict[str, str]] = field(default=lambda store, cfg: {})
 
 
+def model_variant(cfg: Config) -> str:
+    """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior."""
+    return "" if cfg.data.get("parser", {}).get("physics_prior", True) else "noprior"
+
+
 def get_stage(name: str) -> Stage:
     if name not in STAGE_DIRS:
         raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER)}")
@@ -89,7 +94,8 @@ def parse_scenes(spec: str | None, split: Split) -> list[int]:
 
 class Runner:
     def __init__(self, cfg: Config, split: Split, data_dir: Path, workers: int = 1, echo=print):
-        self.cfg, self.split, self.store = cfg, split, Store(Path(data_dir), split.name)
+        self.cfg, self.split = cfg, split
+        self.store = Store(Path(data_dir), split.name, model_variant(cfg))
         self.workers, self.echo = max(1, workers), echo
 
     # ---- cache keys ----------------------------------------------------------------------------------------------

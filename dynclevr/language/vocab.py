@@ -1,0 +1,76 @@
+"""Token <-> id maps for the question words and the program tokens, saved as JSON."""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from pathlib import Path
+from typing import Iterable
+
+from dynclevr.artifacts import ArtifactError, write_json_atomic
+
+PAD, SOS, EOS, UNK = "<pad>", "<sos>", "<eos>", "<unk>"
+SPECIALS = (PAD, SOS, EOS, UNK)
+PAD_ID, SOS_ID, EOS_ID, UNK_ID = range(4)
+
+
+class Vocab:
+    def __init__(self, tokens: Iterable[str]):
+        self.itos = list(SPECIALS) + [t for t in tokens if t not in SPECIALS]
+        self.stoi = {t: i for i, t in enumerate(self.itos)}
+        if len(self.stoi) != len(self.itos):
+            raise ValueError("vocabulary tokens must be unique")
+
+    @classmethod
+    def build(cls, sequences: Iterable[list[str]]) -> "Vocab":
+        # Sorted by (-count, token): the same data gives the same ids whatever the row order.
+        counts = Counter(t for seq in sequences for t in seq)
+        return cls(t for t, _ in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])))
+
+    def __len__(self) -> int:
+        return len(self.itos)
+
+    def __contains__(self, token: str) -> bool:
+        return token in self.stoi and token not in SPECIALS
+
+    def encode(self, tokens: list[str]) -> list[int]:
+        return [self.stoi.get(t, UNK_ID) for t in tokens]
+
+    def decode(self, ids: Iterable[int]) -> list[str]:
+        return [self.itos[i] for i in ids]
+
+    def closest(self, word: str) -> str | None:
+        """The one vocabulary word one edit (insert, delete, substitute, swap) from `word`, for words of 4+ letters;
+        None when there is none or more than one (a typo is fixed only when the fix is unambiguous)."""
+        if len(word) < 4:
+            return None
+        hits = [t for t in self.itos[len(SPECIALS):] if abs(len(t) - len(word)) <= 1 and _one_edit(word, t)]
+        return hits[0] if len(hits) == 1 else None
+
+    def save(self, path: Path) -> None:
+        write_json_atomic(path, {"tokens": self.itos})
+
+    @classmethod
+    def load(cls, path: Path) -> "Vocab":
+        try:
+            tokens = json.loads(Path(path).read_text())["tokens"]
+        except FileNotFoundError:
+            raise ArtifactError(f"{path} is missing: run `dynclevr train qparser`") from None
+        except (ValueError, KeyError, TypeError) as e:
+            raise ArtifactError(f"{path} is not a vocabulary file ({e}): run `dynclevr train qparser`") from None
+        if list(tokens[:len(SPECIALS)]) != list(SPECIALS):
+            raise ArtifactError(f"{path} does not start with {SPECIALS}: run `dynclevr train qparser`")
+        return cls(tokens)
+
+
+def _one_edit(a: str, b: str) -> bool:
+    """Damerau-Levenshtein distance exactly 1 (optimal string alignment)."""
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diff = [i for i in range(len(a)) if a[i] != b[i]]
+        return len(diff) == 1 or (len(diff) == 2 and diff[1] == diff[0] + 1
+                                  and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]])
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    i = next((k for k in range(len(short)) if short[k] != long_[k]), len(short))
+    return short[i:] == long_[i + 1:]
