@@ -131,8 +131,12 @@ def digest_outputs(outputs: list[Path]) -> str:
     return hashlib.sha256("".join(file_digest(p) for p in outputs).encode()).hexdigest()
 
 
+# Split-level artifacts -> the stage that writes them.
+SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate"}
+
+
 def _rerun_hint(path: Path) -> str:
-    stage = DIR_STAGES.get(Path(path).parent.name.split("-")[0])
+    stage = SPLIT_FILES.get(Path(path).name) or DIR_STAGES.get(Path(path).parent.name.split("-")[0])
     return f"rerun `dynclevr {stage} --force`" if stage else "regenerate it"
 
 

@@ -1,0 +1,112 @@
+"""The paper's Table 1 measured on our data: NS-4DPhysics, its ablation without the physics prior, the oracle
+(truth scene + gold programs), the blind baseline, and the paper's reported rows for reference."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+from dynclevr import WEIGHTS_DIR, DynclevrError
+from dynclevr.artifacts import Store, read_parquet
+from dynclevr.config import Config
+from dynclevr.questions.programs import execute
+from dynclevr.scene import Scene4D
+from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
+from dynclevr.stages.answer import ANSWERS_SCHEMA, ANSWERS_VERSION, table1
+
+COLUMNS = ("Average", "Factual All", "Vel", "Acc", "Col", "Predictive", "Counterfactual")
+PAPER = {  # REFERENCE.md section 3 (paper, Table 1, its test split)
+    "paper: NS-4DPhysics": (82.64, 87.70, 88.66, 83.73, 88.46, 85.71, 74.51),
+    "paper: NS-4DPhysics w/o physics prior": (75.97, 79.68, 81.40, 81.30, 74.88, 78.83, 69.39),
+    "paper: PO3D-VQA": (62.93, 61.22, 62.21, 73.17, 51.20, 65.33, 62.24),
+    "paper: PLLaVA": (59.24, 54.61, 55.00, 63.80, 46.63, 67.52, 73.47),
+    "paper: GPT-4o + reasoning": (56.06, 55.50, 58.81, 57.67, 47.12, 56.93, 58.16),
+    "paper: CNN+LSTM": (48.03, 40.63, 41.71, 56.79, 25.37, 56.04, 47.42),
+}
+
+
+def _answers(store: Store, variant: str) -> list[dict] | None:
+    path = Store(store.data_dir, store.split, variant).stage_dir("answer") / "answers.parquet"
+    return read_parquet(path, ANSWERS_SCHEMA, ANSWERS_VERSION).to_pylist() if path.exists() else None
+
+
+def oracle_rows(store: Store, cfg: Config, questions: list[dict]) -> list[dict]:
+    """Gold programs on the truth scenes: checks the executor and the generator agree (must be 100%)."""
+    scenes: dict[str, Scene4D] = {}
+    rows = []
+    for q in questions:
+        if q["scene"] not in scenes:
+            scenes[q["scene"]] = Scene4D.read(store.path("simulate", q["scene"], ".mcap"))
+        try:
+            ok = execute(q["program"], scenes[q["scene"]], cfg["labels"]) == q["answer"]
+        except DynclevrError:
+            ok = False
+        rows.append({**q, "correct": ok})
+    return rows
+
+
+def blind_rows(questions: list[dict]) -> list[dict] | None:
+    path = WEIGHTS_DIR / "qparser" / "blind.json"
+    if not path.exists():
+        return None
+    majority = json.loads(path.read_text())["majority"]
+    return [{**q, "correct": majority.get(q["family"]) == q["answer"]} for q in questions]
+
+
+def build(store: Store, cfg: Config) -> tuple[dict[str, tuple], dict]:
+    questions = read_parquet(store.split_file("questions.parquet"), QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
+    rows: dict[str, tuple] = {}
+    extra = {"questions": len(questions), "videos": len({q["scene"] for q in questions})}
+    for name, variant in [("NS-4DPhysics (ours)", ""), ("ours without physics prior", "noprior")]:
+        answers = _answers(store, variant)
+        if answers is None:
+            continue
+        rows[name] = tuple(table1(answers)[c][0] for c in COLUMNS)
+        extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / len(answers)
+        extra[f"{name}: unparsed"] = sum(a["status"] == "unparsed" for a in answers)
+        extra[f"{name}: failed programs"] = sum(a["status"] == "failed" for a in answers)
+    rows["oracle (truth scene, gold programs)"] = tuple(
+        table1(oracle_rows(store, cfg, questions))[c][0] for c in COLUMNS)
+    blind = blind_rows(questions)
+    if blind is not None:
+        rows["blind (train-split majority per family)"] = tuple(table1(blind)[c][0] for c in COLUMNS)
+    counts = table1([{**q, "correct": True} for q in questions])
+    extra["counts"] = {c: counts[c][1] for c in COLUMNS}
+    return {**rows, **PAPER}, extra
+
+
+def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
+    fmt = lambda v: "–" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{v:.2f}"
+    lines = [f"# Accuracy on split `{split}` ({extra['videos']} videos, {extra['questions']} questions)", "",
+             "| model | " + " | ".join(COLUMNS) + " |", "|---" * (len(COLUMNS) + 1) + "|",
+             "| questions | " + " | ".join(str(extra["counts"][c]) for c in COLUMNS) + " |"]
+    lines += [f"| {name} | " + " | ".join(fmt(v) for v in vals) + " |" for name, vals in rows.items()]
+    lines.append("")
+    lines += [f"- {k}: {fmt(v) if isinstance(v, float) else v}" for k, v in extra.items()
+              if k not in ("counts", "questions", "videos")]
+    return "\n".join(lines) + "\n"
+
+
+def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    names = [n for n in rows if not n.startswith("paper:") or n in ("paper: NS-4DPhysics",
+                                                                     "paper: NS-4DPhysics w/o physics prior")]
+    x = np.arange(len(COLUMNS))
+    w = 0.8 / len(names)
+    fig, ax = plt.subplots(figsize=(11, 4.5))
+    for k, n in enumerate(names):
+        ax.bar(x + k * w - 0.4 + w / 2, [0 if math.isnan(v) else v for v in rows[n]], w, label=n)
+    ax.set_xticks(x, COLUMNS)
+    ax.set_ylabel("accuracy (%)")
+    ax.set_ylim(0, 105)
+    ax.set_title(f"DynSuperCLEVR question answering, split '{split}'")
+    ax.legend(fontsize=7, ncol=2, loc="lower right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)

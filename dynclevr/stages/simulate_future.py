@@ -1,0 +1,117 @@
+"""simulate-future: the model's imagination (REFERENCE section 2, item 5).
+
+The estimated state is put into the same physics engine that made the data and simulated forward:
+- predictive: from the state estimated at the last observed frame (the parser is causal, so it used frames up to
+  there only), simulated to the end of the video; the collisions after the observed frames are the prediction;
+- counterfactual: from the estimated initial state with one intervention on one object, over the whole video.
+Reads only parsed/ (the model's estimate); never the truth.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pyarrow as pa
+
+from dynclevr.artifacts import read_parquet, write_parquet
+from dynclevr.physics import Body, PhysicsParams, World, counterfactual, simulate
+from dynclevr.pipeline import SceneJob, Stage
+from dynclevr.scene import INTERVENTIONS, Collision, Scene4D
+
+FUTURE_SCHEMA = "dynclevr.future"
+FUTURE_VERSION = 1
+FUTURE_FIELDS = pa.schema([("run", pa.string()), ("object", pa.int32()), ("intervention", pa.string()),
+                           ("frame", pa.int32()), ("a", pa.int32()), ("b", pa.int32()), ("x", pa.float64()),
+                           ("y", pa.float64()), ("z", pa.float64()), ("impulse", pa.float64())])
+
+
+def _bodies(scene: Scene4D, t: np.ndarray, ids: list[int]) -> list[Body]:
+    """Bodies at per-object frames `t` (one per id), from the estimate."""
+    out = []
+    for k, oid in enumerate(ids):
+        i, f = scene.index(oid), int(t[k])
+        o = scene.objects[i]
+        out.append(Body(o.shape, tuple(scene.position[f, i]), tuple(scene.orientation[f, i]),
+                        tuple(scene.velocity[f, i]), tuple(scene.angular_velocity[f, i]),
+                        bool(scene.engine[f, i]), bool(scene.floating[f, i]), o.mass))
+    return out
+
+
+def _events(events: list[Collision], ids: list[int], offset: int = 0) -> list[Collision]:
+    """Physics events name body indices; the scene names object ids."""
+    return [Collision(e.frame + offset, min(ids[e.a], ids[e.b]), max(ids[e.a], ids[e.b]), e.point, e.impulse)
+            for e in events]
+
+
+def initial_bodies(scene: Scene4D) -> tuple[list[Body], list[int]]:
+    """Every tracked object at the first frame it was seen, moved back to frame 0 along its velocity (an object
+    that enters later was already driving before it came into view)."""
+    ids = [o.id for o in scene.objects if scene.visible[:, scene.index(o.id)].any()]
+    first = np.array([int(np.argmax(scene.visible[:, scene.index(oid)])) for oid in ids])
+    bodies = _bodies(scene, first, ids)
+    for k, f in enumerate(first):
+        if f:
+            b = bodies[k]
+            back = np.asarray(b.position) - np.asarray(b.velocity) * f / scene.fps
+            back[2] = b.position[2]
+            bodies[k] = Body(b.shape, tuple(back), b.orientation, b.velocity, b.angular_velocity, b.engine_on,
+                             b.floating, b.mass)
+    return bodies, ids
+
+
+def predict(scene: Scene4D, params: PhysicsParams) -> tuple[list[Collision], dict[tuple[int, str], list[Collision]]]:
+    last = scene.observed_frames - 1
+    seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
+    future: list[Collision] = []
+    if seen:
+        bodies = _bodies(scene, np.full(len(seen), last), seen)
+        run = simulate(bodies, params, scene.num_frames - last, record=False)
+        future = [e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames]
+    outcomes: dict[tuple[int, str], list[Collision]] = {}
+    bodies, ids = initial_bodies(scene)
+    if bodies:
+        with World(bodies, params) as world:
+            for k, oid in enumerate(ids):
+                for iv in INTERVENTIONS:
+                    events = counterfactual(bodies, k, iv, params, scene.num_frames, world=world)
+                    # An intervention that changes nothing (the object already is static, say) leaves the video
+                    # as it was seen: its outcome is the observed collisions.
+                    outcomes[(oid, iv)] = scene.collisions if events is None else _events(events, ids)
+    return future, outcomes
+
+
+def run_scene(job: SceneJob) -> None:
+    scene = Scene4D.read(job.inputs["parse-scene"][0])
+    future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg))
+    rows = [("future", -1, "", e) for e in future]
+    rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
+    # A run with no collision still needs a row, so that "no collision" differs from "not simulated".
+    rows += [("counterfactual", oid, iv, None) for (oid, iv), events in sorted(outcomes.items()) if not events]
+    cols = {f.name: [] for f in FUTURE_FIELDS}
+    for run, oid, iv, e in rows:
+        vals = [run, oid, iv] + ([e.frame, e.a, e.b, *e.point, e.impulse] if e else [-1, -1, -1, 0.0, 0.0, 0.0, 0.0])
+        for f, v in zip(FUTURE_FIELDS, vals):
+            cols[f.name].append(v)
+    write_parquet(pa.table(cols, schema=FUTURE_FIELDS), job.outputs[0], FUTURE_SCHEMA, FUTURE_VERSION)
+
+
+def attach(scene: Scene4D, path: Path) -> Scene4D:
+    """The estimated scene completed with its simulated future and counterfactual outcomes."""
+    t = read_parquet(path, FUTURE_SCHEMA, FUTURE_VERSION).to_pylist()
+    scene.future_collisions = [_row_event(r) for r in t if r["run"] == "future"]
+    scene.counterfactuals = {}
+    for r in t:
+        if r["run"] == "counterfactual":
+            events = scene.counterfactuals.setdefault((r["object"], r["intervention"]), [])
+            if r["frame"] >= 0:
+                events.append(_row_event(r))
+    return scene
+
+
+def _row_event(r: dict) -> Collision:
+    return Collision(r["frame"], r["a"], r["b"], (r["x"], r["y"], r["z"]), r["impulse"])
+
+
+STAGE = Stage("simulate-future", 1, inputs=("parse-scene",),
+              params=lambda cfg: cfg.digest("physics", "video", "labels"), outputs=(".parquet",), run_scene=run_scene)
