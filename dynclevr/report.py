@@ -108,5 +108,5 @@ def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
     ax.set_title(f"DynSuperCLEVR question answering, split '{split}'")
     ax.legend(fontsize=7, ncol=2, loc="lower right")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, format="png")
     plt.close(fig)

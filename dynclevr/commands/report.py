@@ -26,6 +26,5 @@ def register(app: typer.Typer) -> None:
         with atomic_path(store.root / "report.md") as tmp:
             tmp.write_text(text)
         with atomic_path(store.root / "report.png") as tmp:
-            bar_chart(tmp.with_suffix(".png"), store.split, rows)
-            tmp.with_suffix(".png").replace(tmp)
+            bar_chart(tmp, store.split, rows)
         typer.echo(f"written: {store.root / 'report.md'}, {store.root / 'report.png'}")
