@@ -45,7 +45,10 @@ def _merge(base: dict, user: dict, where: str, source: Path) -> None:
     for key, value in user.items():
         name = f"{where}{key}"
         if where == "splits." and key not in base:
-            base[key] = {}  # a new split: checked against the split shape below
+            if not isinstance(value, dict):
+                raise ConfigError(f"{source}: '{name}' must be a table with seed and scenes")
+            base[key] = dict(value)  # a new split: Config._check checks its shape
+            continue
         if key not in base:
             raise ConfigError(f"{source}: unknown config key '{name}': remove it or check its spelling")
         if isinstance(base[key], dict):

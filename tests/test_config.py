@@ -1,0 +1,62 @@
+import subprocess
+import sys
+
+import pytest
+
+from dynclevr.config import Config, ConfigError, scene_seed
+from dynclevr.pipeline import parse_scenes
+
+
+def write(tmp_path, text):
+    p = tmp_path / "user.toml"
+    p.write_text(text)
+    return p
+
+
+def test_user_split_and_override(tmp_path):
+    cfg = Config.load(write(tmp_path, "[splits.mine]\nseed = 5\nscenes = 4\n[physics]\ngravity = 9\n"))
+    assert cfg.split("mine").scenes == 4
+    assert cfg["physics"]["gravity"] == 9.0 and isinstance(cfg["physics"]["gravity"], float)
+    assert cfg.split("mine").scene_names() == ["000000", "000001", "000002", "000003"]
+
+
+def test_scene_seeds_depend_on_split_seed_and_index():
+    assert scene_seed(1, 0) != scene_seed(2, 0)
+    assert scene_seed(1, 0) != scene_seed(1, 1)
+    assert scene_seed(1, 3) == scene_seed(1, 3)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[physics]\ngravty = 9.0\n", "unknown config key 'physics.gravty'"),
+    ("[physics]\ngravity = 'strong'\n", "'physics.gravity' = 'strong' has the wrong type"),
+    ("[physics]\nrestitution = 1.5\n", "'physics.restitution' = 1.5 must lie in \\[0, 1\\]"),
+    ("[splits.x]\nseed = 1\nscenes = 0\n", "scenes = 0 must be a positive integer"),
+    ("[render]\nbackend = 'povray'\n", "use 'tiny' or 'mitsuba'"),
+    ("[physics\n", "not valid TOML"),
+])
+def test_bad_config_values(tmp_path, text, message):
+    with pytest.raises(ConfigError, match=message):
+        Config.load(write(tmp_path, text))
+
+
+def test_unknown_split():
+    with pytest.raises(ConfigError, match="unknown split 'nope'"):
+        Config.load().split("nope")
+
+
+def test_scene_ranges():
+    split = Config.load().split("small")
+    assert parse_scenes("3-5", split) == [3, 4, 5]
+    assert parse_scenes("0,2,7-8", split) == [0, 2, 7, 8]
+    with pytest.raises(Exception, match="has scenes 0-"):
+        parse_scenes("0-999", split)
+
+
+def test_cli_bad_config_is_one_line(tmp_path):
+    """A bad config value reaches the user as one clear line, not a traceback."""
+    cfg = write(tmp_path, "[physics]\ngravity = 'strong'\n")
+    out = subprocess.run([sys.executable, "-m", "dynclevr.cli", "status", "--config", str(cfg)],
+                         capture_output=True, text=True)
+    assert out.returncode == 2
+    lines = out.stderr.strip().splitlines()
+    assert len(lines) == 1 and "physics.gravity" in lines[0], out.stderr
