@@ -3,14 +3,14 @@
 Conventions (shared by physics, render and the scene parser):
 - metres; the vehicle faces +x, its left is +y, up is +z;
 - the mesh is centred on its bounding-box centre, which is the object's position in Scene4D;
-- sizes are scaled as in Super-CLEVR (all vehicles comparable, 1.5 to 4.5 m long) so that every sub-type is
+- sizes are scaled as in Super-CLEVR (all vehicles comparable, 1.5 to 4.6 m long) so that every sub-type is
   readable in the same 320x240 view; proportions within a vehicle are realistic.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 import trimesh
@@ -53,38 +53,39 @@ class Asset:
     size: tuple[float, float, float]
     parts: dict[str, trimesh.Trimesh]   # part name -> mesh, in the object frame
 
-    @property
+    # Derived meshes are cached on the instance (get_asset caches the instance), so physics, rendering and the scene
+    # parser build each at most once per process. cached_property writes the instance __dict__ directly, which a
+    # frozen dataclass allows.
+    @cached_property
     def mesh(self) -> trimesh.Trimesh:
         """All parts as one mesh (for silhouettes and the scene parser)."""
-        return trimesh.util.concatenate(list(self.parts.values()))
+        return trimesh.util.concatenate([self.parts[p] for p in PARTS if p in self.parts])
+
+    @cached_property
+    def hull(self) -> trimesh.Trimesh:
+        """Convex hull of the whole vehicle: the collision shape and the volume."""
+        return self.mesh.convex_hull
 
     @property
     def volume(self) -> float:
-        """Volume of the convex hull of the whole vehicle (part meshes need not be watertight)."""
-        return float(self.mesh.convex_hull.volume)
+        """Volume of the convex hull: the part meshes overlap and are not watertight, so their own volume is
+        undefined; the hull is the solid the physics engine simulates anyway."""
+        return float(self.hull.volume)
 
     def mass(self, density: float = DENSITY) -> float:
         return density * self.volume
 
     @property
     def collision_hull(self) -> np.ndarray:
-        """Vertices of the convex hull used as the physics collision shape."""
-        return np.asarray(self.mesh.convex_hull.vertices)
-
-
-def _placeholder_parts(size) -> dict[str, trimesh.Trimesh]:
-    # Replaced by the procedural meshes in dynclevr/assets/meshes.py once they exist.
-    return {"body": trimesh.creation.box(extents=size)}
+        """Vertices of the convex hull used as the physics collision shape (pybullet GEOM_MESH)."""
+        return np.asarray(self.hull.vertices)
 
 
 @lru_cache(maxsize=None)
 def get_asset(name: str) -> Asset:
     if name not in SUBTYPES:
         raise KeyError(f"unknown sub-type {name!r}; known: {', '.join(SUBTYPES)}")
+    from dynclevr.assets.meshes import build_parts   # imports this module for PARTS
+
     category, size = SUBTYPES[name]
-    try:
-        from dynclevr.assets.meshes import build_parts
-    except ImportError:
-        build_parts = None
-    parts = build_parts(name, size) if build_parts else _placeholder_parts(size)
-    return Asset(name, category, size, parts)
+    return Asset(name, category, size, build_parts(name, size))
