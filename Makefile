@@ -31,5 +31,12 @@ smoke: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python -m benchmarks
 
+# The realistic render backend (render.backend = "mitsuba"): Mitsuba 3's LLVM variant needs libLLVM (Debian's 19).
+realistic: $(STAMP)
+	@ls /usr/lib/x86_64-linux-gnu/libLLVM-19.so* >/dev/null 2>&1 || ! command -v apt-get >/dev/null || \
+		{ apt-get install -y -q libllvm19 || { apt-get update -q && apt-get install -y -q libllvm19; }; }
+	$(BIN)/pip install -q --disable-pip-version-check -e '.[realistic]'
+	$(BIN)/python -c "from dynclevr.render.mitsuba import require_mitsuba; require_mitsuba(); print('mitsuba ready')"
+
 clean:
 	rm -rf data/tiny data/small

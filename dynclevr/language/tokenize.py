@@ -7,8 +7,8 @@ import unicodedata
 
 _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 # One spelling per word, so that the vocabulary (built from generated questions) covers common variants.
-_SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "aeroplane": "airplane",
-              "aeroplanes": "airplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes"}
+_SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
+              "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes"}
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 
 

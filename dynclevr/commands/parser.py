@@ -1,0 +1,47 @@
+"""`dynclevr eval-parser --split S`: the scene parser against the truth, with and without the physics prior."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+REPORT = "parser_eval.md"
+
+
+def register(app: typer.Typer) -> None:
+    from dynclevr.cli import ConfigOpt, DataOpt, ScenesOpt, SplitOpt, WorkersOpt
+
+    @app.command("eval-parser")
+    def eval_parser(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt,
+                    config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt):
+        """Detection, identity, position, dynamics and collision metrics of parsed/ (and parsed-noprior/) against
+        sim/; runs simulate, render and parse-scene first where they are not cached. Writes <split>/parser_eval.md."""
+        from dynclevr.artifacts import write_json_atomic
+        from dynclevr.cli import load_config
+        from dynclevr.perception.evaluate import markdown, scene_stats, summarise
+        from dynclevr.pipeline import Runner, parse_scenes
+        from dynclevr.scene import Scene4D
+
+        results = {}
+        for name, no_prior in (("NS-4DPhysics", False), ("without physics prior", True)):
+            cfg = load_config(config, no_prior)
+            r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
+            indices = parse_scenes(scenes, r.split)
+            for stage in ("simulate", "render", "parse-scene"):
+                r.run(stage, indices)
+            stats = []
+            for i in indices:
+                scene = r.split.scene_names()[i]
+                stats.append(scene_stats(Scene4D.read(r.store.path("simulate", scene, ".mcap")),
+                                         Scene4D.read(r.store.path("parse-scene", scene, ".mcap")), cfg["labels"]))
+            results[name] = summarise(stats)
+        table = markdown(results)
+        out = r.store.split_file(REPORT)
+        out.write_text(f"# Scene parser on split {r.split.name} ({len(indices)} scenes)\n\n"
+                       f"`dynclevr eval-parser --split {r.split.name}"
+                       f"{f' --scenes {scenes}' if scenes else ''}`\n\n{table}")
+        write_json_atomic(out.with_suffix(".json"), results)
+        typer.echo(table)
+        typer.echo(f"written to {out}")

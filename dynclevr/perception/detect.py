@@ -1,0 +1,90 @@
+"""Object proposals and identity from the model itself (no ground truth anywhere).
+
+1. The CNN's centre heatmap gives peaks; its distance head places each peak's object centre on the camera ray.
+2. Every sub-type's neural mesh is scored there over a coarse grid of headings (render-and-compare, each hypothesis
+   alone); the best heading of each of the `detect_subtypes` most likely sub-types is refined by gradient ascent,
+   and the sub-type with the highest likelihood wins (paper: "shape = the mesh model with the highest likelihood").
+3. A proposal is kept when its mean log-likelihood ratio per foreground cell is high enough, and when no better
+   proposal (or existing track) already explains the same place.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import torch
+from torch.nn import functional as F
+
+from dynclevr.perception.neural_mesh import NeuralMeshes
+from dynclevr.perception.pose import Evidence, fit, score
+from dynclevr.perception.render import GridCamera
+
+
+@dataclass
+class Proposal:
+    pose: np.ndarray        # [6]
+    mesh: int               # index into NeuralMeshes.subtypes
+    loglik: float
+    quality: float          # mean log-likelihood ratio per visible foreground cell
+
+
+def peaks(heat: torch.Tensor, threshold: float, limit: int) -> list[tuple[int, int, float]]:
+    """Local maxima of the heatmap logits [H, W] above `threshold` (probability): (row, col, probability)."""
+    prob = torch.sigmoid(heat)
+    is_max = prob == F.max_pool2d(prob[None, None], 3, 1, 1)[0, 0]
+    rows, cols = torch.nonzero(is_max & (prob > threshold), as_tuple=True)
+    order = prob[rows, cols].argsort(descending=True)[:limit]
+    return [(int(rows[i]), int(cols[i]), float(prob[rows[i], cols[i]])) for i in order]
+
+
+def propose(feats: torch.Tensor, heat: torch.Tensor, logdist: torch.Tensor, meshes: NeuralMeshes, cam: GridCamera,
+            p: dict, exclude: list[np.ndarray] = ()) -> list[Proposal]:
+    """Proposals in one frame. A peak is skipped when its centre lies within `track_radius` (metres) of an
+    `exclude` centre (the tracked objects) or its cell within `track_cells` of one's projection."""
+    found = []
+    if len(exclude):
+        seen_uv, _ = cam.project(torch.tensor(np.array(exclude), dtype=torch.float32))
+    for row, col, _ in peaks(heat, p["heatmap_threshold"], p["max_proposals"]):
+        ray = cam.ray(col, row)
+        centre = cam.camera.position + ray * float(math.exp(logdist[row, col]))
+        if any(np.linalg.norm(centre - c) < p["track_radius"] for c in exclude):
+            continue
+        if len(exclude) and float((seen_uv - torch.tensor([col, row])).norm(dim=1).min()) < p["track_cells"]:
+            continue
+        found.append(centre)
+    if not found:
+        return []
+    M, Y = len(meshes.subtypes), p["yaw_grid"]
+    ev = Evidence.compute(feats, meshes, list(range(M)), p["kappa"])
+    P = len(found)
+    # coarse search: every peak x sub-type x heading, each hypothesis alone
+    yaws = torch.arange(Y) * (2 * math.pi / Y) - math.pi
+    pose = torch.zeros(P, M, Y, 6)
+    pose[..., :3] = torch.tensor(np.array(found), dtype=torch.float32)[:, None, None]
+    pose[..., 3] = yaws
+    mesh_idx = torch.arange(M)[None, :, None].expand(P, M, Y).reshape(-1)
+    ll, _ = score(pose.reshape(-1, 6), mesh_idx, ev, meshes, cam, joint=False)
+    best_ll, best_yaw = ll.view(P, M, Y).max(2)
+    K = min(p["detect_subtypes"], M)
+    subs = best_ll.topk(K, 1).indices                                     # [P, K] most likely sub-types
+    start = pose[torch.arange(P)[:, None], subs, best_yaw.gather(1, subs)].reshape(-1, 6)
+    mesh_idx = subs.reshape(-1)
+    poses, ll, area = fit(start, mesh_idx, ev, meshes, cam, p["detect_iterations"], p["learning_rate"], joint=False)
+    ll, area = ll.view(P, K), area.view(P, K)
+    out = []
+    for i in range(P):
+        j = int(ll[i].argmax())
+        quality = float(ll[i, j] / area[i, j].clamp(min=1.0))
+        if quality >= p["min_quality"]:
+            out.append(Proposal(poses[i * K + j].numpy().astype(float), int(mesh_idx[i * K + j]), float(ll[i, j]),
+                                quality))
+    # two peaks on one object: keep the better explanation
+    out.sort(key=lambda q: -q.loglik)
+    kept: list[Proposal] = []
+    for q in out:
+        if all(np.linalg.norm(q.pose[:3] - k.pose[:3]) >= p["track_radius"] for k in kept) and \
+                all(np.linalg.norm(q.pose[:3] - c) >= p["track_radius"] for c in exclude):
+            kept.append(q)
+    return kept

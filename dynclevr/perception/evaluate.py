@@ -1,0 +1,109 @@
+"""The scene parser's estimate (`parsed/`, `parsed-noprior/`) against the truth (`sim/`): an evaluation, so it reads
+the truth; nothing here feeds back into the model.
+
+Objects are matched one-to-one (Hungarian) by their mean distance over the frames where both are visible;
+a pair further apart than MATCH_RADIUS is no match. The language labels (velocity class, accelerating, floating)
+are computed by the same function the dataset uses (dynclevr.questions.labels) on both scenes and compared
+where the truth's label is unambiguous, i.e. where a question could be asked.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from dynclevr.questions.labels import compute_labels, merge_events
+from dynclevr.scene import Scene4D
+
+MATCH_RADIUS = 1.5      # metres
+MIN_VISIBLE = 5         # frames a true object must be in view to count as one to detect
+EVENT_TOLERANCE = 6     # frames between an estimated and a true collision of the same pair
+
+
+def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
+    """(truth index, estimate index) pairs."""
+    if not est.objects or not truth.objects:
+        return []
+    cost = np.full((len(truth.objects), len(est.objects)), 1e6)
+    for i in range(len(truth.objects)):
+        for j in range(len(est.objects)):
+            both = truth.visible[:, i] & est.visible[:, j]
+            if both.any():
+                cost[i, j] = np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).mean()
+    rows, cols = linear_sum_assignment(cost)
+    return [(int(i), int(j)) for i, j in zip(rows, cols) if cost[i, j] <= MATCH_RADIUS]
+
+
+def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
+    pairs = match(truth, est)
+    lt, le = compute_labels(truth, labels_cfg), compute_labels(est, labels_cfg)
+    s = {"true_objects": int((truth.visible.sum(0) >= MIN_VISIBLE).sum()), "est_objects": len(est.objects),
+         "matched": len(pairs), "subtype": [], "color": [], "pos_err": [], "velocity": [], "accelerating": [],
+         "floating": []}
+    for i, j in pairs:
+        s["subtype"].append(truth.objects[i].shape == est.objects[j].shape)
+        s["color"].append(truth.objects[i].color == est.objects[j].color)
+        both = truth.visible[:, i] & est.visible[:, j]
+        s["pos_err"] += np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).tolist()
+        for key, amb in (("velocity", "velocity_ambiguous"), ("accelerating", "accelerating_ambiguous"),
+                         ("floating", "floating_ambiguous")):
+            ok = both & ~getattr(lt, amb)[:, i]
+            s[key] += (getattr(lt, key)[ok, i] == getattr(le, key)[ok, j]).tolist()
+    # collision events: estimated pairs renamed to the true ids they matched
+    to_truth = {est.objects[j].id: truth.objects[i].id for i, j in pairs}
+    merge = labels_cfg["collision_merge_frames"]
+    true_events = merge_events(truth.collisions, merge)
+    est_events = [e for e in merge_events(est.collisions, merge) if e.a in to_truth and e.b in to_truth]
+    used, tp = set(), 0
+    for e in est_events:
+        pair = frozenset((to_truth[e.a], to_truth[e.b]))
+        for k, g in enumerate(true_events):
+            if k not in used and g.pair() == pair and abs(g.frame - e.frame) <= EVENT_TOLERANCE:
+                used.add(k)
+                tp += 1
+                break
+    s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)), events_tp=tp)
+    return s
+
+
+def summarise(stats: list[dict]) -> dict:
+    def total(k):
+        return sum(s[k] for s in stats)
+
+    def mean(k):
+        v = [x for s in stats for x in s[k]]
+        return float(np.mean(v)) if v else float("nan")
+
+    err = np.array([x for s in stats for x in s["pos_err"]])
+    p = total("matched") / max(total("est_objects"), 1)
+    r = total("matched") / max(total("true_objects"), 1)
+    ep = total("events_tp") / max(total("events_est"), 1)
+    er = total("events_tp") / max(total("events_true"), 1)
+    return {
+        "scenes": len(stats),
+        "detection_precision": p, "detection_recall": r,
+        "subtype_acc": mean("subtype"), "color_acc": mean("color"),
+        "position_err_median_m": float(np.median(err)) if len(err) else float("nan"),
+        "position_err_p90_m": float(np.percentile(err, 90)) if len(err) else float("nan"),
+        "velocity_class_acc": mean("velocity"), "accelerating_acc": mean("accelerating"),
+        "floating_acc": mean("floating"),
+        "collision_precision": ep, "collision_recall": er,
+        "collision_f1": 2 * ep * er / (ep + er) if ep + er else 0.0,
+    }
+
+
+ROWS = [("detection_precision", "detection precision"), ("detection_recall", "detection recall"),
+        ("subtype_acc", "sub-type accuracy"), ("color_acc", "colour accuracy"),
+        ("position_err_median_m", "position error, median (m)"), ("position_err_p90_m", "position error, 90th pct (m)"),
+        ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
+        ("floating_acc", "floating accuracy"), ("collision_precision", "collision-event precision"),
+        ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1")]
+
+
+def markdown(results: dict[str, dict]) -> str:
+    """results: variant name -> summarise() output."""
+    names = list(results)
+    lines = ["| metric | " + " | ".join(names) + " |", "|---|" + "---|" * len(names)]
+    for key, label in ROWS:
+        lines.append(f"| {label} | " + " | ".join(f"{results[n][key]:.3f}" for n in names) + " |")
+    return "\n".join(lines) + "\n"

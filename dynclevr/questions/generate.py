@@ -1,0 +1,232 @@
+"""Question generation (paper section 3.4), as CLEVR's engine does it: templates are data, programs are data.
+
+Per scene, from its truth: every family of templates.json is instantiated for every binding of its objects and
+slots; the program runs on the truth in strict mode, so a binding whose reference is not unique, or that touches
+an ambiguous label or an object out of view, is dropped, and the answer is the executor's own. Objects are named by
+colour and shape, or by fewer words where those already pick one object (CLEVR's variety), or by colour and category.
+
+Across the split (`select`): per scene and family a few questions with the answers taken in turn, then per family
+no answer above `max_answer_share` where the data allows. Every draw comes from a seeded generator.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from functools import lru_cache
+from itertools import permutations
+from pathlib import Path
+
+import numpy as np
+
+from dynclevr.config import ConfigError
+from dynclevr.questions.programs import Executor, ProgramError
+from dynclevr.scene import INTERVENTIONS, Scene4D, SceneObject
+
+TEMPLATES_PATH = Path(__file__).with_name("templates.json")
+TYPES = ("factual", "predictive", "counterfactual")
+SUBTYPES_Q = ("velocity", "acceleration", "collision")
+CONDITIONS = ("visible_start", "observed", "aeroplane_X", "changes_X")
+
+# (attributes named, weight): colour + shape is the default reference; the shorter ones add variety.
+REFERENCES = ((("color", "shape"), 3.0), (("shape",), 1.0), (("color",), 1.0), (("color", "category"), 1.0),
+              (("category",), 1.0))
+COLOR_NOUNS = ("object", "vehicle")
+
+
+@lru_cache(maxsize=1)
+def templates() -> dict:
+    data = json.loads(TEMPLATES_PATH.read_text())
+    for fam in data["families"]:
+        bad = [c for c in fam["where"] if c not in CONDITIONS]
+        if bad or fam["type"] not in TYPES or fam["subtype"] not in SUBTYPES_Q:
+            raise ConfigError(f"templates.json family '{fam['name']}': unknown type, subtype or condition {bad}")
+        if "intervention" in fam and fam["intervention"] not in INTERVENTIONS:
+            raise ConfigError(f"templates.json family '{fam['name']}': unknown intervention {fam['intervention']}")
+    return data
+
+
+def family_names() -> list[str]:
+    return [f["name"] for f in templates()["families"]]
+
+
+def words(value: str) -> str:
+    """A sub-type key as the text says it: 'school_bus' -> 'school bus'."""
+    return value.replace("_", " ")
+
+
+def references(scene: Scene4D, obj: SceneObject) -> list[tuple[tuple[str, ...], float]]:
+    """The attribute sets that pick exactly this object out of the scene's objects."""
+    out = []
+    for attrs, weight in REFERENCES:
+        key = tuple(getattr(obj, a) for a in attrs)
+        if sum(tuple(getattr(o, a) for a in attrs) == key for o in scene.objects) == 1:
+            out.append((attrs, weight))
+    return out
+
+
+def describe(obj: SceneObject, attrs: tuple[str, ...], rng: np.random.Generator) -> tuple[str, str]:
+    """-> (text, program fragment) for one object reference."""
+    program = "Objects " + " ".join(f"filter_attributes[{getattr(obj, a)}]" for a in attrs) + " unique"
+    named = [words(getattr(obj, a)) for a in attrs]
+    if attrs == ("color",):
+        named.append(COLOR_NOUNS[rng.integers(len(COLOR_NOUNS))])
+    return "the " + " ".join(named), program
+
+
+def _fill(template: str, values: dict[str, dict], field: str) -> str:
+    for name, v in values.items():
+        for key, text in v.items():
+            if key != "program":
+                template = template.replace(f"<{name}:{key}>", text)
+        template = template.replace(f"<{name}>", v[field])
+    return template
+
+
+def _sentence(text: str) -> str:
+    return text[0].upper() + text[1:]
+
+
+def _changes(obj: SceneObject, intervention: str) -> bool:
+    if intervention in ("static", "slow", "fast"):
+        return obj.speed_class != intervention
+    if intervention == "accelerating":
+        return not obj.engine_on
+    return obj.category == "aeroplane" and not obj.floating
+
+
+def _conditions_hold(fam: dict, scene: Scene4D, objs: dict[str, SceneObject]) -> bool:
+    idx = {o.id: i for i, o in enumerate(scene.objects)}
+    frames = scene.observed_frames if "observed" in fam["where"] else scene.num_frames
+    for o in objs.values():
+        if not scene.visible[:frames, idx[o.id]].any():
+            return False
+        if "visible_start" in fam["where"] and not scene.visible[0, idx[o.id]]:
+            return False
+    x = objs.get("X")
+    if "aeroplane_X" in fam["where"] and x.category != "aeroplane":
+        return False
+    if "changes_X" in fam["where"] and not _changes(x, fam["intervention"]):
+        return False
+    return True
+
+
+def _bindings(fam: dict, scene: Scene4D):
+    """Objects (dicts name -> SceneObject) x slot values (dicts name -> value key), in a fixed order."""
+    names = fam["objects"]
+    if fam.get("unordered"):
+        tuples = [(a, b) for a, b in permutations(scene.objects, len(names)) if a.id < b.id]
+    else:
+        tuples = list(permutations(scene.objects, len(names)))
+    slot_values = [[]]
+    for s in fam.get("slots", []):
+        slot_values = [prev + [(s, v)] for prev in slot_values for v in templates()["slots"][s]]
+    for objs in tuples:
+        for slots in slot_values:
+            yield dict(zip(names, objs)), dict(slots)
+
+
+def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int) -> list[dict]:
+    """Every answerable question of one scene, its answer from the truth by the executor in strict mode."""
+    rng = np.random.default_rng(seed)
+    ex = Executor(scene, labels_cfg, strict=True)
+    refs = {o.id: references(scene, o) for o in scene.objects}
+    slots = templates()["slots"]
+    out = []
+    for fam in templates()["families"]:
+        for objs, slot_keys in _bindings(fam, scene):
+            if any(not refs[o.id] for o in objs.values()) or not _conditions_hold(fam, scene, objs):
+                continue
+            if fam.get("unordered") and rng.random() < 0.5:
+                objs = dict(zip(objs, reversed(list(objs.values()))))
+            values = {}
+            for name, o in objs.items():
+                options = refs[o.id]
+                w = np.array([wt for _, wt in options])
+                text, program = describe(o, options[rng.choice(len(options), p=w / w.sum())][0], rng)
+                values[name] = {"text": text, "program": program}
+            for name, key in slot_keys.items():
+                values[name] = {"text": key, **slots[name][key]}
+            text = _sentence(_fill(fam["texts"][rng.integers(len(fam["texts"]))], values, "text"))
+            program = _fill(fam["program"], values, "program")
+            try:
+                answer = ex.run(program)
+            except ProgramError:
+                continue
+            out.append({"id": "", "scene": scene.name, "type": fam["type"], "subtype": fam["subtype"],
+                        "family": fam["name"], "text": text, "program": program, "answer": answer})
+    return out
+
+
+# ---- split-level selection --------------------------------------------------------------------------------------
+
+def check_annotate_cfg(cfg: dict) -> dict:
+    for k in ("max_per_family", "max_per_family_predictive", "max_per_family_counterfactual"):
+        v = cfg.get(k)
+        if not isinstance(v, int) or isinstance(v, bool) or v < 1:
+            raise ConfigError(f"'annotate.{k}' = {v!r} must be a positive integer")
+    if not 0.5 <= cfg.get("max_answer_share", 0) <= 1:
+        raise ConfigError(f"'annotate.max_answer_share' = {cfg.get('max_answer_share')!r} must lie in [0.5, 1]")
+    return cfg
+
+
+def balanced_counts(counts: dict[str, int], max_share: float) -> dict[str, int]:
+    """How many of each answer to keep: the most questions with no answer above max_share of them."""
+    for n in range(sum(counts.values()), 0, -1):
+        cap = math.floor(max_share * n + 1e-9)
+        keep = {a: min(c, cap) for a, c in counts.items()}
+        excess = sum(keep.values()) - n
+        if excess < 0:
+            continue
+        for a in sorted(keep, key=lambda a: (-keep[a], a)):   # trim the most frequent answers first
+            cut = min(excess, keep[a])
+            keep[a] -= cut
+            excess -= cut
+        return keep
+    return {a: 0 for a in counts}
+
+
+def _round_robin(rows: list[dict], cap: int, rng: np.random.Generator) -> list[dict]:
+    by_answer: dict[str, list[dict]] = {}
+    for r in rows:
+        by_answer.setdefault(r["answer"], []).append(r)
+    queues = [[group[i] for i in rng.permutation(len(group))] for _, group in sorted(by_answer.items())]
+    queues = [queues[i] for i in rng.permutation(len(queues))]
+    out = []
+    while len(out) < cap and any(queues):
+        for q in queues:
+            if q and len(out) < cap:
+                out.append(q.pop(0))
+    return out
+
+
+def select(candidates: dict[str, list[dict]], cfg: dict, seed: int) -> list[dict]:
+    """Per-scene caps, then per-family answer balance across the split; ids '<scene>-<k>'. Deterministic."""
+    c = check_annotate_cfg(cfg)
+    caps = {"factual": c["max_per_family"], "predictive": c["max_per_family_predictive"],
+            "counterfactual": c["max_per_family_counterfactual"]}
+    rng = np.random.default_rng(np.random.SeedSequence([seed, 0xA11]))
+    order = {f: i for i, f in enumerate(family_names())}
+    picked: list[tuple[str, int, dict]] = []
+    for scene in sorted(candidates):
+        rows = candidates[scene]
+        pos = {id(r): i for i, r in enumerate(rows)}
+        for fam in sorted({r["family"] for r in rows}, key=order.__getitem__):
+            group = [r for r in rows if r["family"] == fam]
+            picked += [(scene, pos[id(r)], r) for r in _round_robin(group, caps[group[0]["type"]], rng)]
+    keep: set[tuple[str, int]] = set()
+    for fam in family_names():
+        rows = [(s, i, r) for s, i, r in picked if r["family"] == fam]
+        counts: dict[str, int] = {}
+        for _, _, r in rows:
+            counts[r["answer"]] = counts.get(r["answer"], 0) + 1
+        quota = balanced_counts(counts, c["max_answer_share"])
+        for answer in sorted(quota):
+            same = [(s, i) for s, i, r in rows if r["answer"] == answer]
+            keep.update(same[j] for j in sorted(rng.permutation(len(same))[:quota[answer]]))
+    out, k = [], {}
+    for s, i, r in sorted(picked, key=lambda p: (p[0], p[1])):
+        if (s, i) in keep:
+            k[s] = k.get(s, 0) + 1
+            out.append({**r, "id": f"{s}-{k[s] - 1}"})
+    return out

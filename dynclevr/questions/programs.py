@@ -1,0 +1,371 @@
+"""The paper's program operations (appendix, "Program execution", table "All operations") and the executor.
+
+A program is a list of tokens in postfix (reverse Polish) order, stored as one space-separated string. A token is
+an operation name, optionally with one bracketed argument and no spaces: `filter_attributes[red]`,
+`query_attributes[color]`. Each operation pops its typed inputs (the first input was pushed first) and pushes its
+typed output; the answer is the single value left: "true"/"false", a colour, a sub-type key ("school_bus"), a
+velocity label or a direction word.
+
+    Objects filter_attributes[red] filter_attributes[sedan] unique start query_moving_velocity
+      -> how fast is the red sedan moving at the start?
+
+The operations keep the paper's names. Added (and only these):
+- `start`: None -> FrameID, the first frame ("at the start of the video").
+- `unique` and `exist` also take a CollisionEventSet (-> CollisionEvent / Bool), so that "when X collides with Y"
+  is `... filter_collision unique get_frame`.
+- `filter_moving_velocity[slow|fast]` keeps objects of that velocity class; without an argument, every moving
+  (not static) object.
+
+A program that cannot run (a reference that matches no object or several, an input of the wrong type, a missing
+counterfactual run, a frame outside the scene) raises ProgramError: the answer stage counts these, never crashes.
+In strict mode (question generation on the truth) a label that is ambiguous, or asked of an object out of view,
+raises AmbiguousLabel, so no question is ever asked about it.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+from dynclevr import DynclevrError
+from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.questions.labels import DIRECTIONS, VELOCITIES, Labels, compute_labels, future_events, merge_events
+from dynclevr.scene import Collision, Scene4D
+
+
+class ProgramError(DynclevrError):
+    """The program cannot run on this scene."""
+
+
+class AmbiguousLabel(ProgramError):
+    """Strict execution touched a label no question may be asked about."""
+
+
+# ---- types ------------------------------------------------------------------------------------------------------
+
+class Object(int):
+    """An object id."""
+
+
+class FrameID(int):
+    pass
+
+
+class ObjectSet(tuple):
+    """Object ids, ascending."""
+
+
+class CollisionEventSet(tuple):
+    """Collisions, by frame."""
+
+
+# A CollisionEvent is a scene.Collision, a Bool a bool, a Value (colour, sub-type, velocity label or direction) a str.
+TYPE_NAMES = {Object: "Object", FrameID: "FrameID", ObjectSet: "ObjectSet", CollisionEventSet: "CollisionEventSet",
+              Collision: "CollisionEvent", bool: "Bool", str: "Value"}
+
+ATTRIBUTE_VALUES = frozenset(COLOR_NAMES) | frozenset(SUBTYPES) | frozenset(CATEGORIES)
+ATTRIBUTES = frozenset({"color", "shape"})
+MOVING = frozenset({"slow", "fast"})
+
+
+@dataclass(frozen=True)
+class Op:
+    name: str
+    inputs: tuple          # per input: a type or a tuple of accepted types
+    output: type | tuple
+    fn: Callable
+    args: frozenset | None = None   # accepted bracket arguments; None: takes none
+    arg_required: bool = True
+
+
+OPS: dict[str, Op] = {}
+
+
+def op(name: str, *inputs, returns, args: frozenset | None = None, arg_required: bool = True):
+    def register(fn):
+        OPS[name] = Op(name, inputs, returns, fn, args, arg_required)
+        return fn
+    return register
+
+
+# ---- the scene as the operations see it ---------------------------------------------------------------------------
+
+class World:
+    """A Scene4D with its labels; truth and estimate alike."""
+
+    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False):
+        self.scene, self.strict = scene, strict
+        self.labels: Labels = compute_labels(scene, labels_cfg)
+        self.margin = labels_cfg["compare_margin"]
+        merge = labels_cfg["collision_merge_frames"]
+        self.events = CollisionEventSet(merge_events(scene.collisions, merge))
+        self.future_events = CollisionEventSet(future_events(scene, merge))
+        self.counterfactuals = {k: CollisionEventSet(merge_events(v, merge)) for k, v in scene.counterfactuals.items()}
+        self._index = {o.id: i for i, o in enumerate(scene.objects)}
+
+    def obj(self, oid: int):
+        return self.scene.objects[self._index[oid]]
+
+    def _cell(self, oid: int, t: int, what: str) -> tuple[int, int]:
+        if not 0 <= t < self.scene.num_frames:
+            raise ProgramError(f"frame {t} is outside the scene's {self.scene.num_frames} frames")
+        i = self._index[oid]
+        if self.strict and not self.scene.visible[t, i]:
+            raise AmbiguousLabel(f"object {oid} is out of view at frame {t} ({what})")
+        return t, i
+
+    def _label(self, values, ambiguous, oid: int, t: int, what: str):
+        cell = self._cell(oid, t, what)
+        if self.strict and ambiguous[cell]:
+            raise AmbiguousLabel(f"{what} of object {oid} at frame {t} is ambiguous")
+        return values[cell]
+
+    def velocity(self, oid: int, t: int) -> str:
+        return VELOCITIES[int(self._label(self.labels.velocity, self.labels.velocity_ambiguous, oid, t, "velocity"))]
+
+    def direction(self, oid: int, t: int) -> str:
+        return DIRECTIONS[int(self._label(self.labels.direction, self.labels.direction_ambiguous, oid, t,
+                                          "direction"))]
+
+    def accelerating(self, oid: int, t: int) -> bool:
+        return bool(self._label(self.labels.accelerating, self.labels.accelerating_ambiguous, oid, t,
+                                "accelerating"))
+
+    def floating(self, oid: int, t: int) -> bool:
+        return bool(self._label(self.labels.floating, self.labels.floating_ambiguous, oid, t, "floating"))
+
+    def speed_difference(self, a: int, b: int, t: int) -> float:
+        d = float(self.labels.speed[self._cell(a, t, "speed")] - self.labels.speed[self._cell(b, t, "speed")])
+        if self.strict and abs(d) < self.margin:
+            raise AmbiguousLabel(f"objects {a} and {b} move at similar speeds at frame {t}")
+        return d
+
+
+# ---- input operations -------------------------------------------------------------------------------------------
+
+@op("Objects", returns=ObjectSet)
+def Objects(w: World) -> ObjectSet:
+    return ObjectSet(sorted(o.id for o in w.scene.objects))
+
+
+@op("Events", returns=CollisionEventSet)
+def Events(w: World) -> CollisionEventSet:
+    return w.events
+
+
+@op("futureEvents", returns=CollisionEventSet)
+def futureEvents(w: World) -> CollisionEventSet:
+    return w.future_events
+
+
+@op("start", returns=FrameID)
+def start(w: World) -> FrameID:
+    return FrameID(0)
+
+
+# ---- event operations -------------------------------------------------------------------------------------------
+
+@op("filter_collision", CollisionEventSet, Object, returns=CollisionEventSet)
+def filter_collision(w: World, events: CollisionEventSet, obj: Object) -> CollisionEventSet:
+    return CollisionEventSet(e for e in events if obj in (e.a, e.b))
+
+
+@op("get_all_col_partners", CollisionEventSet, Object, returns=ObjectSet)
+def get_all_col_partners(w: World, events: CollisionEventSet, obj: Object) -> ObjectSet:
+    return ObjectSet(sorted({e.b if e.a == obj else e.a for e in events if obj in (e.a, e.b)}))
+
+
+@op("get_frame", Collision, returns=FrameID)
+def get_frame(w: World, event: Collision) -> FrameID:
+    return FrameID(event.frame)
+
+
+@op("come_in_frame", Object, returns=FrameID)
+def come_in_frame(w: World, obj: Object) -> FrameID:
+    seen = w.scene.visible[:, w._index[obj]].nonzero()[0]
+    if len(seen) == 0:
+        raise ProgramError(f"object {obj} never comes into view")
+    return FrameID(int(seen[0]))
+
+
+# ---- object filters ---------------------------------------------------------------------------------------------
+
+@op("filter_attributes", ObjectSet, returns=ObjectSet, args=ATTRIBUTE_VALUES)
+def filter_attributes(w: World, objs: ObjectSet, value: str) -> ObjectSet:
+    return ObjectSet(i for i in objs if value in (w.obj(i).color, w.obj(i).shape, w.obj(i).category))
+
+
+@op("filter_static", ObjectSet, FrameID, returns=ObjectSet)
+def filter_static(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
+    return ObjectSet([i for i in objs if w.velocity(i, t) == "static"])
+
+
+@op("filter_moving_velocity", ObjectSet, FrameID, returns=ObjectSet, args=MOVING, arg_required=False)
+def filter_moving_velocity(w: World, objs: ObjectSet, t: FrameID, velocity: str | None = None) -> ObjectSet:
+    keep = {velocity} if velocity else MOVING
+    return ObjectSet([i for i in objs if w.velocity(i, t) in keep])
+
+
+@op("filter_accelerating", ObjectSet, FrameID, returns=ObjectSet)
+def filter_accelerating(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
+    return ObjectSet([i for i in objs if w.accelerating(i, t)])
+
+
+@op("filter_floating", ObjectSet, FrameID, returns=ObjectSet)
+def filter_floating(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
+    return ObjectSet([i for i in objs if w.floating(i, t)])
+
+
+# ---- object queries ---------------------------------------------------------------------------------------------
+
+@op("query_attributes", Object, returns=str, args=ATTRIBUTES)
+def query_attributes(w: World, obj: Object, attribute: str) -> str:
+    return w.obj(obj).color if attribute == "color" else w.obj(obj).shape
+
+
+@op("is_static", Object, FrameID, returns=bool)
+def is_static(w: World, obj: Object, t: FrameID) -> bool:
+    return w.velocity(obj, t) == "static"
+
+
+@op("query_moving_velocity", Object, FrameID, returns=str)
+def query_moving_velocity(w: World, obj: Object, t: FrameID) -> str:
+    return w.velocity(obj, t)
+
+
+@op("query_moving_direction", Object, FrameID, returns=str)
+def query_moving_direction(w: World, obj: Object, t: FrameID) -> str:
+    return w.direction(obj, t)
+
+
+@op("is_accelerating", Object, FrameID, returns=bool)
+def is_accelerating(w: World, obj: Object, t: FrameID) -> bool:
+    return w.accelerating(obj, t)
+
+
+@op("is_floating", Object, FrameID, returns=bool)
+def is_floating(w: World, obj: Object, t: FrameID) -> bool:
+    return w.floating(obj, t)
+
+
+# ---- comparison -------------------------------------------------------------------------------------------------
+
+@op("faster_velocity", Object, Object, FrameID, returns=bool)
+def faster_velocity(w: World, a: Object, b: Object, t: FrameID) -> bool:
+    return w.speed_difference(a, b, t) > 0
+
+
+@op("slower_velocity", Object, Object, FrameID, returns=bool)
+def slower_velocity(w: World, a: Object, b: Object, t: FrameID) -> bool:
+    return w.speed_difference(a, b, t) < 0
+
+
+# ---- counterfactual ---------------------------------------------------------------------------------------------
+
+def _counterfactual(intervention: str):
+    def run(w: World, obj: Object) -> CollisionEventSet:
+        events = w.counterfactuals.get((int(obj), intervention))
+        if events is None:
+            raise ProgramError(f"no counterfactual run of object {obj} with '{intervention}'")
+        return events
+    return run
+
+
+for _name, _iv in [("Counterfactual_static", "static"), ("Counterfactual_moving_slow", "slow"),
+                   ("Counterfactual_moving_fast", "fast"), ("Counterfactual_accelerating", "accelerating"),
+                   ("Counterfactual_floating", "floating")]:
+    op(_name, Object, returns=CollisionEventSet)(_counterfactual(_iv))
+
+COUNTERFACTUAL_OPS = {"static": "Counterfactual_static", "slow": "Counterfactual_moving_slow",
+                      "fast": "Counterfactual_moving_fast", "accelerating": "Counterfactual_accelerating",
+                      "floating": "Counterfactual_floating"}
+
+
+# ---- others -----------------------------------------------------------------------------------------------------
+
+@op("unique", (ObjectSet, CollisionEventSet), returns=(Object, Collision))
+def unique(w: World, items: tuple):
+    if len(items) != 1:
+        kind = "objects" if isinstance(items, ObjectSet) else "collisions"
+        raise ProgramError(f"unique: {len(items)} {kind} match, expected exactly one")
+    return Object(items[0]) if isinstance(items, ObjectSet) else items[0]
+
+
+@op("exist", (ObjectSet, CollisionEventSet), returns=bool)
+def exist(w: World, items: tuple) -> bool:
+    return len(items) > 0
+
+
+# ---- the executor -----------------------------------------------------------------------------------------------
+
+_TOKEN = re.compile(r"^([A-Za-z_]+)(?:\[([a-z_]+)\])?$")
+
+
+def parse(program: str | list[str]) -> list[tuple[str, str | None]]:
+    """'Objects filter_attributes[red]' or a token list -> [(operation, argument or None)], checked against OPS."""
+    tokens = program.split() if isinstance(program, str) else list(program)
+    if not tokens:
+        raise ProgramError("empty program")
+    out = []
+    for tok in tokens:
+        m = _TOKEN.match(tok)
+        if not m or m.group(1) not in OPS:
+            raise ProgramError(f"unknown token '{tok}'")
+        name, arg = m.groups()
+        o = OPS[name]
+        if arg is None and o.args is not None and o.arg_required:
+            raise ProgramError(f"{name} needs an argument, e.g. {name}[{sorted(o.args)[0]}]")
+        if arg is not None and (o.args is None or arg not in o.args):
+            raise ProgramError(f"'{tok}': {name} takes {'no argument' if o.args is None else 'another argument'}")
+        out.append((name, arg))
+    return out
+
+
+def _type_name(t) -> str:
+    return " or ".join(TYPE_NAMES[x] for x in t) if isinstance(t, tuple) else TYPE_NAMES[t]
+
+
+def _accepts(t, value) -> bool:
+    # bool is an int in Python, and Object / FrameID are both ints: check the exact kinds.
+    kinds = t if isinstance(t, tuple) else (t,)
+    return any(type(value) is k or (k is Collision and isinstance(value, Collision)) for k in kinds)
+
+
+def answer_word(value) -> str:
+    if type(value) is bool:
+        return "true" if value else "false"
+    if type(value) is str:
+        return value
+    raise ProgramError(f"the program ends in a {TYPE_NAMES.get(type(value), type(value).__name__)}, not an answer")
+
+
+class Executor:
+    """Runs many programs on one scene (its labels are computed once)."""
+
+    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False):
+        self.world = World(scene, labels_cfg, strict)
+
+    def run(self, program: str | list[str]) -> str:
+        stack: list = []
+        for name, arg in parse(program):
+            o = OPS[name]
+            n = len(o.inputs)
+            if len(stack) < n:
+                raise ProgramError(f"{name} needs {n} inputs, the stack holds {len(stack)}")
+            args = stack[len(stack) - n:] if n else []
+            del stack[len(stack) - n:]
+            for i, (t, v) in enumerate(zip(o.inputs, args)):
+                if not _accepts(t, v):
+                    raise ProgramError(f"{name}: input {i + 1} must be a {_type_name(t)}, got "
+                                       f"{TYPE_NAMES.get(type(v), type(v).__name__)}")
+            stack.append(o.fn(self.world, *args, arg) if arg is not None else o.fn(self.world, *args))
+        if len(stack) != 1:
+            raise ProgramError(f"the program leaves {len(stack)} values, expected one answer")
+        return answer_word(stack[0])
+
+
+def execute(program: str | list[str], scene: Scene4D, labels_cfg: dict, strict: bool = False) -> str:
+    """Run one postfix program on a scene (truth or estimate) -> its answer word; ProgramError if it cannot run."""
+    return Executor(scene, labels_cfg, strict).run(program)

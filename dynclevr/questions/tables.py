@@ -1,0 +1,56 @@
+"""The Arrow schemas of the annotate stage's tables, with their names and versions (the one place they are defined).
+
+- labels/<scene>.parquet            dynclevr.labels: one row per (frame, object); "ambiguous" where no question is asked
+- labels/<scene>.events.parquet     dynclevr.events: merged collision events: observed, future, counterfactual
+- labels/<scene>.questions.parquet  dynclevr.questions: every candidate question of the scene (before balancing)
+- questions.parquet (split level)   dynclevr.questions: the balanced questions, with ids "<scene>-<k>"
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pyarrow as pa
+
+from dynclevr.artifacts import read_parquet, write_parquet
+
+LABELS_SCHEMA, LABELS_VERSION = "dynclevr.labels", 1
+LABELS = pa.schema([
+    ("frame", pa.int32()), ("object", pa.int32()), ("speed", pa.float32()),
+    ("velocity", pa.string()),        # static / slow / fast / ambiguous
+    ("direction", pa.string()),       # front / back / left / right / up / down / ambiguous
+    ("accel", pa.float32()),          # d|horizontal velocity|/dt, m/s^2
+    ("accelerating", pa.string()),    # true / false / ambiguous
+    ("floating", pa.string()),        # true / false / ambiguous
+])
+
+EVENTS_SCHEMA, EVENTS_VERSION = "dynclevr.events", 1
+EVENTS = pa.schema([
+    ("kind", pa.string()),            # observed / future / counterfactual
+    ("target", pa.int32()),           # counterfactual: the changed object; else -1
+    ("intervention", pa.string()),    # counterfactual: static / slow / fast / accelerating / floating; else ""
+    ("frame", pa.int32()), ("a", pa.int32()), ("b", pa.int32()),
+])
+
+QUESTIONS_SCHEMA, QUESTIONS_VERSION = "dynclevr.questions", 1
+QUESTION_FIELDS = [
+    ("id", pa.string()),              # "<scene>-<k>"; "" in the per-scene candidates
+    ("scene", pa.string()),
+    ("type", pa.string()),            # factual / predictive / counterfactual
+    ("subtype", pa.string()),         # velocity / acceleration / collision
+    ("family", pa.string()),          # a family name of templates.json
+    ("text", pa.string()),
+    ("program", pa.string()),         # postfix tokens, space-separated (dynclevr/questions/programs.py)
+    ("answer", pa.string()),
+]
+QUESTIONS = pa.schema(QUESTION_FIELDS)
+
+
+def write_questions(rows: list[dict], path: Path) -> None:
+    table = pa.Table.from_pylist([{k: r.get(k, "") for k, _ in QUESTION_FIELDS} for r in rows], schema=QUESTIONS)
+    write_parquet(table, path, QUESTIONS_SCHEMA, QUESTIONS_VERSION)
+
+
+def read_questions(path: Path) -> list[dict]:
+    """questions.parquet (or a scene's candidates) as rows; a stale version fails naming the stage to rerun."""
+    return read_parquet(path, QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
