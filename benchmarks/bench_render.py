@@ -2,7 +2,9 @@
 
 The scene is a real one (simulated from the tiny split's first seed, not timed). Each backend renders it in a fresh
 process with one thread; the fast backend renders the whole video, the realistic one the first RENDER_FRAMES_MITSUBA
-frames (its s/video is setup + 120 x its s/frame, and says so)."""
+frames (its s/video is extrapolated, and says so). s/frame is the steady state (the first frame, which for Mitsuba
+includes compiling its kernels, counts with the scene setup); wall and CPU seconds are both given because the
+machine may be shared: CPU time is what one core spends."""
 
 from __future__ import annotations
 
@@ -16,9 +18,12 @@ RENDER_FRAMES_MITSUBA = 12
 
 
 def render_video(sim_path: str, out_path: str, backend: str, frames: int | None) -> dict:
+    import os
+
     import cv2
 
     cv2.setNumThreads(1)
+    os.environ["OMP_NUM_THREADS"] = "1"   # as in a pool worker: Mitsuba then runs one thread too
     from dynclevr.config import Config, scene_seed
     from dynclevr.render import make_renderer
     from dynclevr.render.environments import environment
@@ -32,13 +37,18 @@ def render_video(sim_path: str, out_path: str, backend: str, frames: int | None)
     T = frames or scene.num_frames
     camera = scene.camera.with_resolution(r["width"], r["height"])
     env_index, variants = appearance(scene_seed(cfg.split("tiny").seed, 0), len(scene.objects))
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     with VideoWriter(Path(out_path), camera, scene.fps, T) as video, \
             make_renderer(backend, scene, camera, environment(env_index), variants, r) as renderer:
         setup = time.perf_counter() - start
-        for t in range(T):
+        video.add(*renderer.render(0))
+        first, first_cpu = time.perf_counter(), time.process_time()
+        for t in range(1, T):
             video.add(*renderer.render(t))
-    return {"frames": T, "setup": setup, "total": time.perf_counter() - start, "size": (r["width"], r["height"])}
+        steady, steady_cpu = time.perf_counter() - first, time.process_time() - first_cpu
+    return {"frames": T, "setup": setup, "first": first - start - setup, "frame": steady / (T - 1),
+            "frame_cpu": steady_cpu / (T - 1), "total": time.perf_counter() - start,
+            "total_cpu": time.process_time() - cpu, "size": (r["width"], r["height"])}
 
 
 def _simulate(workdir: Path) -> Path:
@@ -63,17 +73,16 @@ def bench(workdir: Path) -> list[dict]:
         frames = RENDER_FRAMES_MITSUBA if backend == "mitsuba" else None
         seconds, peak, res = measure("benchmarks.bench_render.render_video", str(sim),
                                      str(workdir / f"{backend}.mcap"), backend, frames)
-        per_frame = (res["total"] - res["setup"]) / res["frames"]
         w, h = res["size"]
-        video = res["total"] if frames is None else res["setup"] + 120 * per_frame
+        video = res["total"] if frames is None else res["setup"] + res["first"] + 119 * res["frame"]
+        row = {"stage": f"render/{backend}", "unit": "s", "target": ""}
         rows += [
-            {"stage": f"render/{backend}", "metric": f"s per frame ({w}x{h}, 1 core)", "value": per_frame,
-             "unit": "s", "target": f"<= {TARGETS[backend]}"},
-            {"stage": f"render/{backend}", "metric": "s per frame incl. scene setup", "value": res["total"] /
-             res["frames"], "unit": "s", "target": ""},
-            {"stage": f"render/{backend}", "metric": "s per 120-frame video" + (" (setup + 120 x s/frame)"
-                                                                             if frames else ""),
-             "value": video, "unit": "s", "target": ""},
-            {"stage": f"render/{backend}", "metric": "peak memory", "value": peak, "unit": "MiB", "target": ""},
+            {**row, "metric": f"s per frame ({w}x{h}, 1 core, wall)", "value": res["frame"],
+             "target": f"<= {TARGETS[backend]}"},
+            {**row, "metric": "CPU s per frame (what contention cannot inflate)", "value": res["frame_cpu"]},
+            {**row, "metric": "scene setup + first frame", "value": res["setup"] + res["first"]},
+            {**row, "metric": "s per 120-frame video" + (" (setup + first + 119 x s/frame)" if frames else ""),
+             "value": video},
+            {**row, "metric": "peak memory", "value": peak, "unit": "MiB"},
         ]
     return rows

@@ -39,7 +39,8 @@ def work(workdir: str) -> dict:
     start = time.perf_counter()
     for _ in range(5):
         simulate(bodies, params, cfg["video"]["frames"])
-    return {"per_scene": per_scene, "cpu_per_scene": cpu_per_scene, "factual": (time.perf_counter() - start) / 5, "runs": runs / SCENES}
+    return {"per_scene": per_scene, "cpu_per_scene": cpu_per_scene, "factual": (time.perf_counter() - start) / 5,
+            "runs": runs / SCENES}
 
 
 def bench(workdir: Path) -> list[dict]:

@@ -10,7 +10,7 @@ from pathlib import Path
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import Store, read_parquet
 from dynclevr.config import Config
-from dynclevr.questions.programs import execute
+from dynclevr.questions.programs import Executor
 from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.answer import ANSWERS_SCHEMA, ANSWERS_VERSION, table1
@@ -33,13 +33,14 @@ def _answers(store: Store, variant: str) -> list[dict] | None:
 
 def oracle_rows(store: Store, cfg: Config, questions: list[dict]) -> list[dict]:
     """Gold programs on the truth scenes: checks the executor and the generator agree (must be 100%)."""
-    scenes: dict[str, Scene4D] = {}
+    executors: dict[str, Executor] = {}
     rows = []
     for q in questions:
-        if q["scene"] not in scenes:
-            scenes[q["scene"]] = Scene4D.read(store.path("simulate", q["scene"], ".mcap"))
+        if q["scene"] not in executors:
+            truth = Scene4D.read(store.path("simulate", q["scene"], ".mcap"))
+            executors[q["scene"]] = Executor(truth, cfg["labels"])
         try:
-            ok = execute(q["program"], scenes[q["scene"]], cfg["labels"]) == q["answer"]
+            ok = executors[q["scene"]].run(q["program"]) == q["answer"]
         except DynclevrError:
             ok = False
         rows.append({**q, "correct": ok})

@@ -48,8 +48,9 @@ def _stamp(t_ns: int) -> Timestamp:
     return Timestamp(seconds=t_ns // 10**9, nanos=t_ns % 10**9)
 
 
-def _png(image: np.ndarray) -> bytes:
-    ok, buf = cv2.imencode(".png", image, [cv2.IMWRITE_PNG_COMPRESSION, 3])
+def _png(image: np.ndarray, strategy: int = cv2.IMWRITE_PNG_STRATEGY_DEFAULT) -> bytes:
+    # Level 1: the fastest deflate; the file's zstd chunks squeeze a little more out afterwards.
+    ok, buf = cv2.imencode(".png", image, [cv2.IMWRITE_PNG_COMPRESSION, 1, cv2.IMWRITE_PNG_STRATEGY, strategy])
     assert ok
     return buf.tobytes()
 
@@ -62,7 +63,8 @@ def encode_rgb(rgb: np.ndarray) -> bytes:
 
 
 def encode_instances(mask: np.ndarray) -> bytes:
-    return _png((mask.astype(np.int32) + 1).astype(np.uint16))
+    # Run-length coding suits a few flat regions: 2-3x faster than the default, and smaller.
+    return _png((mask.astype(np.int32) + 1).astype(np.uint16), cv2.IMWRITE_PNG_STRATEGY_RLE)
 
 
 def encode_depth(depth: np.ndarray) -> bytes:

@@ -98,7 +98,7 @@ def test_contrastive_training_step_lowers_the_loss():
     meshes = NeuralMeshes.build(["sedan", "suv"], 16, 16, 4, seed=0)
     net = FeatureNet(16, 16)
     opt = torch.optim.Adam(net.parameters(), lr=3e-3)
-    p = {"temperature": 0.1, "momentum": 0.9, "heatmap_weight": 1.0}
+    p = {"temperature": 0.1, "momentum": 0.9, "heatmap_weight": 1.0, "train_crop": [160, 120]}
     batch = [_frame_sample(rng)]
     neigh = neighbours(meshes, 0.01)
     first = contrastive_step(net, meshes, batch, neigh, p, rng)

@@ -1,6 +1,7 @@
 """The simulate stage: scene sampling, the truth it writes, caching and reruns, clear errors."""
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -55,7 +56,6 @@ def test_cache_skip_and_rerun_rules(simulated, tmp_path):
     assert said == ["simulate: 6 to run, 0 cached (unchanged inputs, params and version)"]
     assert run(cfg, data) == ["simulate: 0 to run, 6 cached (unchanged inputs, params and version)"]
     # A copy, so the module's data stays as first simulated.
-    import shutil
     data2 = tmp_path / "data"
     shutil.copytree(data, data2)
     store = Store(data2, "t")
@@ -63,12 +63,13 @@ def test_cache_skip_and_rerun_rules(simulated, tmp_path):
     assert run(cfg, data2, "3-5", force=True)[0].startswith("simulate: 3 to run, 0 cached")
     assert store.path("simulate", "000000", ".mcap").stat().st_mtime_ns == before["000000"]
     assert store.path("simulate", "000004", ".mcap").stat().st_mtime_ns != before["000004"]
-    # A changed physics parameter reruns every scene; another stage's section does not.
+    # A changed physics parameter reruns every scene; a parameter of another stage does not, the image size does.
     changed = make_config(tmp_path, "\n[physics]\nfloor_friction = 0.5\n")
-    assert run(changed, data2, "0-1")[0].startswith("simulate: 2 to run, 0 cached")
-    other = make_config(tmp_path, "\n[render]\nbackend = \"mitsuba\"\n")
-    # render.width/height shape the camera, but the backend is part of the digest too: [render] is one section.
-    assert run(other, data2, "2")[0].startswith("simulate: 1 to run")
+    assert run(changed, data2)[0].startswith("simulate: 6 to run, 0 cached")
+    other = make_config(tmp_path, "\n[physics]\nfloor_friction = 0.5\n[labels]\nfast_above = 5.6\n")
+    assert run(other, data2)[0].startswith("simulate: 0 to run, 6 cached")
+    smaller = make_config(tmp_path, "\n[physics]\nfloor_friction = 0.5\n[render]\nwidth = 160\n")
+    assert run(smaller, data2, "2")[0].startswith("simulate: 1 to run, 0 cached")
 
 
 def test_same_seed_gives_identical_bytes(simulated, tmp_path):
@@ -139,7 +140,7 @@ def test_truth_content_and_schemas(simulated):
                 _conforms(msg, json.loads((SCHEMA_DIR / f"dynclevr.{name}.json").read_text()), topic)
         assert counts["/tf"] == counts["/scene/vehicles"] == counts["/scene/states"] == 60
     table = read_parquet(store.split_file("objects.parquet"), simulate.OBJECTS_SCHEMA, simulate.OBJECTS_VERSION)
-    assert table.num_rows == total and table.column_names == list(simulate.OBJECTS_COLUMNS)
+    assert table.num_rows == total and table.schema.remove_metadata() == simulate.OBJECTS_FIELDS
 
 
 def test_spawns_do_not_overlap_and_collisions_are_common():
@@ -166,8 +167,6 @@ def test_stats_table(simulated):
 
 
 def test_corrupt_and_wrong_version_files_give_clear_errors(simulated, tmp_path):
-    import shutil
-
     cfg, data, _ = simulated
     shutil.copytree(data, tmp_path / "data")
     store = Store(tmp_path / "data", "t")

@@ -69,7 +69,6 @@ class Environment:
     ambient: np.ndarray       # rgb
     haze: np.ndarray          # rgb: the colour the ground fades into at the horizon
     haze_m: float
-    shadow: float             # how much of the sun a shadow removes (0 overcast .. 1 hard sun)
 
     @property
     def ground_mean(self) -> np.ndarray:
@@ -378,5 +377,4 @@ def environment(index: int) -> Environment:
         index=index, name=f"{ground}/{style_name}/{skyline}", ground=ground, sky_style=style_name, skyline=skyline,
         sky=sky, ground_mips=tuple(mips), ground_tile_m=float(tile_m), variation=variation, road_angle=road,
         sun_dir=sun_dir, sun=np.array(style.sun) * rng.uniform(0.92, 1.08), ambient=np.array(style.ambient),
-        haze=np.array(style.horizon, np.float32), haze_m=style.haze_m * rng.uniform(0.8, 1.25),
-        shadow=float(np.clip(max(style.sun) / 0.8, 0, 1)))
+        haze=np.array(style.horizon, np.float32), haze_m=style.haze_m * rng.uniform(0.8, 1.25))

@@ -119,6 +119,7 @@ class TinyRenderer:
         self._P = self.hi.K @ self.hi.world_to_camera[:3]   # 3x4 pinhole projection of world points
         self.bg = Background(self.hi, env, oversample=max(1, 2 // supersample))
         self._bg_depth = ground_depth(camera)
+        self._back8 = np.clip(self.bg.rgb * 255 + 0.5, 0, 255).astype(np.uint8)
         self.bodies: list[list[int]] = []     # per object: its part bodies
         self.hulls: list[list[np.ndarray]] = []   # per object: convex hull vertices per part (object frame)
         lut = {}
@@ -237,12 +238,12 @@ class TinyRenderer:
         rgba, ids, z = self._raster(t)
 
         bg = self.bg
+        back8 = self._back8.copy()
         if self.shadows:
             sun_f, contact_f = self._shadow(t)
-            back = bg.rgb - bg.sun * sun_f[..., None] - bg.ambient * (0.55 * contact_f[..., None])
-        else:
-            back = bg.rgb
-        back8 = np.clip(back * 255 + 0.5, 0, 255).astype(np.uint8)
+            dark = (sun_f > 0) | (contact_f > 0)   # shadows cover a small part of the frame: shade only there
+            back8[dark] = np.clip((bg.rgb[dark] - bg.sun[dark] * sun_f[dark][:, None]
+                                   - bg.ambient[dark] * (0.55 * contact_f[dark][:, None])) * 255 + 0.5, 0, 255)
         hi_rgb = np.where((ids >= 0)[..., None], rgba[..., :3], back8)
         W, H, s = self.camera.width, self.camera.height, self.ss
         if s > 1:

@@ -14,7 +14,7 @@ import pyarrow as pa
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import file_digest, read_parquet, write_parquet
 from dynclevr.pipeline import SceneJob, Stage
-from dynclevr.questions.programs import execute
+from dynclevr.questions.programs import Executor
 from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.simulate_future import attach
@@ -38,13 +38,14 @@ def question_parser():
 
 def predict(questions: list[dict], scene: Scene4D, labels_cfg: dict) -> list[dict]:
     programs = question_parser().parse_batch([q["text"] for q in questions])
+    executor = Executor(scene, labels_cfg)
     out = []
     for q, program in zip(questions, programs):
         if program is None:
             out.append({"id": q["id"], "predicted_program": "", "predicted_answer": "", "status": UNPARSED})
             continue
         try:
-            answer, status = execute(program, scene, labels_cfg), "ok"
+            answer, status = executor.run(program), "ok"
         except DynclevrError:  # no unique object, wrong types, an ambiguous label: the question counts as wrong
             answer, status = "", FAILED
         out.append({"id": q["id"], "predicted_program": " ".join(program), "predicted_answer": answer,

@@ -192,20 +192,22 @@ def _read(path: Path, *topics: str) -> dict:
     return out
 
 
-OBJECTS_COLUMNS = ("scene", "id", "shape", "category", "color", "mass", "speed_class", "engine_on", "floating",
-                   "length", "width", "height")
+OBJECTS_FIELDS = pa.schema([
+    ("scene", pa.string()), ("id", pa.int32()), ("shape", pa.string()), ("category", pa.string()),
+    ("color", pa.string()), ("mass", pa.float64()), ("speed_class", pa.string()), ("engine_on", pa.bool_()),
+    ("floating", pa.bool_()), ("length", pa.float64()), ("width", pa.float64()), ("height", pa.float64())])
 
 
 def finalize(store: Store, cfg: Config, scenes: list[str]) -> list[Path]:
-    """Split-level objects.parquet: one row per object of every scene."""
-    rows = {k: [] for k in OBJECTS_COLUMNS}
+    """Split-level objects.parquet: one row per object of every scene (its initial, static attributes)."""
+    rows = {f.name: [] for f in OBJECTS_FIELDS}
     for scene in scenes:
         for o in _read(store.path("simulate", scene, ".mcap"), "/scene/objects")["/scene/objects"]["objects"]:
-            for k, v in zip(OBJECTS_COLUMNS, (scene, o["id"], o["shape"], o["category"], o["color"], o["mass"],
-                                              o["speed_class"], o["engine_on"], o["floating"], *o["size"])):
+            for k, v in zip(rows, (scene, o["id"], o["shape"], o["category"], o["color"], o["mass"],
+                                   o["speed_class"], o["engine_on"], o["floating"], *o["size"])):
                 rows[k].append(v)
     path = store.split_file("objects.parquet")
-    write_parquet(pa.table(rows), path, OBJECTS_SCHEMA, OBJECTS_VERSION)
+    write_parquet(pa.table(rows, schema=OBJECTS_FIELDS), path, OBJECTS_SCHEMA, OBJECTS_VERSION)
     return [path]
 
 
@@ -215,7 +217,12 @@ def params(cfg: Config) -> dict:
 
     _check(cfg)
     PhysicsParams.from_config(cfg)
-    return cfg.digest("video", "physics", "scene", "render", "labels")
+    out = cfg.digest("video", "physics", "scene")
+    # Only the keys the truth reads from sections other stages own: the image size (the camera, visibility) and
+    # the event merging. A new render backend or label threshold must not rerun the simulation.
+    out["render"] = {k: cfg["render"][k] for k in ("width", "height")}
+    out["labels"] = {"collision_merge_frames": cfg["labels"]["collision_merge_frames"]}
+    return out
 
 
 def extra_inputs(store: Store, cfg: Config) -> dict[str, str]:
