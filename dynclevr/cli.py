@@ -100,22 +100,10 @@ def _register_commands() -> None:
 def main() -> None:
     _register_commands()
     try:
-        app(standalone_mode=False)
+        app()  # standalone: typer reports usage errors itself and exits
     except DynclevrError as e:
         typer.secho(f"error: {e}", err=True, fg="red")
         sys.exit(2)
-    except KeyboardInterrupt:
-        typer.echo("interrupted: finished scenes are kept; rerun to continue", err=True)
-        sys.exit(130)
-    except Exception as e:  # click's usage errors and aborts
-        import click
-
-        if isinstance(e, click.exceptions.ClickException):
-            e.show()
-            sys.exit(e.exit_code)
-        if isinstance(e, click.exceptions.Abort):
-            sys.exit(1)
-        raise
 
 
 if __name__ == "__main__":

@@ -87,6 +87,7 @@ class PhysicsParams:
     engine_until_collision: bool  # the engine stops at the body's first collision (public generator)
     floating_force: float        # m/s^2 upwards per unit mass for floating bodies
     spinning_friction: float
+    angular_damping: float       # per second: air drag on rotation
     restitution_threshold: float  # m/s: slower impacts do not bounce
     solver_iterations: int
     merge_frames: int            # contacts of the same pair within this many frames form one event
@@ -102,7 +103,7 @@ class PhysicsParams:
         for key in ("gravity", "slow_speed", "fast_speed", "engine_accel", "floating_force", "solver_iterations"):
             if ph[key] <= 0:
                 raise ConfigError(f"'physics.{key}' = {ph[key]!r} must be positive")
-        for key in ("spinning_friction", "restitution_threshold", "min_impact_speed"):
+        for key in ("spinning_friction", "angular_damping", "restitution_threshold", "min_impact_speed"):
             if ph[key] < 0:
                 raise ConfigError(f"'physics.{key}' = {ph[key]!r} must not be negative")
         if ph["fast_speed"] <= ph["slow_speed"]:
@@ -116,6 +117,7 @@ class PhysicsParams:
                    slow_speed=float(ph["slow_speed"]), fast_speed=float(ph["fast_speed"]),
                    engine_accel=float(ph["engine_accel"]), engine_until_collision=bool(ph["engine_until_collision"]),
                    floating_force=float(ph["floating_force"]), spinning_friction=float(ph["spinning_friction"]),
+                   angular_damping=float(ph["angular_damping"]),
                    restitution_threshold=float(ph["restitution_threshold"]),
                    solver_iterations=int(ph["solver_iterations"]), merge_frames=int(merge),
                    min_impact_speed=float(ph["min_impact_speed"]))
@@ -259,14 +261,16 @@ class World:
 
     def _dynamics(self, uid: int, friction: float) -> None:
         # Bullet multiplies the two bodies' friction (and restitution) coefficients in a contact.
-        # Damping off: free flight and floating hold their speed; only friction and collisions slow a body.
+        # No linear damping: free flight and floating hold their speed; only friction and collisions slow a body.
+        # Some angular damping (air drag): an aeroplane spun by an impact in the air stops tumbling after a while.
         # Rolling friction is meaningless for sliding boxes; a little spinning friction lets a body that was set
         # spinning by an impact come to rest instead of pirouetting on one contact point forever.
         # contactProcessingThreshold 0: only touching points (not near misses in the margin) reach the solver,
         # so bodies passing close by are not pulled into sticky contacts.
         self.client.changeDynamics(uid, -1, lateralFriction=friction, restitution=self.params.restitution,
                                    rollingFriction=0.0, spinningFriction=self.params.spinning_friction,
-                                   linearDamping=0.0, angularDamping=0.0, contactProcessingThreshold=0.0)
+                                   linearDamping=0.0, angularDamping=self.params.angular_damping,
+                                   contactProcessingThreshold=0.0)
 
     def _hull(self, shape: str) -> int:
         if shape not in self._hulls:

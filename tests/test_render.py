@@ -177,7 +177,8 @@ def test_realistic_backend_missing_is_one_clear_error(monkeypatch):
 
 
 def test_realistic_backend_same_schema_and_truth(spread_scene, rendered, tmp_path):
-    """Mitsuba frames come with the very masks and depth of the fast backend (one geometry, one artifact schema)."""
+    """Mitsuba frames come with the very masks and depth of the fast backend (one geometry, one artifact schema),
+    and are deterministic too."""
     from dynclevr.render.mitsuba import mitsuba_available
 
     if not mitsuba_available():
@@ -187,6 +188,8 @@ def test_realistic_backend_same_schema_and_truth(spread_scene, rendered, tmp_pat
     data = Config.load().data
     data["render"].update(backend="mitsuba", mitsuba_spp=4)
     render_scene(short, 11, Config(data), tmp_path / "m.mcap")
+    render_scene(short, 11, Config(data), tmp_path / "again.mcap")
+    assert (tmp_path / "m.mcap").read_bytes() == (tmp_path / "again.mcap").read_bytes()
     video = Video.read(tmp_path / "m.mcap")
     assert video.meta["backend"] == "mitsuba" and video.num_frames == 2
     assert np.array_equal(video.masks(), rendered.masks()[:2])

@@ -1,5 +1,15 @@
 """`dynclevr export-video` (one scene as an mp4, optionally with masks or boxes drawn over) and
-`dynclevr contact-sheet` (one frame of every scene of a split in a grid)."""
+`dynclevr contact-sheet` (one frame of every scene of a split in a grid).
+
+docs/contact_sheet_tiny.png and docs/contact_sheet_mitsuba.png were made with:
+
+    dynclevr simulate --split tiny && dynclevr render --split tiny
+    dynclevr contact-sheet --split tiny --out docs/contact_sheet_tiny.png
+    printf '[render]\\nbackend = "mitsuba"\\n' > /tmp/realistic.toml     # after `make realistic`
+    dynclevr simulate --split tiny --data-dir data/realistic
+    dynclevr render --split tiny --data-dir data/realistic --config /tmp/realistic.toml
+    dynclevr contact-sheet --split tiny --data-dir data/realistic --out docs/contact_sheet_mitsuba.png
+"""
 
 from __future__ import annotations
 

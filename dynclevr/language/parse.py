@@ -8,6 +8,7 @@ program has, or one that is not a valid postfix program of dynclevr/questions/pr
 
 from __future__ import annotations
 
+import io
 import json
 import pickle
 from pathlib import Path
@@ -70,8 +71,12 @@ class QuestionParser:
     def save(self, dir: Path) -> None:
         dir = Path(dir)
         dir.mkdir(parents=True, exist_ok=True)
+        # Through a buffer: torch.save names the archive's root folder after the file, here a random temporary
+        # name, which would make the same weights differ byte for byte.
+        buf = io.BytesIO()
+        torch.save(self.model.state_dict(), buf)
         with atomic_path(dir / MODEL) as tmp:
-            torch.save(self.model.state_dict(), tmp)
+            tmp.write_bytes(buf.getvalue())
         self.words.save(dir / QUESTION_VOCAB)
         self.programs.save(dir / PROGRAM_VOCAB)
         write_json_atomic(dir / SETTINGS, {"model": self.model.dims.to_dict(), "params": self.params.to_dict(),

@@ -5,7 +5,8 @@
    alone); the best heading of each of the `detect_subtypes` most likely sub-types is refined by gradient ascent,
    and the sub-type with the highest likelihood wins (paper: "shape = the mesh model with the highest likelihood").
 3. A proposal is kept when its mean log-likelihood ratio per foreground cell is high enough, and when no better
-   proposal (or existing track) already explains the same place.
+   proposal (or existing track) already explains the same place: rendered together with them it must still show
+   at least half of its surface.
 """
 
 from __future__ import annotations
@@ -33,25 +34,26 @@ class Proposal:
 def peaks(heat: torch.Tensor, threshold: float, limit: int) -> list[tuple[int, int, float]]:
     """Local maxima of the heatmap logits [H, W] above `threshold` (probability): (row, col, probability)."""
     prob = torch.sigmoid(heat)
-    is_max = prob == F.max_pool2d(prob[None, None], 3, 1, 1)[0, 0]
+    is_max = prob == F.max_pool2d(prob[None, None], 5, 1, 2)[0, 0]
     rows, cols = torch.nonzero(is_max & (prob > threshold), as_tuple=True)
     order = prob[rows, cols].argsort(descending=True)[:limit]
     return [(int(rows[i]), int(cols[i]), float(prob[rows[i], cols[i]])) for i in order]
 
 
 def propose(feats: torch.Tensor, heat: torch.Tensor, logdist: torch.Tensor, meshes: NeuralMeshes, cam: GridCamera,
-            p: dict, exclude: list[np.ndarray] = ()) -> list[Proposal]:
-    """Proposals in one frame. A peak is skipped when its centre lies within `track_radius` (metres) of an
-    `exclude` centre (the tracked objects) or its cell within `track_cells` of one's projection."""
+            p: dict, tracked: list[tuple[np.ndarray, int]] = ()) -> list[Proposal]:
+    """Proposals in one frame, given the tracked objects' (pose, mesh index). A peak is skipped when its centre lies
+    within `track_radius` (metres) of a tracked object or its cell within `track_cells` of one's projection."""
+    centres = [np.asarray(pose[:3]) for pose, _ in tracked]
     found = []
-    if len(exclude):
-        seen_uv, _ = cam.project(torch.tensor(np.array(exclude), dtype=torch.float32))
+    if centres:
+        seen_uv, _ = cam.project(torch.tensor(np.array(centres), dtype=torch.float32))
     for row, col, _ in peaks(heat, p["heatmap_threshold"], p["max_proposals"]):
         ray = cam.ray(col, row)
         centre = cam.camera.position + ray * float(math.exp(logdist[row, col]))
-        if any(np.linalg.norm(centre - c) < p["track_radius"] for c in exclude):
+        if any(np.linalg.norm(centre - c) < p["track_radius"] for c in centres):
             continue
-        if len(exclude) and float((seen_uv - torch.tensor([col, row])).norm(dim=1).min()) < p["track_cells"]:
+        if centres and float((seen_uv - torch.tensor([col, row])).norm(dim=1).min()) < p["track_cells"]:
             continue
         found.append(centre)
     if not found:
@@ -80,11 +82,20 @@ def propose(feats: torch.Tensor, heat: torch.Tensor, logdist: torch.Tensor, mesh
         if quality >= p["min_quality"]:
             out.append(Proposal(poses[i * K + j].numpy().astype(float), int(mesh_idx[i * K + j]), float(ll[i, j]),
                                 quality))
-    # two peaks on one object: keep the better explanation
+    # Greedy, best explanation first: a proposal must not sit on a kept one, and must still show most of its
+    # surface when rendered together with the tracked and kept objects (else it explains pixels already explained).
     out.sort(key=lambda q: -q.loglik)
     kept: list[Proposal] = []
     for q in out:
-        if all(np.linalg.norm(q.pose[:3] - k.pose[:3]) >= p["track_radius"] for k in kept) and \
-                all(np.linalg.norm(q.pose[:3] - c) >= p["track_radius"] for c in exclude):
-            kept.append(q)
+        others = list(tracked) + [(k.pose, k.mesh) for k in kept]
+        if any(np.linalg.norm(q.pose[:3] - np.asarray(o[:3])) < p["track_radius"] for o, _ in others):
+            continue
+        if others:
+            poses = torch.tensor(np.array([o for o, _ in others] + [q.pose]), dtype=torch.float32)
+            idx = torch.tensor([m for _, m in others] + [q.mesh])
+            _, joint_area = score(poses, idx, ev, meshes, cam, joint=True)
+            _, own_area = score(poses[-1:], idx[-1:], ev, meshes, cam, joint=True)
+            if float(joint_area[-1]) < 0.5 * float(own_area[0]):
+                continue
+        kept.append(q)
     return kept

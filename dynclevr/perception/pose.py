@@ -23,6 +23,7 @@ from dynclevr.perception.neural_mesh import NeuralMeshes
 from dynclevr.perception.render import GridCamera, bilinear, cell_area, transform, visible
 
 MAX_TILT = 0.6   # radians: pitch and roll stay small for vehicles (collisions tip them, nothing flips them)
+VISIBILITY_EVERY = 4   # optimisation steps between z-buffer passes (steps move a pose by centimetres)
 
 
 @dataclass
@@ -47,17 +48,30 @@ class Evidence:
 
 
 def score(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: NeuralMeshes, cam: GridCamera,
-          joint: bool) -> tuple[torch.Tensor, torch.Tensor]:
+          joint: bool, weight: torch.Tensor | None = None) -> tuple[torch.Tensor, torch.Tensor]:
     """Per pose: (log-likelihood ratio, visible foreground area in cells). joint: the poses are the objects of one
-    frame and occlude each other; otherwise independent hypotheses."""
+    frame and occlude each other; otherwise independent hypotheses. `weight`: the points' visible areas [N, V]
+    from `weights()` at a nearby pose (visibility is held fixed over a few steps); None computes them here."""
     V = meshes.vertices
     world = transform(meshes.points[mesh_idx], poses)
     uv, depth = cam.project(world)
-    vis = visible(uv, depth, ev.W, ev.H, joint)
-    weight = (cell_area(meshes.area[mesh_idx][:, None], depth, cam.f) * vis).detach()
+    if weight is None:
+        weight = _weights(uv, depth, mesh_idx, ev, meshes, cam, joint)
     rows = ev.block[mesh_idx][:, None] * V + torch.arange(V)
     ll = bilinear(ev.maps, rows, uv, ev.W, ev.H)
     return (weight * ll).sum(1), weight.sum(1)
+
+
+def _weights(uv, depth, mesh_idx, ev: Evidence, meshes: NeuralMeshes, cam: GridCamera, joint: bool) -> torch.Tensor:
+    vis = visible(uv, depth, ev.W, ev.H, joint)
+    return (cell_area(meshes.area[mesh_idx][:, None], depth, cam.f) * vis).detach()
+
+
+@torch.no_grad()
+def weights(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: NeuralMeshes, cam: GridCamera,
+            joint: bool) -> torch.Tensor:
+    uv, depth = cam.project(transform(meshes.points[mesh_idx], poses))
+    return _weights(uv, depth, mesh_idx, ev, meshes, cam, joint)
 
 
 def wrap(angle: torch.Tensor) -> torch.Tensor:
@@ -74,7 +88,9 @@ def fit(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: Neura
     b1, b2 = 0.9, 0.999
     norm = None
     for i in range(iterations):
-        ll, area = score(p, mesh_idx, ev, meshes, cam, joint)
+        if i % VISIBILITY_EVERY == 0:
+            w = weights(p, mesh_idx, ev, meshes, cam, joint)
+        ll, area = score(p, mesh_idx, ev, meshes, cam, joint, w)
         if norm is None:
             norm = area.clamp(min=1.0)
         loss = -(ll / norm).sum()

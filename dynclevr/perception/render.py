@@ -112,11 +112,10 @@ def bilinear(maps: torch.Tensor, rows: torch.Tensor, uv: torch.Tensor, W: int, H
     x, y = uv[..., 0], uv[..., 1]
     x0, y0 = x.detach().floor(), y.detach().floor()
     wx, wy = x - x0, y - y0
-    x0, y0 = x0.long(), y0.long()
-    out = 0.0
-    for dx, dy, w in ((0, 0, (1 - wx) * (1 - wy)), (1, 0, wx * (1 - wy)), (0, 1, (1 - wx) * wy), (1, 1, wx * wy)):
-        xi, yi = x0 + dx, y0 + dy
-        ok = (xi >= 0) & (xi < W) & (yi >= 0) & (yi < H)
-        idx = rows * (H * W) + yi.clamp(0, H - 1) * W + xi.clamp(0, W - 1)
-        out = out + w * maps.flatten()[idx] * ok
-    return out
+    xi = x0.long()[..., None] + torch.tensor([0, 1, 0, 1])
+    yi = y0.long()[..., None] + torch.tensor([0, 0, 1, 1])
+    ok = (xi >= 0) & (xi < W) & (yi >= 0) & (yi < H)
+    idx = rows[..., None] * (H * W) + yi.clamp(0, H - 1) * W + xi.clamp(0, W - 1)
+    values = maps.reshape(-1)[idx] * ok
+    w = torch.stack([(1 - wx) * (1 - wy), wx * (1 - wy), (1 - wx) * wy, wx * wy], -1)
+    return (w * values).sum(-1)

@@ -37,7 +37,7 @@ def parser_params(cfg: Config) -> dict:
     """cfg["parser"], checked."""
     p = cfg["parser"]
     for key in ("prior_sigma2", "kappa", "learning_rate", "iterations", "detect_iterations", "detect_every",
-                "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells", "fit_window",
+                "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells", "merge_radius", "fit_window",
                 "angular_window", "color_frames", "lost_frames", "min_area"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
@@ -93,8 +93,8 @@ class SceneParser:
                 if active:
                     self._track(t, active, feats[t], contacts)
                 if t % self.p["detect_every"] == 0:
-                    exclude = [np.asarray(k.pose[-1][:3]) for k in tracks if k.end is None]
-                    for q in propose(feats[t], heat[t], logdist[t], self.model.meshes, self.gcam, self.p, exclude):
+                    tracked = [(k.pose[-1], k.mesh) for k in tracks if k.end is None]
+                    for q in propose(feats[t], heat[t], logdist[t], self.model.meshes, self.gcam, self.p, tracked):
                         mass = get_asset(self.subtypes[q.mesh]).mass(self.physics.density)
                         k = Track(len(tracks), q.mesh, t, float(np.clip(q.quality, 0.0, 1.0)), mass)
                         self._record(k, q.pose, True)
@@ -130,6 +130,12 @@ class SceneParser:
             k.lost = 0 if seen else k.lost + 1
             if k.lost >= self.p["lost_frames"]:
                 k.end = t + 1
+        # two tracks that converged on one object: the younger one ends
+        for i, a in enumerate(active):
+            for b in active[i + 1:]:
+                if a.end is None and b.end is None and \
+                        np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
+                    b.end = t + 1
 
     def _predict(self, active: list[Track]) -> tuple[torch.Tensor, dict]:
         """mu_t = PE(S_{t-1}): one physics-engine frame from the previous estimates; and the contacts of that step."""

@@ -1,11 +1,11 @@
 """Procedural environments: the stand-in for the paper's 509 HDRI domes (REFERENCE.md section 1, Backgrounds).
 
 An environment is a sky (a function of direction: gradient, sun, clouds and a skyline of hills, trees, a city or
-mountains on the horizon; `equirect()` bakes it into an environment map), a ground material (asphalt with lane marks, grass, sand, tiles, concrete, snow, gravel,
-dirt, cobblestone, brick) as a tileable texture, and the light they imply (sun direction and colour, sky ambient,
-haze). 10 ground materials x 6 skies, each with its own palette, skyline and sun drawn from the environment's index,
-give NUM_ENVIRONMENTS = 60 distinct places. Everything is a pure function of the index; a scene picks its index
-with `choose(rng)`.
+mountains on the horizon; `equirect()` bakes it into an environment map), a ground material (asphalt with lane
+marks, grass, sand, tiles, concrete, snow, gravel, dirt, cobblestone, brick) as a tileable texture, and the light
+they imply (sun direction and colour, sky ambient, haze). 10 ground materials x 6 skies, each with its own palette,
+skyline and sun drawn from the environment's index, give NUM_ENVIRONMENTS = 60 distinct places. Everything is a pure
+function of the index; a scene picks its index with `choose(rng)`.
 
 Conventions: colours are display RGB in [0, 1]; world z is up. The equirectangular sky has row r at elevation
 90 - 180 (r + 0.5) / H degrees and column c at azimuth atan2(y, x) = 360 (c + 0.5) / W - 180 degrees.
@@ -235,7 +235,7 @@ def _ground_texture(kind: str, rng: np.random.Generator) -> tuple[np.ndarray, fl
         cell, edge = _cells(rng, S, count)
         base = _jitter(rng, (0.52, 0.50, 0.46) if kind == "gravel" else (0.48, 0.47, 0.46))
         tone = rng.uniform(-0.2, 0.2, count)[cell]
-        hue = rng.uniform(-0.05, 0.05, (count, 3))[cell]
+        hue = rng.uniform(-0.015, 0.015, (count, 3))[cell]
         gap = np.clip(edge / (2.0 if kind == "gravel" else 3.5), 0, 1)
         tex = (base * (1 + tone[..., None]) + hue) * (0.45 + 0.55 * gap[..., None]) * (1 + 0.05 * fine[..., None])
         return tex, (2.5 if kind == "gravel" else 4.0)
@@ -264,36 +264,40 @@ def _ground_texture(kind: str, rng: np.random.Generator) -> tuple[np.ndarray, fl
 SKYLINE_SAMPLES = 4096   # skyline heights per full turn of azimuth
 
 
-def _skyline(rng: np.random.Generator, kind: str) -> list[tuple[np.ndarray, np.ndarray, float]]:
-    """Layers of (height in degrees per azimuth sample, colour, haze 0..1), far to near."""
+def _skyline(rng: np.random.Generator, kind: str) -> list[tuple[np.ndarray, np.ndarray, np.ndarray, float]]:
+    """Layers of (height in degrees, brightness per azimuth sample, colour, haze 0..1), far to near."""
     W = SKYLINE_SAMPLES
     az = (np.arange(W) + 0.5) / W
     layers = []
 
     def bumps(count, width, height, square):
-        h = np.zeros(W)
-        centres, widths, heights = rng.uniform(0, 1, count), rng.uniform(*width, count), rng.uniform(*height, count)
-        for c, w, hh in zip(centres, widths, heights):
-            lo, hi = int((c - w) * W), int((c + w) * W) + 1
-            idx = np.arange(lo, hi)
-            d = np.abs(az[idx % W] - c + np.round(c - az[idx % W]))
+        """Round tree crowns or flat-topped buildings, each with its own brightness."""
+        h, tone = np.zeros(W), np.ones(W)
+        for c, w, hh, b in zip(rng.uniform(0, 1, count), rng.uniform(*width, count), rng.uniform(*height, count),
+                               rng.uniform(0.7, 1.3, count)):
+            idx = np.arange(int((c - w) * W), int((c + w) * W) + 1) % W
+            d = np.abs(az[idx] - c + np.round(c - az[idx]))
             shape = np.full(len(idx), hh) if square else hh * np.sqrt(np.clip(1 - (d / w) ** 2, 0, 1))
-            h[idx % W] = np.maximum(h[idx % W], shape)
-        return h
+            higher = shape > h[idx]
+            h[idx[higher]], tone[idx[higher]] = shape[higher], b
+        return h, tone
 
+    flat = np.ones(W)
     if kind == "mountains":
         ridge = 1.0 + 1.6 * np.abs(_noise(rng, (1, W), 2.8, 2)[0]) + 0.15 * _noise(rng, (1, W), 1.6, 40)[0]
-        layers.append((ridge, np.array((0.36, 0.42, 0.52)), 0.55))
+        layers.append((ridge, flat, np.array((0.36, 0.42, 0.52)), 0.55))
     if kind in ("hills", "trees"):
         hills = 0.6 + 1.2 * np.clip(_noise(rng, (1, W), 2.4, 1)[0], -0.5, None)
-        layers.append((hills, np.array((0.30, 0.40, 0.22)), 0.45))
+        layers.append((hills, flat, np.array((0.30, 0.40, 0.22)), 0.45))
     if kind == "trees":
-        trees = np.maximum(bumps(700, (0.0015, 0.004), (1.2, 3.2), False), 0.9)
-        layers.append((trees, np.array((0.10, 0.19, 0.09)), 0.3))
+        trees, tone = bumps(700, (0.0015, 0.004), (1.2, 3.2), False)
+        layers.append((np.maximum(trees, 0.9), tone, np.array((0.10, 0.19, 0.09)), 0.3))
     if kind == "city":
-        layers.append((bumps(70, (0.002, 0.006), (1.0, 3.5), True), np.array((0.46, 0.48, 0.54)), 0.55))
-        layers.append((bumps(140, (0.002, 0.008), (0.4, 1.8), True), np.array((0.36, 0.36, 0.40)), 0.4))
-    return [(h.astype(np.float32), c, haze) for h, c, haze in layers]
+        far, far_tone = bumps(70, (0.002, 0.006), (1.0, 3.5), True)
+        near, near_tone = bumps(140, (0.002, 0.008), (0.4, 1.8), True)
+        layers.append((far, far_tone, np.array((0.44, 0.46, 0.52)), 0.45))
+        layers.append((near, near_tone, np.array((0.32, 0.32, 0.36)), 0.25))
+    return [(h.astype(np.float32), t.astype(np.float32), c, haze) for h, t, c, haze in layers]
 
 
 @dataclass(frozen=True)
@@ -335,9 +339,9 @@ class Sky:
         azim = np.mod(np.degrees(np.arctan2(d[..., 1], d[..., 0])) + 180, 360) / 360
         col = np.minimum((azim * SKYLINE_SAMPLES).astype(np.int32), SKYLINE_SAMPLES - 1)
         tone = _remap(self.shading[..., None], azim * 1024, np.clip(elev, 0, 20) * 3.2)
-        for h, colour, haze in self.skyline:
+        for h, brightness, colour, haze in self.skyline:
             inside = (elev >= 0) & (elev < h[col])
-            shade = colour.astype(np.float32) * (1 + 0.1 * tone[..., None])
+            shade = colour.astype(np.float32) * (brightness[col] + 0.1 * tone)[..., None]
             sky = np.where(inside[..., None], _mix(shade, hor, haze), sky)
         return np.clip(sky, 0, 1.5).astype(np.float32)
 

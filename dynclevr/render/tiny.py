@@ -147,10 +147,9 @@ class TinyRenderer:
         spec = [1.0 - material.roughness] * 3
         kw = dict(vertices=tri.tolist(), indices=list(range(len(tri))), normals=normals.tolist(), uvs=uvs.tolist(),
                   specularColor=spec, physicsClientId=self.client)
-        if material.uniform:
-            vs = p.createVisualShape(p.GEOM_MESH, rgbaColor=[*(material.mean_rgb / 255), 1.0], **kw)
-        else:
-            vs = p.createVisualShape(p.GEOM_MESH, rgbaColor=[1, 1, 1, 1], **kw)
+        # A patterned material is a texture with a white tint; a plain one needs no texture.
+        colour = [*(material.mean_rgb / 255), 1.0] if material.uniform else [1.0, 1.0, 1.0, 1.0]
+        vs = p.createVisualShape(p.GEOM_MESH, rgbaColor=colour, **kw)
         uid = p.createMultiBody(0, -1, vs, physicsClientId=self.client)
         if not material.uniform:
             path = os.path.join(self._tmp, f"{uid}.png")

@@ -11,6 +11,7 @@ environments.NUM_ENVIRONMENTS: sky, skyline, ground material, sun) and each obje
 from __future__ import annotations
 
 import json
+import os
 
 import numpy as np
 
@@ -31,7 +32,7 @@ def check(cfg: Config) -> dict:
     r = cfg["render"]
     if r["backend"] not in BACKENDS:
         raise ConfigError(f"'render.backend' = {r['backend']!r}: use one of {', '.join(BACKENDS)}")
-    if not 1 <= r["supersample"] <= 4:
+    if not isinstance(r["supersample"], int) or not 1 <= r["supersample"] <= 4:
         raise ConfigError(f"'render.supersample' = {r['supersample']!r}: use 1 (none) to 4")
     if r["mitsuba_spp"] < 1:
         raise ConfigError(f"'render.mitsuba_spp' = {r['mitsuba_spp']!r} must be at least 1")
@@ -57,6 +58,10 @@ def render_scene(scene: Scene4D, seed: int, cfg: Config, out) -> None:
 
 
 def run_scene(job: SceneJob) -> None:
+    if os.environ.get("OMP_NUM_THREADS") == "1":   # a pool worker: one core each, the pool is the parallelism
+        import cv2
+
+        cv2.setNumThreads(1)
     render_scene(Scene4D.read(job.inputs["simulate"][0]), job.seed, job.cfg, job.outputs[0])
 
 
