@@ -108,9 +108,11 @@ def finalize(store, cfg, scenes: list[str]) -> list[Path]:
 
 
 def _extra(store, cfg) -> dict[str, str]:
-    q, w = store.split_file("questions.parquet"), WEIGHTS_DIR / "qparser" / "manifest.json"
+    # The weights themselves, not their manifest: a retrain that gives the same bytes reruns nothing.
+    q = store.split_file("questions.parquet")
+    weights = sorted(p for p in (WEIGHTS_DIR / "qparser").glob("*") if p.name != "manifest.json")
     return {"questions": file_digest(q) if q.exists() else "missing",
-            "qparser": file_digest(w) if w.exists() else "missing"}
+            **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
 
 STAGE = Stage("answer", 1, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
