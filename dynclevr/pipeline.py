@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib
 import os
+import time
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 from multiprocessing import get_context
@@ -120,7 +121,8 @@ class Runner:
 
     # ---- running -------------------------------------------------------------------------------------------------
 
-    def run(self, name: str, indices: list[int], force: bool = False) -> dict[str, int]:
+    def run(self, name: str, indices: list[int], force: bool = False) -> dict[str, float]:
+        start = time.perf_counter()
         stage = get_stage(name)
         manifests = {up: self.store.manifest(up) for up in stage.inputs}
         manifest = self.store.manifest(stage.name)
@@ -142,14 +144,19 @@ class Runner:
             manifest.save()
         if stage.finalize:
             self._finalize(stage, manifest, force)
-        return {"ran": len(todo), "cached": cached}
+        seconds = time.perf_counter() - start
+        if todo:
+            self.echo(f"{stage.name}: {len(todo)} done in {seconds:.1f} s")
+        return {"ran": len(todo), "cached": cached, "seconds": seconds}
 
     def _map(self, stage: Stage, todo):
+        from rich.console import Console
         from rich.progress import Progress
 
         if not todo:
             return
-        with Progress(transient=True) as bar:
+        console = Console(stderr=True)
+        with Progress(console=console, transient=True, disable=not console.is_terminal) as bar:
             task = bar.add_task(stage.name, total=len(todo))
             if self.workers == 1 or len(todo) == 1:
                 for job, key in todo:
