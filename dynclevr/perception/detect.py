@@ -1,6 +1,7 @@
 """Object proposals and identity from the model itself (no ground truth anywhere).
 
-1. The CNN's centre heatmap gives peaks; its distance head places each peak's object centre on the camera ray.
+1. The CNN's centre heatmap gives peaks. On each peak's camera ray, a ground vehicle's centre is where the ray
+   meets the plane at the sub-type's half height; an aeroplane's is at the distance the CNN's distance head gives.
 2. Every sub-type's neural mesh is scored there over a coarse grid of headings (render-and-compare, each hypothesis
    alone); the best heading of each of the `detect_subtypes` most likely sub-types is refined by gradient ascent,
    and the sub-type with the highest likelihood wins (paper: "shape = the mesh model with the highest likelihood").
@@ -18,6 +19,7 @@ import numpy as np
 import torch
 from torch.nn import functional as F
 
+from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.perception.neural_mesh import NeuralMeshes
 from dynclevr.perception.pose import Evidence, fit, score
 from dynclevr.perception.render import GridCamera
@@ -48,23 +50,30 @@ def propose(feats: torch.Tensor, heat: torch.Tensor, logdist: torch.Tensor, mesh
     found = []
     if centres:
         seen_uv, _ = cam.project(torch.tensor(np.array(centres), dtype=torch.float32))
+    M, Y = len(meshes.subtypes), p["yaw_grid"]
+    half = meshes.half_heights.numpy()
+    flying = np.array([SUBTYPES[s][0] == "aeroplane" for s in meshes.subtypes])
+    eye = np.asarray(cam.camera.position, float)
     for row, col, _ in peaks(heat, p["heatmap_threshold"], p["max_proposals"]):
         ray = cam.ray(col, row)
-        centre = cam.camera.position + ray * float(math.exp(logdist[row, col]))
+        centre = eye + ray * float(math.exp(logdist[row, col]))
         if any(np.linalg.norm(centre - c) < p["track_radius"] for c in centres):
             continue
         if centres and float((seen_uv - torch.tensor([col, row])).norm(dim=1).min()) < p["track_cells"]:
             continue
-        found.append(centre)
+        # per sub-type: a ground vehicle's centre is where the ray meets the plane at its half height; an
+        # aeroplane's (in the air, at any height) is at the distance the CNN's distance head gives
+        reach = (half - eye[2]) / min(ray[2], -1e-3)
+        ground = eye + reach[:, None] * ray
+        found.append(np.where(flying[:, None] | (reach[:, None] <= 0), centre, ground))
     if not found:
         return []
-    M, Y = len(meshes.subtypes), p["yaw_grid"]
-    ev = Evidence.compute(feats, meshes, list(range(M)), p["kappa"])
+    ev = Evidence.compute(feats, meshes, list(range(M)), p["kappa"], p["foreground_bias"])
     P = len(found)
     # coarse search: every peak x sub-type x heading, each hypothesis alone
     yaws = torch.arange(Y) * (2 * math.pi / Y) - math.pi
     pose = torch.zeros(P, M, Y, 6)
-    pose[..., :3] = torch.tensor(np.array(found), dtype=torch.float32)[:, None, None]
+    pose[..., :3] = torch.tensor(np.array(found), dtype=torch.float32)[:, :, None]
     pose[..., 3] = yaws
     mesh_idx = torch.arange(M)[None, :, None].expand(P, M, Y).reshape(-1)
     ll, _ = score(pose.reshape(-1, 6), mesh_idx, ev, meshes, cam, joint=False)

@@ -24,15 +24,20 @@ from scipy.spatial.transform import Rotation
 from dynclevr.physics import heading
 
 
-def motion(pos: np.ndarray, fps: int) -> tuple[np.ndarray, np.ndarray]:
-    """(velocity, acceleration) at the last of `pos` [n, 3] (the positions to fit, oldest first)."""
+def motion(pos: np.ndarray, fps: int, min_frames: int) -> tuple[np.ndarray, np.ndarray]:
+    """(velocity, acceleration) at the last of `pos` [n, 3] (the positions to fit, oldest first).
+
+    Fewer than `min_frames` positions give no velocity, fewer than twice that no acceleration: from two or three
+    noisy poses a difference is mostly noise (5 cm of jitter between two frames reads as 3 m/s), and fed back into
+    the physics prior as an engine or a speed it would push the estimate away from the object."""
     n = len(pos)
-    if n < 2:
+    if n < max(min_frames, 2):
         return np.zeros(3), np.zeros(3)
+    quadratic = n >= 2 * min_frames
     t = (np.arange(n) - (n - 1)) / fps
-    A = np.stack([np.ones_like(t), t, 0.5 * t * t], 1) if n >= 6 else np.stack([np.ones_like(t), t], 1)
+    A = np.stack([np.ones_like(t), t, 0.5 * t * t] if quadratic else [np.ones_like(t), t], 1)
     coef, *_ = np.linalg.lstsq(A, pos, rcond=None)
-    return coef[1], (coef[2] if n >= 6 else np.zeros(3))
+    return coef[1], (coef[2] if quadratic else np.zeros(3))
 
 
 def angular_velocity(quats: np.ndarray, fps: int, window: int) -> np.ndarray:

@@ -14,7 +14,7 @@ import numpy as np
 import torch
 from torch.nn import functional as F
 
-from dynclevr.assets import get_asset
+from dynclevr.assets import SUBTYPES, get_asset
 
 
 def surface_points(subtype: str, count: int) -> tuple[np.ndarray, float]:
@@ -48,6 +48,11 @@ class NeuralMeshes:
         feats = F.normalize(torch.randn(len(subtypes), vertices, dim, generator=g), dim=-1)
         clut = F.normalize(torch.randn(clutter, dim, generator=g), dim=-1)
         return cls(subtypes, torch.tensor(np.stack(pts)), torch.tensor(areas, dtype=torch.float32), feats, clut)
+
+    @property
+    def half_heights(self) -> torch.Tensor:
+        """[M] half the height of each sub-type's box: the lowest its centre can be (resting on the floor)."""
+        return torch.tensor([SUBTYPES[s][1][2] / 2 for s in self.subtypes], dtype=torch.float32)
 
     @property
     def vertices(self) -> int:

@@ -1,8 +1,12 @@
 """Render-and-compare: the rendering likelihood of poses given a frame's features, and its maximisation with the
 physics prior (REFERENCE.md section 2.1-2.2).
 
-log p(F | O_s, pose, B) - log p(F | B everywhere) = kappa * sum over foreground cells (f_i . T_s(i) - max_k f_i . B_k)
-(the unit-feature form of the paper's Gaussian likelihoods). Each frame's similarity of every needed vertex feature
+log p(F | O_s, pose, B) - log p(F | B everywhere)
+    = kappa * sum over foreground cells (f_i . T_s(i) - max_k f_i . B_k + bias)
+(the unit-feature form of the paper's Gaussian likelihoods; `bias` is the gap between the foreground and background
+Gaussians' log normalisers, which differ when their variances do. It matters: at stride 8 the cells on an object's
+outline look half like background, and without it the likelihood prefers an object shrunk inside its outline,
+i.e. moved away from the camera). Each frame's similarity of every needed vertex feature
 to every cell, minus the clutter score, is computed once (`Evidence`), so one optimisation step only samples it.
 The physics prior adds -|pose - PE(previous estimate)|^2 / (2 sigma^2) (paper eq. 4, sigma^2 = 3).
 
@@ -23,6 +27,8 @@ from dynclevr.perception.neural_mesh import NeuralMeshes
 from dynclevr.perception.render import GridCamera, bilinear, cell_area, transform, visible
 
 MAX_TILT = 0.6   # radians: pitch and roll stay small for vehicles (collisions tip them, nothing flips them)
+FLOOR_SLACK = 0.05     # metres a centre may sit below its resting height (a tilted body rests lower)
+GRADIENT_SCALE = 0.2  # Adam's epsilon (mean log-likelihood ratio per cell per metre or radian); see fit()
 VISIBILITY_EVERY = 4   # optimisation steps between z-buffer passes (steps move a pose by centimetres)
 
 
@@ -36,15 +42,16 @@ class Evidence:
     H: int
 
     @classmethod
-    def compute(cls, feats: torch.Tensor, meshes: NeuralMeshes, mesh_ids: list[int], kappa: float) -> "Evidence":
-        """feats [D, H, W] unit features of one frame."""
+    def compute(cls, feats: torch.Tensor, meshes: NeuralMeshes, mesh_ids: list[int], kappa: float,
+                bias: float = 0.0) -> "Evidence":
+        """feats [D, H, W] unit features of one frame; bias: the foreground / background log-normaliser gap."""
         D, H, W = feats.shape
         fmap = feats.reshape(D, H * W)
         clutter = (meshes.clutter @ fmap).max(0).values
         sims = meshes.features[mesh_ids].reshape(-1, D) @ fmap
         block = torch.full((len(meshes.subtypes),), -1, dtype=torch.long)
         block[mesh_ids] = torch.arange(len(mesh_ids))
-        return cls(kappa * (sims - clutter), block, W, H)
+        return cls(kappa * (sims - clutter + bias), block, W, H)
 
 
 def score(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: NeuralMeshes, cam: GridCamera,
@@ -82,11 +89,15 @@ def fit(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: Neura
         iterations: int, lr: float, joint: bool, prior_mean: torch.Tensor | None = None,
         sigma2: float = 3.0) -> tuple[torch.Tensor, torch.Tensor, torch.Tensor]:
     """Maximise likelihood (x prior) by Adam from `poses` [N, 6]; returns (poses, log-likelihood ratio, area)."""
-    # Adam written out: torch.optim's first use imports torch._dynamo (seconds), and a few lines do.
+    # Adam written out: torch.optim's first use imports torch._dynamo (seconds), and a few lines do. Its epsilon
+    # is GRADIENT_SCALE rather than ~0: plain Adam takes full steps along directions where the likelihood is flat
+    # (the distance to the camera of a thin aeroplane), a random walk that the velocity estimate then reads as
+    # motion; with it, steps shrink in proportion where the gradient is small.
     p = poses.detach().clone().requires_grad_(True)
     m, v = torch.zeros_like(p), torch.zeros_like(p)
     b1, b2 = 0.9, 0.999
     norm = None
+    floor = meshes.half_heights[mesh_idx] - FLOOR_SLACK   # nothing sinks into the floor
     for i in range(iterations):
         if i % VISIBILITY_EVERY == 0:
             w = weights(p, mesh_idx, ev, meshes, cam, joint)
@@ -103,8 +114,9 @@ def fit(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: Neura
             m.mul_(b1).add_(g, alpha=1 - b1)
             v.mul_(b2).addcmul_(g, g, value=1 - b2)
             step = lr * (1.0 - i / iterations) / (1 - b1 ** (i + 1))
-            p -= step * m / ((v / (1 - b2 ** (i + 1))).sqrt() + 1e-8)
+            p -= step * m / ((v / (1 - b2 ** (i + 1))).sqrt() + GRADIENT_SCALE)
             p[:, 4:].clamp_(-MAX_TILT, MAX_TILT)
+            p[:, 2] = torch.maximum(p[:, 2], floor)
             p[:, 3] = wrap(p[:, 3])
     with torch.no_grad():
         ll, area = score(p, mesh_idx, ev, meshes, cam, joint)

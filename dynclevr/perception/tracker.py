@@ -36,8 +36,8 @@ from dynclevr.scene import Collision, Scene4D, SceneObject
 def parser_params(cfg: Config) -> dict:
     """cfg["parser"], checked."""
     p = cfg["parser"]
-    for key in ("prior_sigma2", "kappa", "learning_rate", "iterations", "detect_iterations", "detect_every",
-                "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells", "merge_radius", "fit_window",
+    for key in ("prior_sigma2", "kappa", "foreground_bias", "learning_rate", "iterations", "detect_iterations", "detect_every",
+                "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells", "merge_radius", "fit_window", "min_fit_frames",
                 "angular_window", "color_frames", "lost_frames", "min_area"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
@@ -120,12 +120,13 @@ class SceneParser:
                         k.segment = t - k.start
         prior = bool(self.p["physics_prior"])
         mesh_idx = torch.tensor([k.mesh for k in active])
-        ev = Evidence.compute(feats, self.model.meshes, sorted(set(mesh_idx.tolist())), self.p["kappa"])
+        ev = Evidence.compute(feats, self.model.meshes, sorted(set(mesh_idx.tolist())), self.p["kappa"],
+                              self.p["foreground_bias"])
         poses, ll, area = fit(predicted if prior else prev, mesh_idx, ev, self.model.meshes, self.gcam,
                               self.p["iterations"], self.p["learning_rate"], joint=True,
                               prior_mean=predicted if prior else None, sigma2=self.p["prior_sigma2"])
         for i, k in enumerate(active):
-            seen = float(area[i]) >= self.p["min_area"] and float(ll[i]) > 0
+            seen = float(area[i]) >= self.p["min_area"] and float(ll[i] / area[i]) >= self.p["min_quality"]
             self._record(k, poses[i].numpy().astype(float), seen)
             k.lost = 0 if seen else k.lost + 1
             if k.lost >= self.p["lost_frames"]:
@@ -160,7 +161,7 @@ class SceneParser:
         p = self.p
         pos, quats = np.array(k.pose)[:, :3], np.array(k.quat)
         category, size = SUBTYPES[self.subtypes[k.mesh]]
-        vel, acc = dynamics.motion(pos[max(k.segment, len(pos) - p["fit_window"]):], self.fps)
+        vel, acc = dynamics.motion(pos[max(k.segment, len(pos) - p["fit_window"]):], self.fps, p["min_fit_frames"])
         if np.linalg.norm(vel) < p["static_speed"]:
             vel = np.zeros(3)
         k.vel.append(vel)

@@ -11,7 +11,8 @@ Training may read the truth (poses, masks, depth; paper, appendix 3); inference 
   (paper: EM-type learning after CoKe), so the neural textures are not trained by gradient;
 - the proposal heads learn the projected object centres (CenterNet focal loss) and the log camera distance;
 - the colour classifier learns crops at jittered true poses.
-The CNN trains on random grid-aligned crops of the frames (around an object), evaluates on whole frames.
+The CNN trains on random grid-aligned crops of the frames (around an object), with the colour channels shuffled
+and brightness / contrast jittered, and evaluates on whole frames.
 The first `val_fraction` of scenes are held out for the manifest's metrics.
 """
 
@@ -120,6 +121,15 @@ def crop_sample(s: dict, rng, width: int, height: int) -> dict:
     return {"rgb": s["rgb"][y0:y0 + height, x0:x0 + width], "mesh": s["mesh"][keep], "vert": s["vert"][keep],
             "uv": uv[keep], "bg": s["bg"][r0:r0 + gh, c0:c0 + gw], "heat": s["heat"][r0:r0 + gh, c0:c0 + gw],
             "centres": centres, "colors": []}
+
+
+def augment(rgb: np.ndarray, rng) -> np.ndarray:
+    """Appearance changes that keep the geometry: a random order of the colour channels (vehicles come in any of 8
+    colours, so what tells a vertex apart must be shape, not hue), brightness and contrast."""
+    x = rgb[..., rng.permutation(3)].astype(np.float32)
+    mean = x.mean()
+    x = (x - mean) * rng.uniform(0.7, 1.3) + mean * rng.uniform(0.7, 1.3)
+    return np.clip(x, 0, 255).astype(np.uint8)
 
 
 def neighbours(meshes: NeuralMeshes, radius: float) -> torch.Tensor:
@@ -261,6 +271,8 @@ def train_parser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, worke
         logs = []
         for i in range(0, len(order), B):
             batch = [crop_sample(train[j], rng, *p["train_crop"]) for j in order[i:i + B]]
+            for b in batch:
+                b["rgb"] = augment(b["rgb"], rng)
             logs.append(contrastive_step(net, meshes, batch, neigh, p, rng, opt))
             sched.step()
         mean = {k: float(np.mean([l[k] for l in logs if k in l])) for k in logs[0]}
