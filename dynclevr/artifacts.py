@@ -52,13 +52,19 @@ def file_digest(path: Path) -> str:
 def atomic_path(path: Path):
     """Yield a temporary path beside `path`; rename it into place only if the block succeeds."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as e:   # --data-dir or --out names a file, or a folder without write permission
+        raise ArtifactError(f"cannot write {path} ({e.strerror}: {e.filename}): choose a writable folder") from None
     os.close(fd)
     os.chmod(tmp, 0o644)  # mkstemp's 0600 would make artifacts unreadable to the rest of a team
     try:
         yield Path(tmp)
-        os.replace(tmp, path)
+        try:
+            os.replace(tmp, path)
+        except OSError as e:
+            raise ArtifactError(f"cannot write {path} ({e.strerror}): name a file, not a folder") from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
@@ -102,12 +108,17 @@ class Manifest:
     def __init__(self, path: Path):
         self.path = Path(path)
         self.entries: dict[str, dict] = {}
+        self.corrupt = False
         if self.path.exists():
             try:
-                self.entries = json.loads(self.path.read_text())["entries"]
-            except (ValueError, KeyError):
+                entries = json.loads(self.path.read_text())["entries"]
+                if not all(isinstance(e, dict) and isinstance(e.get("key"), str) and isinstance(e.get("digest"), str)
+                           for e in entries.values()):
+                    raise ValueError
+                self.entries = entries
+            except (ValueError, KeyError, TypeError, AttributeError):
                 # A corrupt lock only costs a rerun; the artifacts themselves are checked on read.
-                self.entries = {}
+                self.corrupt = True
 
     def fresh(self, name: str, key: str, outputs: list[Path]) -> bool:
         e = self.entries.get(name)
@@ -136,9 +147,16 @@ def digest_outputs(outputs: list[Path]) -> str:
 SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate"}
 
 
-def _rerun_hint(path: Path) -> str:
-    stage = SPLIT_FILES.get(Path(path).name) or DIR_STAGES.get(Path(path).parent.name.split("-")[0])
-    return f"rerun `dynclevr {stage} --force`" if stage else "regenerate it"
+def rerun_hint(path: Path) -> str:
+    path = Path(path)
+    if path.name in SPLIT_FILES:
+        stage, split, variant = SPLIT_FILES[path.name], path.parent.name, ""
+    else:   # <data-dir>/<split>/<stage dir>[-<variant>]/<file>
+        kind, _, variant = path.parent.name.partition("-")
+        stage, split = DIR_STAGES.get(kind), path.parent.parent.name
+    if not stage:
+        return "regenerate it"
+    return f"rerun `dynclevr {stage} --split {split}{' --no-physics-prior' if variant == 'noprior' else ''} --force`"
 
 
 # ---- Parquet ---------------------------------------------------------------------------------------------------
@@ -156,16 +174,16 @@ def read_parquet(path: Path, schema: str, version: int, columns: list[str] | Non
     """Read a stamped table; a missing, corrupt or other-version file raises one clear ArtifactError."""
     path = Path(path)
     if not path.exists():
-        raise ArtifactError(f"{path} is missing: {_rerun_hint(path)}")
+        raise ArtifactError(f"{path} is missing: {rerun_hint(path)}")
     try:
         meta = pq.read_schema(path).metadata or {}
     except (pa.ArrowException, OSError) as e:
-        raise ArtifactError(f"{path} is not a readable Parquet file ({e}): {_rerun_hint(path)}") from None
+        raise ArtifactError(f"{path} is not a readable Parquet file ({e}): {rerun_hint(path)}") from None
     found = (meta.get(b"dynclevr.schema", b"?").decode(), meta.get(b"dynclevr.version", b"?").decode())
     if found != (schema, str(version)):
         raise ArtifactError(f"{path} has schema {found[0]} v{found[1]}, expected {schema} v{version}: "
-                            f"{_rerun_hint(path)}")
+                            f"{rerun_hint(path)}")
     try:
         return pq.read_table(path, columns=columns)
     except (pa.ArrowException, OSError) as e:
-        raise ArtifactError(f"{path} is corrupt ({e}): {_rerun_hint(path)}") from None
+        raise ArtifactError(f"{path} is corrupt ({e}): {rerun_hint(path)}") from None

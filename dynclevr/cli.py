@@ -104,6 +104,10 @@ def main() -> None:
     except DynclevrError as e:
         typer.secho(f"error: {e}", err=True, fg="red")
         sys.exit(2)
+    except OSError as e:   # the file system, not the pipeline: a full disk, a file without read permission
+        what = f"{e.strerror}: {e.filename}" if e.strerror and e.filename else str(e)
+        typer.secho(f"error: {what} (check the path, its permissions and free space)", err=True, fg="red")
+        sys.exit(2)
 
 
 if __name__ == "__main__":

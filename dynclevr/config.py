@@ -26,14 +26,19 @@ def _load_toml(path: Path) -> dict:
             return tomllib.load(f)
     except FileNotFoundError:
         raise ConfigError(f"config file {path} not found: pass an existing TOML file to --config") from None
-    except tomllib.TOMLDecodeError as e:
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
         raise ConfigError(f"config file {path} is not valid TOML ({e}): fix the syntax") from None
+    except OSError as e:   # a directory, no permission
+        raise ConfigError(f"config file {path} cannot be read ({e.strerror}): pass a readable TOML file to --config") \
+            from None
 
 
 def _same_kind(default, value) -> bool:
     if isinstance(default, bool) or isinstance(value, bool):
         return isinstance(default, bool) and isinstance(value, bool)
-    if isinstance(default, (int, float)):
+    if isinstance(default, int):   # counts of frames, pixels, objects, steps: 2.5 of them means nothing
+        return isinstance(value, int)
+    if isinstance(default, float):
         return isinstance(value, (int, float))
     if isinstance(default, list):
         return isinstance(value, list) and len(value) == len(default) and all(

@@ -11,13 +11,19 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from mcap.exceptions import McapError
+from zstandard import ZstdError
 from mcap.reader import make_reader
 from mcap.writer import CompressionType, Writer
 from mcap_protobuf.decoder import DecoderFactory
 from mcap_protobuf.schema import build_file_descriptor_set
 
 from dynclevr import SCHEMA_DIR
-from dynclevr.artifacts import ArtifactError, _rerun_hint, atomic_path
+from dynclevr.artifacts import ArtifactError, atomic_path, rerun_hint
+
+
+# What a damaged file raises inside the mcap reader: its own errors, bad lengths, failed CRCs (ValueError),
+# undecodable JSON or protobuf, a zstd chunk that does not decompress.
+CORRUPT = (McapError, ValueError, EOFError, OSError, KeyError, ZstdError)
 
 
 def frame_time_ns(frame: int, fps: int) -> int:
@@ -86,38 +92,39 @@ class McapIn:
     def __init__(self, path: Path, artifact_schema: str, version: int):
         self.path = Path(path)
         if not self.path.exists():
-            raise ArtifactError(f"{self.path} is missing: {_rerun_hint(self.path)}")
+            raise ArtifactError(f"{self.path} is missing: {rerun_hint(self.path)}")
         try:
             with open(self.path, "rb") as f:
                 meta = {m.name: m.metadata for m in make_reader(f).iter_metadata()}
-        except (McapError, ValueError, EOFError, OSError, KeyError) as e:
+        except CORRUPT as e:
             raise ArtifactError(f"{self.path} is not a readable MCAP file ({type(e).__name__}: {e}): "
-                                f"{_rerun_hint(self.path)}") from None
+                                f"{rerun_hint(self.path)}") from None
         m = meta.get("dynclevr", {})
         found = (m.get("schema", "?"), m.get("version", "?"))
         if found != (artifact_schema, str(version)):
             raise ArtifactError(f"{self.path} has schema {found[0]} v{found[1]}, expected {artifact_schema} "
-                                f"v{version}: {_rerun_hint(self.path)}")
+                                f"v{version}: {rerun_hint(self.path)}")
         self.meta = m
 
     def messages(self, *topics: str) -> Iterator[tuple[str, int, Any]]:
         """Yield (topic, log_time_ns, decoded message): JSON as Python objects, protobuf as messages."""
         try:
             with open(self.path, "rb") as f:
-                reader = make_reader(f, decoder_factories=[DecoderFactory()])
+                # Chunk CRCs: a damaged byte inside a frame's JPEG would otherwise decode into a plausible image.
+                reader = make_reader(f, validate_crcs=True, decoder_factories=[DecoderFactory()])
                 for schema, channel, message in reader.iter_messages(topics=list(topics) or None):
                     if channel.message_encoding == "json":
                         yield channel.topic, message.log_time, json.loads(message.data)
                     else:
                         yield channel.topic, message.log_time, _decode_proto(reader, schema, channel, message)
-        except (McapError, ValueError, EOFError, OSError, KeyError) as e:
+        except CORRUPT as e:
             raise ArtifactError(f"{self.path} is corrupt ({type(e).__name__}: {e}): "
-                                f"{_rerun_hint(self.path)}") from None
+                                f"{rerun_hint(self.path)}") from None
 
     def first(self, topic: str) -> Any:
         for _, _, msg in self.messages(topic):
             return msg
-        raise ArtifactError(f"{self.path} has no '{topic}' channel: {_rerun_hint(self.path)}")
+        raise ArtifactError(f"{self.path} has no '{topic}' channel: {rerun_hint(self.path)}")
 
 
 _decoders: dict = {}

@@ -11,7 +11,7 @@ from __future__ import annotations
 import importlib
 import os
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from multiprocessing import get_context
 from pathlib import Path
@@ -84,7 +84,10 @@ def parse_scenes(spec: str | None, split: Split) -> list[int]:
     try:
         for part in spec.split(","):
             lo, _, hi = part.partition("-")
-            out.extend(range(int(lo), int(hi or lo) + 1))
+            lo, hi = int(lo), int(hi or lo)
+            if hi < lo:
+                raise ValueError
+            out.extend(range(lo, hi + 1))
     except ValueError:
         raise DynclevrError(f"--scenes '{spec}' is not a list of indices or ranges such as 3-5 or 0,2,7-9") from None
     bad = [i for i in out if not 0 <= i < split.scenes]
@@ -106,8 +109,9 @@ class Runner:
         for up in stage.inputs:
             d = manifests[up].digest(scene)
             if d is None:
-                raise DynclevrError(f"{STAGE_DIRS[up]}/{scene} is missing for {stage.name}: run `dynclevr {up} "
-                                    f"--split {self.split.name}` first")
+                what = (f"{manifests[up].path} is corrupt" if manifests[up].corrupt
+                        else f"{STAGE_DIRS[up]}/{scene} is missing")
+                raise DynclevrError(f"{what} for {stage.name}: run `dynclevr {up} --split {self.split.name}` first")
             digests[up] = d
         return digests
 
@@ -140,10 +144,11 @@ class Runner:
             todo.append((job, key))
         self.echo(f"{stage.name}: {len(todo)} to run, {cached} cached (unchanged inputs, params and version)")
         for job, key in self._map(stage, todo):
-            manifest.record(job.scene, key, job.outputs, stage_version=stage.version, params=stage.params(self.cfg))
+            manifest.record(job.scene, key, job.outputs, stage_version=stage.version, params=stage.params(self.cfg),
+                            inputs={**self._input_digests(stage, job.scene, manifests), **extra})
             manifest.save()
         if stage.finalize:
-            self._finalize(stage, manifest, force)
+            self._finalize(stage, manifest, manifests, extra, force)
         seconds = time.perf_counter() - start
         if todo:
             self.echo(f"{stage.name}: {len(todo)} done in {seconds:.1f} s")
@@ -166,27 +171,45 @@ class Runner:
                 return
             with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
                                      initializer=_worker_init) as pool:
-                futures = [(pool.submit(_run_in_worker, stage.name, job), job, key) for job, key in todo]
-                for fut, job, key in futures:
-                    fut.result()
-                    bar.advance(task)
-                    yield job, key
+                futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in todo}
+                try:
+                    # In completion order, so every scene done is recorded even when a later one fails.
+                    for fut in as_completed(futures):
+                        fut.result()
+                        bar.advance(task)
+                        yield futures[fut]
+                except BaseException:
+                    # Leaving the pool waits for its queue: without this a failure would surface only after
+                    # every other scene of the split had run.
+                    pool.shutdown(cancel_futures=True)
+                    raise
 
-    def _finalize(self, stage: Stage, manifest: Manifest, force: bool) -> None:
+    def _current(self, stage: Stage, scene: str, index: int, manifest: Manifest, manifests, extra: dict) -> bool:
+        """The scene's recorded output was made with today's params, inputs and version."""
+        entry = manifest.entries.get(scene)
+        try:
+            return entry is not None and entry["key"] == self.scene_key(stage, scene, index, manifests, extra)
+        except DynclevrError:   # its inputs are gone
+            return False
+
+    def _finalize(self, stage: Stage, manifest: Manifest, manifests, extra: dict, force: bool) -> None:
         scenes = self.split.scene_names()
-        missing = [s for s in scenes if manifest.digest(s) is None]
-        if missing:
-            self.echo(f"{stage.name}: split-level outputs wait for {len(missing)} scenes not yet run")
+        # A scene run with other params (a --scenes subset after a change) would mix into the split's table.
+        waiting = [s for i, s in enumerate(scenes) if not self._current(stage, s, i, manifest, manifests, extra)]
+        if waiting:
+            self.echo(f"{stage.name}: split-level outputs wait for {len(waiting)} scenes not yet run or stale")
             return
         key = stable_digest({"version": stage.version, "params": stage.params(self.cfg),
-                             "scenes": [manifest.digest(s) for s in scenes],
-                             "extra": stage.extra_inputs(self.store, self.cfg)})
-        prev = manifest.entries.get(SPLIT_ENTRY)
-        if not force and prev and prev["key"] == key and all(Path(p).exists() for p in prev["paths"]):
+                             "scenes": [manifest.digest(s) for s in scenes], "extra": extra})
+        paths = manifest.entries.get(SPLIT_ENTRY, {}).get("paths")
+        if not force and isinstance(paths, list) and manifest.fresh(SPLIT_ENTRY, key,
+                                                                    [self.store.root / p for p in paths]):
             return
         paths = stage.finalize(self.store, self.cfg, scenes)
-        manifest.record(SPLIT_ENTRY, key, paths, paths=[str(p) for p in paths])
+        # Relative to the split's folder: a data directory that is moved or copied checks its own files.
+        manifest.record(SPLIT_ENTRY, key, paths, paths=[str(p.relative_to(self.store.root)) for p in paths])
         manifest.save()
+        self.echo(f"{stage.name}: wrote {', '.join(p.name for p in paths)}")
 
     # ---- status --------------------------------------------------------------------------------------------------
 

@@ -64,7 +64,7 @@ def build(store: Store, cfg: Config) -> tuple[dict[str, tuple], dict]:
         if answers is None:
             continue
         rows[name] = tuple(table1(answers)[c][0] for c in COLUMNS)
-        extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / len(answers)
+        extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / max(len(answers), 1)
         extra[f"{name}: unparsed"] = sum(a["status"] == "unparsed" for a in answers)
         extra[f"{name}: failed programs"] = sum(a["status"] == "failed" for a in answers)
     rows["oracle (truth scene, gold programs)"] = tuple(

@@ -30,7 +30,7 @@ from foxglove_schemas_protobuf.CompressedImage_pb2 import CompressedImage
 from foxglove_schemas_protobuf.FrameTransforms_pb2 import FrameTransforms
 from google.protobuf.timestamp_pb2 import Timestamp
 
-from dynclevr.artifacts import ArtifactError
+from dynclevr.artifacts import ArtifactError, rerun_hint
 from dynclevr.camera import Camera
 from dynclevr.mcapio import McapIn, McapOut, frame_time_ns
 
@@ -70,13 +70,6 @@ def encode_instances(mask: np.ndarray) -> bytes:
 def encode_depth(depth: np.ndarray) -> bytes:
     mm = np.where(np.isfinite(depth), np.clip(np.round(depth * 1000), 1, DEPTH_MAX_MM), 0)
     return _png(mm.astype(np.uint16))
-
-
-def _decode(data: bytes, flags: int) -> np.ndarray:
-    img = cv2.imdecode(np.frombuffer(data, np.uint8), flags)
-    if img is None:
-        raise ArtifactError("a video frame does not decode: rerun `dynclevr render --force`")
-    return img
 
 
 def calibration(camera: Camera, t_ns: int) -> CameraCalibration:
@@ -161,9 +154,13 @@ class Video:
         out = []
         for i, (_, _, msg) in enumerate(src.messages(topic)):
             if wanted is None or i in wanted:
-                out.append(_decode(msg.data, flags))
+                img = cv2.imdecode(np.frombuffer(msg.data, np.uint8), flags)
+                if img is None:
+                    raise ArtifactError(f"{self.path}: frame {i} of '{topic}' does not decode: "
+                                        f"{rerun_hint(self.path)}")
+                out.append(img)
         if not out and self.num_frames:
-            raise ArtifactError(f"{self.path} has no '{topic}' frames: rerun `dynclevr render --force`")
+            raise ArtifactError(f"{self.path} has no '{topic}' frames: {rerun_hint(self.path)}")
         return out
 
     def frames(self, frames: slice | None = None) -> np.ndarray:

@@ -9,6 +9,7 @@ import cv2
 import numpy as np
 import trimesh
 
+from dynclevr.artifacts import atomic_path
 from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES, get_asset
 
 # BGR; the body is a neutral grey so the parts read clearly
@@ -148,7 +149,7 @@ def draw_sheet(path: Path, size_px: int = 256) -> None:
                 cv2.putText(sheet, text, (x0 + 6, y0 + (k + 1) * line), cv2.FONT_HERSHEY_SIMPLEX, scale,
                             (0, 0, 0), thick, cv2.LINE_AA)
             cv2.rectangle(sheet, (x0, y0), (x0 + size_px - 1, y0 + cell_h - 1), (205, 205, 205), 1)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    if not cv2.imwrite(str(path), sheet):
-        raise OSError(f"could not write {path}")
+    ok, buf = cv2.imencode(".png", sheet)
+    assert ok
+    with atomic_path(Path(path)) as tmp:
+        tmp.write_bytes(buf.tobytes())

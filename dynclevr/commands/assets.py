@@ -14,8 +14,11 @@ def register(app: typer.Typer) -> None:
     def assets(sheet: Optional[Path] = typer.Option(None, "--sheet", help="write a PNG contact sheet of every sub-type"),
                cell: int = typer.Option(256, "--cell", min=96, help="sheet cell width in pixels")):
         """Sub-type, category, size, faces, volume and mass of every vehicle in the catalogue."""
+        from dynclevr import DynclevrError
         from dynclevr.assets.catalogue import DENSITY, SUBTYPES, get_asset
 
+        if sheet is not None and sheet.suffix.lower() != ".png":
+            raise DynclevrError(f"--sheet {sheet}: the contact sheet is a PNG, name it *.png")
         typer.echo(f"{'sub-type':16s} {'category':10s} {'size (m)':16s} {'faces':>6s} {'volume m3':>10s} "
                    f"{'mass':>7s}")
         for name in SUBTYPES:

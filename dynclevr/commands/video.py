@@ -102,8 +102,11 @@ def register(app: typer.Typer) -> None:
 
         if overlay not in OVERLAYS:
             raise DynclevrError(f"--overlay {overlay}: use one of {', '.join(OVERLAYS)}")
-        store = Store(data_dir, Config.load(config).split(split).name)
+        chosen = Config.load(config).split(split)
+        store = Store(data_dir, chosen.name)
         name = scene.zfill(6) if scene.isdigit() else scene
+        if name not in chosen.scene_names():
+            raise DynclevrError(f"--scene {scene}: split '{chosen.name}' has scenes 0-{chosen.scenes - 1}")
         video = Video.read(store.path("render", name, ".mcap"))
         frames = video.frames()
         if overlay != "none":

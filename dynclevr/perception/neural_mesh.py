@@ -55,6 +55,11 @@ class NeuralMeshes:
         return torch.tensor([SUBTYPES[s][1][2] / 2 for s in self.subtypes], dtype=torch.float32)
 
     @property
+    def flying(self) -> torch.Tensor:
+        """[M] bool: aeroplanes, the only sub-types whose centre may be anywhere above the floor."""
+        return torch.tensor([SUBTYPES[s][0] == "aeroplane" for s in self.subtypes])
+
+    @property
     def vertices(self) -> int:
         return self.points.shape[1]
 

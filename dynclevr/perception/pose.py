@@ -28,6 +28,7 @@ from dynclevr.perception.render import GridCamera, bilinear, cell_area, transfor
 
 MAX_TILT = 0.6   # radians: pitch and roll stay small for vehicles (collisions tip them, nothing flips them)
 FLOOR_SLACK = 0.05     # metres a centre may sit below its resting height (a tilted body rests lower)
+GROUND_HOP = 0.3       # metres above its resting height that a ground vehicle's centre may reach (tilted in a crash)
 GRADIENT_SCALE = 0.2  # Adam's epsilon (mean log-likelihood ratio per cell per metre or radian); see fit()
 VISIBILITY_EVERY = 4   # optimisation steps between z-buffer passes (steps move a pose by centimetres)
 
@@ -97,7 +98,9 @@ def fit(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: Neura
     m, v = torch.zeros_like(p), torch.zeros_like(p)
     b1, b2 = 0.9, 0.999
     norm = None
-    floor = meshes.half_heights[mesh_idx] - FLOOR_SLACK   # nothing sinks into the floor
+    # nothing sinks into the floor, and only aeroplanes leave it (a vehicle hit hard may hop a little)
+    floor = meshes.half_heights[mesh_idx] - FLOOR_SLACK
+    ceiling = torch.where(meshes.flying[mesh_idx], torch.tensor(float("inf")), floor + GROUND_HOP)
     for i in range(iterations):
         if i % VISIBILITY_EVERY == 0:
             w = weights(p, mesh_idx, ev, meshes, cam, joint)
@@ -116,7 +119,7 @@ def fit(poses: torch.Tensor, mesh_idx: torch.Tensor, ev: Evidence, meshes: Neura
             step = lr * (1.0 - i / iterations) / (1 - b1 ** (i + 1))
             p -= step * m / ((v / (1 - b2 ** (i + 1))).sqrt() + GRADIENT_SCALE)
             p[:, 4:].clamp_(-MAX_TILT, MAX_TILT)
-            p[:, 2] = torch.maximum(p[:, 2], floor)
+            p[:, 2] = torch.minimum(torch.maximum(p[:, 2], floor), ceiling)
             p[:, 3] = wrap(p[:, 3])
     with torch.no_grad():
         ll, area = score(p, mesh_idx, ev, meshes, cam, joint)

@@ -109,7 +109,7 @@ class TinyRenderer:
 
     def __init__(self, scene: Scene4D, camera: Camera, env: Environment, variants: list[int], supersample: int = 1,
                  shadows: bool = True):
-        import pybullet as p
+        from dynclevr.physics import p   # pybullet, imported with its banner silenced
 
         self.p, self.scene, self.camera, self.env, self.ss, self.shadows = p, scene, camera, env, supersample, shadows
         self.hi = camera.with_resolution(camera.width * supersample, camera.height * supersample)

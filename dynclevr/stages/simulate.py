@@ -56,6 +56,12 @@ def _check(cfg: Config) -> None:
             raise ConfigError(f"'scene.{key}' = {sc[key]!r} must lie in [0, 1]")
     if min(sc["position_beta"]) <= 0 or sc["arena_radius"] <= 0:
         raise ConfigError("'scene.position_beta' and 'scene.arena_radius' must be positive")
+    for key in ("focal_length_mm", "sensor_width_mm"):
+        if sc[key] <= 0:
+            raise ConfigError(f"'scene.{key}' = {sc[key]!r} must be positive")
+    for key in ("camera_jitter", "heading_noise_deg"):
+        if sc[key] < 0:
+            raise ConfigError(f"'scene.{key}' = {sc[key]!r} must not be negative")
 
 
 # ---- scene sampling -------------------------------------------------------------------------------------------

@@ -15,7 +15,7 @@ import numpy as np
 import pyarrow as pa
 
 from dynclevr.artifacts import read_parquet, write_parquet
-from dynclevr.physics import Body, PhysicsParams, World, counterfactual, simulate
+from dynclevr.physics import Body, PhysicsParams, World, catalogue_digest, counterfactual, simulate
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.scene import INTERVENTIONS, Collision, Scene4D
 
@@ -114,4 +114,6 @@ def _row_event(r: dict) -> Collision:
 
 
 STAGE = Stage("simulate-future", 1, inputs=("parse-scene",),
-              params=lambda cfg: cfg.digest("physics", "video", "labels"), outputs=(".parquet",), run_scene=run_scene)
+              params=lambda cfg: cfg.digest("physics", "video", "labels"), outputs=(".parquet",), run_scene=run_scene,
+              # The bodies are the catalogue's collision shapes: new meshes change the predictions.
+              extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})

@@ -1,0 +1,190 @@
+"""Bad input, end to end through the CLI: one line `error: ...` naming the problem and the fix, exit code 2, no
+traceback, and nothing already written lost or changed."""
+
+import hashlib
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from dynclevr import DynclevrError
+from dynclevr.artifacts import ArtifactError, Manifest, Store, read_parquet, write_parquet
+from dynclevr.config import Config, ConfigError
+from dynclevr.pipeline import Runner, SceneJob, parse_scenes
+from dynclevr.questions.tables import QUESTIONS_SCHEMA, QUESTIONS_VERSION
+from dynclevr.stages import answer, simulate
+from dynclevr.video import Video
+
+SPLIT = "x"
+
+
+def cli(data: Path, *args: str, config: Path | None = None):
+    config = config or data.parent / "x.toml"
+    return subprocess.run([sys.executable, "-m", "dynclevr.cli", *args, "--split", SPLIT, "--config", str(config),
+                           "--data-dir", str(data)], capture_output=True, text=True)
+
+
+def error_line(out) -> str:
+    """The one line a failed command prints."""
+    assert out.returncode == 2, (out.stdout, out.stderr)
+    lines = out.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), out.stderr
+    return lines[0]
+
+
+def checksums(data: Path) -> dict[str, str]:
+    return {str(p.relative_to(data)): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(data.rglob("*")) if p.is_file()}
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory) -> Path:
+    """Two simulated and annotated scenes, the first rendered: a pristine copy each test starts from."""
+    root = tmp_path_factory.mktemp("bad_input")
+    (root / "x.toml").write_text(f"[splits.{SPLIT}]\nseed = 3\nscenes = 2\n")
+    data = root / "data"
+    for args in (["simulate"], ["annotate"], ["render", "--scenes", "0"]):
+        out = cli(data, *args)
+        assert out.returncode == 0 and out.stderr == "", out.stderr   # nothing on stderr, not even pybullet's banner
+    return data
+
+
+@pytest.fixture
+def data(built, tmp_path) -> Path:
+    (tmp_path / "x.toml").write_text(f"[splits.{SPLIT}]\nseed = 3\nscenes = 2\n")
+    shutil.copytree(built, tmp_path / "data")
+    return tmp_path / "data"
+
+
+def test_deleted_input_names_the_stage_to_rerun_and_keeps_the_rest(data):
+    store = Store(data, SPLIT)
+    store.path("simulate", "000001", ".mcap").unlink()
+    before = checksums(data)
+    line = error_line(cli(data, "annotate", "--force"))
+    assert "sim/000001.mcap is missing" in line and "`dynclevr simulate --split x --force`" in line
+    assert checksums(data) == before
+    assert cli(data, "simulate").returncode == 0   # the same seed gives the same bytes: annotate stays cached
+    out = cli(data, "annotate")
+    assert out.returncode == 0 and "annotate: 0 to run, 2 cached" in out.stdout, out.stdout
+
+
+@pytest.mark.parametrize("damage", ["truncate", "zero bytes"])
+def test_damaged_video_is_one_clear_error(data, damage):
+    path = Store(data, SPLIT).path("render", "000000", ".mcap")
+    raw = bytearray(path.read_bytes())
+    if damage == "truncate":
+        raw = raw[:len(raw) // 2]
+    else:   # inside a JPEG frame: decodes to a plausible image unless the chunk's CRC is checked
+        raw[len(raw) // 2:len(raw) // 2 + 200] = bytes(200)
+    path.write_bytes(bytes(raw))
+    with pytest.raises(ArtifactError, match=r"000000.mcap is (not a readable MCAP file|corrupt).*"
+                                            r"rerun `dynclevr render --split x --force`") as e:
+        Video.read(path).frames()
+    assert "\n" not in str(e.value)
+    line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent / "x.mp4")))
+    assert "video/000000.mcap" in line and not (data.parent / "x.mp4").exists()
+
+
+def test_garbage_manifest_costs_a_rerun_not_the_data(data):
+    sim = Store(data, SPLIT).stage_dir("simulate")
+    (sim / "manifest.json").write_text("garbage{")
+    before = {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")}
+    line = error_line(cli(data, "annotate"))
+    assert "sim/manifest.json is corrupt for annotate: run `dynclevr simulate --split x` first" in line
+    assert cli(data, "simulate").returncode == 0
+    assert {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")} == before
+    out = cli(data, "annotate")
+    assert out.returncode == 0 and "annotate: 0 to run, 2 cached" in out.stdout, out.stdout
+
+
+@pytest.mark.parametrize("text", ['[1, 2]', '{"entries": {"000000": 5}}', '{"entries": {"000000": {"key": "k"}}}',
+                                  '{"entries": []}'])
+def test_malformed_manifest_reads_as_corrupt(tmp_path, text):
+    (tmp_path / "manifest.json").write_text(text)
+    m = Manifest(tmp_path / "manifest.json")
+    assert m.corrupt and m.entries == {} and m.digest("000000") is None
+
+
+def test_wrong_version_questions_table(data):
+    path = Store(data, SPLIT).split_file("questions.parquet")
+    good = path.read_bytes()
+    write_parquet(read_parquet(path, QUESTIONS_SCHEMA, QUESTIONS_VERSION), path, QUESTIONS_SCHEMA,
+                  QUESTIONS_VERSION + 1)
+    line = error_line(cli(data, "report"))
+    assert "has schema dynclevr.questions v2, expected dynclevr.questions v1" in line
+    assert "`dynclevr annotate --split x --force`" in line
+    # annotate sees the split-level table changed and writes it again, without --force
+    out = cli(data, "annotate")
+    assert out.returncode == 0 and "wrote questions.parquet" in out.stdout, out.stdout
+    assert path.read_bytes() == good
+
+
+def test_answer_before_its_inputs(data, tmp_path):
+    line = error_line(cli(data, "answer"))
+    assert "parsed/000000 is missing for answer: run `dynclevr parse-scene --split x` first" in line
+    # questions.parquet is read before anything else of the model's
+    job = SceneJob(SPLIT, "000000", 0, 0, Config.load().data, tmp_path / "empty", {}, [tmp_path / "a.parquet"])
+    with pytest.raises(ArtifactError, match=r"questions.parquet is missing: rerun `dynclevr annotate --split x"):
+        answer.run_scene(job)
+
+
+def test_scene_ranges_and_workers(data):
+    split = Config.load(data.parent / "x.toml").split(SPLIT)
+    for spec in ("9-12", "1-0", "abc", "-1", "0,,1"):
+        with pytest.raises(DynclevrError, match="--scenes"):
+            parse_scenes(spec, split)
+    assert "split 'x' has scenes 0-1 only" in error_line(cli(data, "render", "--scenes", "9-12"))
+    assert "split 'x' has scenes 0-1" in error_line(cli(data, "export-video", "--scene", "9", "--out", "y.mp4"))
+    out = cli(data, "render", "--workers", "0")
+    assert out.returncode == 2 and "--workers" in out.stderr and "Traceback" not in out.stderr
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[video]\nframes = 100.5\n", "'video.frames' = 100.5 has the wrong type"),
+    ("[render]\nwidth = 320.0\n", "'render.width' = 320.0 has the wrong type"),
+    ("[physics]\ngravity = 9\n", None),   # an integer where a float is expected is fine
+    ("\xff[video]\n", "is not valid TOML"),
+])
+def test_config_value_types(tmp_path, text, message):
+    path = tmp_path / "user.toml"
+    path.write_bytes(text.encode("latin-1"))
+    if message is None:
+        assert Config.load(path)["physics"]["gravity"] == 9.0
+    else:
+        with pytest.raises(ConfigError, match=message):
+            Config.load(path)
+
+
+def test_bad_scene_values_are_caught_before_any_scene_runs(tmp_path):
+    for text, message in [("camera_jitter = -1.0", "'scene.camera_jitter' = -1.0 must not be negative"),
+                          ("focal_length_mm = 0.0", "'scene.focal_length_mm' = 0.0 must be positive")]:
+        (tmp_path / "user.toml").write_text(f"[scene]\n{text}\n")
+        with pytest.raises(ConfigError, match=message):
+            simulate.params(Config.load(tmp_path / "user.toml"))
+
+
+def test_unusable_paths(data):
+    assert "not found: pass an existing TOML file" in error_line(cli(data, "status", config=data.parent / "no.toml"))
+    assert "cannot be read (Is a directory)" in error_line(cli(data, "status", config=data.parent))
+    blocker = data.parent / "a-file"
+    blocker.write_text("")
+    line = error_line(cli(blocker, "simulate"))
+    assert "cannot write" in line and "choose a writable folder" in line
+    line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent)))
+    assert "name a file, not a folder" in line
+
+
+def test_split_table_waits_for_stale_scenes(data, tmp_path):
+    """After a params change, running a subset of scenes must not mix old and new scenes into questions.parquet."""
+    path = Store(data, SPLIT).split_file("questions.parquet")
+    before = path.read_bytes()
+    (tmp_path / "user.toml").write_text(f"[splits.{SPLIT}]\nseed = 3\nscenes = 2\n[labels]\ncompare_margin = 2.0\n")
+    cfg = Config.load(tmp_path / "user.toml")
+    said = []
+    runner = Runner(cfg, cfg.split(SPLIT), data, echo=said.append)
+    runner.run("annotate", [0])
+    assert path.read_bytes() == before and any("wait for 1 scenes" in s for s in said), said
+    runner.run("annotate", [1])
+    assert "annotate: wrote questions.parquet" in said
