@@ -19,7 +19,7 @@ from typing import Callable
 
 from dynclevr import DynclevrError
 from dynclevr.artifacts import STAGE_DIRS, Manifest, Store
-from dynclevr.config import Config, Split, scene_seed, stable_digest
+from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
 SPLIT_ENTRY = "_split"
@@ -133,7 +133,7 @@ class Runner:
         extra = stage.extra_inputs(self.store, self.cfg)
         todo, cached = [], 0
         for i in indices:
-            scene = self.split.scene_names()[i]
+            scene = scene_name(i)
             key = self.scene_key(stage, scene, i, manifests, extra)
             if not force and manifest.fresh(scene, key, self._outputs(stage, scene)):
                 cached += 1

@@ -156,11 +156,11 @@ def test_candidates_are_deterministic(cfg):
 def test_stage_outputs_are_byte_identical_and_cached(simulated, cfg, tmp_path):
     shutil.copytree(simulated / "tiny" / "sim", tmp_path / "tiny" / "sim")
     r = Runner(cfg, cfg.split("tiny"), tmp_path, echo=lambda *a: None)
-    assert r.run("annotate", list(range(3))) == {"ran": 3, "cached": 0}
+    assert r.run("annotate", list(range(3))).items() >= {"ran": 3, "cached": 0}.items()
     for name in ["questions.parquet", "labels/000000.parquet", "labels/000001.events.parquet",
                  "labels/000002.questions.parquet"]:
         assert (tmp_path / "tiny" / name).read_bytes() == (simulated / "tiny" / name).read_bytes()
-    assert r.run("annotate", list(range(3))) == {"ran": 0, "cached": 3}
+    assert r.run("annotate", list(range(3))).items() >= {"ran": 0, "cached": 3}.items()
 
 
 def test_stats_tables(simulated, cfg):

@@ -155,11 +155,11 @@ def test_cache_skips_unchanged_and_resolution_change_reruns(spread_scene, tmp_pa
     manifest.record("000000", "hand-built", [sim])
     manifest.save()
     runner = Runner(cfg, cfg.split("one"), tmp_path, echo=lambda *a: None)
-    assert runner.run("render", [0]) == {"ran": 1, "cached": 0}
-    assert runner.run("render", [0]) == {"ran": 0, "cached": 1}
+    assert runner.run("render", [0]).items() >= {"ran": 1, "cached": 0}.items()
+    assert runner.run("render", [0]).items() >= {"ran": 0, "cached": 1}.items()
     data["render"]["width"], data["render"]["height"] = 160, 120
     runner = Runner(Config(data), cfg.split("one"), tmp_path, echo=lambda *a: None)
-    assert runner.run("render", [0]) == {"ran": 1, "cached": 0}
+    assert runner.run("render", [0]).items() >= {"ran": 1, "cached": 0}.items()
     video = Video.read(store.path("render", "000000", ".mcap"))
     assert video.frames(slice(0, 1)).shape == (1, 120, 160, 3)
     assert video.camera.K[0, 0] == pytest.approx(spread_scene.camera.fx / 2)
