@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import resource
 import time
+from queue import Empty
 from multiprocessing import get_context
 
 
@@ -24,6 +25,12 @@ def measure(target: str, *args) -> tuple[float, float, object]:
     queue = ctx.Queue()
     proc = ctx.Process(target=_child, args=(target, args, queue))
     proc.start()
-    out = queue.get()
+    while True:
+        try:
+            out = queue.get(timeout=1)
+            break
+        except Empty:
+            if not proc.is_alive() and queue.empty():
+                raise RuntimeError(f"benchmark {target} died (exit code {proc.exitcode})") from None
     proc.join()
     return out

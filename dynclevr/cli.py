@@ -75,9 +75,10 @@ def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, forc
 
 
 @app.command()
-def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt):
+def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt,
+           no_physics_prior: bool = NoPriorOpt):
     """Per stage: how many scenes are done (fresh), stale (inputs or params changed) or missing."""
-    r = runner(split, config, data_dir)
+    r = runner(split, config, data_dir, no_physics_prior=no_physics_prior)
     typer.echo(f"split {r.split.name}: {r.split.scenes} scenes under {r.store.root}")
     for name in ORDER:
         try:
