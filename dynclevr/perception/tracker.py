@@ -1,8 +1,9 @@
 """The causal filter: frame-by-frame render-and-compare with the physics prior (REFERENCE.md section 2.1-2.3).
 
 For each frame t (paper, appendix 3; a single-particle Bayes filter):
-1. predict: put the previous estimates (pose, smoothed velocity, inferred engine / floating) into the physics
-   engine and step one frame: mu_t = PE(S_{t-1}); the engine's contacts during that step are the collision events;
+1. predict: put the previous estimates (pose, fitted velocity, inferred engine / floating) into the physics
+   engine and step one frame: mu_t = PE(S_{t-1}); the engine's contacts during that step are the collision events
+   (in both variants: without the prior the engine still checks the estimates for contacts, its prediction unused);
 2. correct: maximise rendering likelihood x N(mu_t, sigma^2 I) over every tracked object's pose, starting at mu_t;
    without the prior (the paper's ablation) start at S_{t-1} and maximise the likelihood alone;
 3. every `detect_every` frames, propose objects the tracks do not explain (objects that come into view);
@@ -36,9 +37,10 @@ from dynclevr.scene import Collision, Scene4D, SceneObject
 def parser_params(cfg: Config) -> dict:
     """cfg["parser"], checked."""
     p = cfg["parser"]
-    for key in ("prior_sigma2", "kappa", "foreground_bias", "learning_rate", "iterations", "detect_iterations", "detect_every",
-                "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells", "merge_radius", "fit_window", "min_fit_frames",
-                "angular_window", "color_frames", "lost_frames", "min_area"):
+    for key in ("prior_sigma2", "kappa", "foreground_bias", "learning_rate", "iterations", "detect_iterations",
+                "detect_every", "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells",
+                "merge_radius", "fit_window", "min_fit_frames", "angular_window", "color_frames", "lost_frames",
+                "min_area"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
     if not 0 < p["heatmap_threshold"] < 1:
@@ -111,6 +113,8 @@ class SceneParser:
     def _track(self, t: int, active: list[Track], feats: torch.Tensor, contacts: list) -> None:
         prev = torch.tensor(np.array([k.pose[-1] for k in active]), dtype=torch.float32)
         predicted, touched = self._predict(active)
+        # contacts count between objects the image confirmed in the last frame (not between stale, lost tracks)
+        touched = {(a, b): v for (a, b), v in touched.items() if active[a].seen[-1] and active[b].seen[-1]}
         if touched:
             contacts.append((t, {(active[a].id, active[b].id): v for (a, b), v in touched.items()}))
             for (a, b), (_, impulse) in touched.items():
