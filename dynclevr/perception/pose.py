@@ -26,7 +26,8 @@ import torch
 from dynclevr.perception.neural_mesh import NeuralMeshes
 from dynclevr.perception.render import GridCamera, bilinear, cell_area, transform, visible
 
-MAX_TILT = 0.6   # radians: pitch and roll stay small for vehicles (collisions tip them, nothing flips them)
+MAX_TILT = 0.25  # radians: pitch and roll stay small (collisions tip vehicles a little; the pose noise of a
+                 # looser limit tilts hulls into the floor and the physics prior then ploughs them)
 FLOOR_SLACK = 0.05     # metres a centre may sit below its resting height (a tilted body rests lower)
 GROUND_HOP = 0.3       # metres above its resting height that a ground vehicle's centre may reach (tilted in a crash)
 GRADIENT_SCALE = 0.2  # Adam's epsilon (mean log-likelihood ratio per cell per metre or radian); see fit()

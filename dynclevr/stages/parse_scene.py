@@ -18,7 +18,7 @@ from dynclevr.perception.tracker import parse_video
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 1
+VERSION = 2
 
 
 @lru_cache(maxsize=1)
