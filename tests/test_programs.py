@@ -1,11 +1,13 @@
 """Every operation of the paper's program table on a hand-built scene with known answers, and the executor's errors."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
 from dynclevr.camera import Camera
 from dynclevr.config import Config
-from dynclevr.questions.programs import OPS, AmbiguousLabel, ProgramError, execute, parse
+from dynclevr.questions.programs import OPS, AmbiguousLabel, Executor, Object, ProgramError, execute, parse
 from dynclevr.scene import Collision, Scene4D, SceneObject
 
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
@@ -68,7 +70,8 @@ def scene():
 
 @pytest.fixture(scope="module")
 def lcfg():
-    return Config.load()["labels"]
+    # The hand-built scenes are read "at the start" = frame 0; test_start_is_the_configured_frame covers the default.
+    return {**Config.load()["labels"], "start_frame": 0}
 
 
 RED_SEDAN = "Objects filter_attributes[red] filter_attributes[sedan] unique"
@@ -151,15 +154,11 @@ def test_frames_of_events(scene, lcfg):
 
 
 @pytest.mark.parametrize("program,message", [
-    ("Objects filter_attributes[school_bus] unique query_attributes[color]", "unique: 2 objects"),
-    ("Objects filter_attributes[cyan] unique query_attributes[color]", "unique: 0 objects"),
-    (f"Events {RED_SEDAN} filter_collision {FIGHTER} filter_collision unique get_frame", "unique: 0 collisions"),
     (f"{RED_SEDAN} start", "leaves 2 values"),
     (f"Events {RED_SEDAN} filter_collision unique get_frame {BUS} query_attributes[color]", "leaves 2 values"),
     ("Objects", "ends in a ObjectSet"),
     (f"{RED_SEDAN} {BUS} filter_collision exist", "input 1 must be a CollisionEventSet"),
     (f"start {RED_SEDAN} is_static", "input 1 must be a Object"),
-    ("Objects unique start is_static", "unique: 6 objects"),
     ("start is_static", "needs 2 inputs"),
     ("Objects filter_attributes[banana]", "takes another argument"),
     ("Objects filter_attributes", "needs an argument"),
@@ -172,6 +171,59 @@ def test_frames_of_events(scene, lcfg):
 def test_unrunnable_programs_raise_program_error(scene, lcfg, program, message):
     with pytest.raises(ProgramError, match=message):
         execute(program, scene, lcfg)
+
+
+@pytest.mark.parametrize("program", [
+    "Objects filter_attributes[school_bus] unique query_attributes[color]",
+    "Objects filter_attributes[cyan] unique query_attributes[color]",
+    "Objects unique start is_static",
+])
+def test_strict_references_must_be_unique(scene, lcfg, program):
+    with pytest.raises(ProgramError, match="unique: [0-9] objects match"):
+        execute(program, scene, lcfg, strict=True)
+
+
+def test_strict_collision_moment_must_exist(scene, lcfg):
+    program = f"Events {RED_SEDAN} filter_collision {FIGHTER} filter_collision unique get_frame {FIGHTER} is_static"
+    with pytest.raises(ProgramError, match="unique: 0 collisions"):
+        execute(program, scene, lcfg, strict=True)
+
+
+@pytest.mark.parametrize("program,answer", [
+    ("Objects filter_attributes[school_bus] unique query_attributes[color]", "red"),  # two: the more confident
+    ("Objects filter_attributes[yellow] filter_attributes[regular_bus] unique query_attributes[shape]",
+     "school_bus"),   # right colour and category, wrong sub-type: half a miss beats every other object
+    ("Objects filter_attributes[purple] filter_attributes[sedan] unique query_attributes[shape]", "suv"),
+    ("Objects filter_attributes[blue] filter_attributes[fighter] unique query_attributes[color]", "blue"),
+])
+def test_estimates_resolve_a_reference_to_the_closest_description(scene, lcfg, program, answer):
+    """An estimated scene may match a description with no object or several; unique then takes the object with
+    the fewest failed filters (a sub-type of the right category fails by half), then the most confident."""
+    estimate = build_scene([replace(o, confidence=0.9 if o.id == 5 else 0.5) for o in scene.objects],
+                           scene.velocity, scene.position[0], scene.visible)
+    assert execute(program, estimate, lcfg) == answer
+
+
+def test_start_is_the_configured_frame(scene):
+    """'At the start' is labels.start_frame: the falling fighter, at rest in frame 0, is 1/6 s later 1.7 m/s fast."""
+    lcfg = Config.load()["labels"]
+    assert execute(f"{FIGHTER} start query_moving_velocity", scene, {**lcfg, "start_frame": 0}) == "static"
+    assert lcfg["start_frame"] == 10
+    assert execute(f"{FIGHTER} start query_moving_velocity", scene, lcfg) == "slow"
+
+
+def test_estimates_resolve_a_missed_collision_to_the_closest_approach(scene, lcfg):
+    """An estimate without the contact still answers "when X collides with Y" (the moment they come closest) and
+    "what does X collide with" (the object that comes closest)."""
+    estimate = build_scene(scene.objects, scene.velocity, scene.position[0], scene.visible)   # no collisions
+    w = Executor(estimate, lcfg).world
+    pair = OPS["filter_collision"].fn(w, OPS["filter_collision"].fn(w, w.events, Object(0)), Object(1))
+    assert OPS["unique"].fn(w, pair).frame == w.closest(0, 1)[0]
+    nearest = min((o for o in scene.objects if o.id != 0), key=lambda o: w.closest(0, o.id)[1])
+    program = f"Events {RED_SEDAN} get_all_col_partners unique query_attributes[shape]"
+    assert execute(program, estimate, lcfg) == nearest.shape
+    with pytest.raises(ProgramError):   # strict mode (question generation) never resolves
+        execute(program, estimate, lcfg, strict=True)
 
 
 def test_frame_outside_the_scene(scene, lcfg):

@@ -95,13 +95,13 @@ def _changes(obj: SceneObject, intervention: str) -> bool:
     return obj.category == "aeroplane" and not obj.floating
 
 
-def _conditions_hold(fam: dict, scene: Scene4D, objs: dict[str, SceneObject]) -> bool:
+def _conditions_hold(fam: dict, scene: Scene4D, objs: dict[str, SceneObject], start: int) -> bool:
     idx = {o.id: i for i, o in enumerate(scene.objects)}
     frames = scene.observed_frames if "observed" in fam["where"] else scene.num_frames
     for o in objs.values():
         if not scene.visible[:frames, idx[o.id]].any():
             return False
-        if "visible_start" in fam["where"] and not scene.visible[0, idx[o.id]]:
+        if "visible_start" in fam["where"] and not scene.visible[start, idx[o.id]]:
             return False
     x = objs.get("X")
     if "aeroplane_X" in fam["where"] and x.category != "aeroplane":
@@ -133,9 +133,10 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int) -> list[dict]:
     refs = {o.id: references(scene, o) for o in scene.objects}
     slots = templates()["slots"]
     out = []
+    start = labels_cfg["start_frame"]
     for fam in templates()["families"]:
         for objs, slot_keys in _bindings(fam, scene):
-            if any(not refs[o.id] for o in objs.values()) or not _conditions_hold(fam, scene, objs):
+            if any(not refs[o.id] for o in objs.values()) or not _conditions_hold(fam, scene, objs, start):
                 continue
             if fam.get("unordered") and rng.random() < 0.5:
                 objs = dict(zip(objs, reversed(list(objs.values()))))

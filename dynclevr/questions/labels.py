@@ -40,7 +40,7 @@ _ORDERED = [("static_below", "slow_above"), ("slow_above", "slow_below"), ("slow
             ("steady_below", "accelerating_above"), ("ground_height_below", "float_height_above"),
             ("float_az_below", "fall_az_above")]
 _POSITIVE = ("static_below", "direction_ratio", "compare_margin", "float_az_below")
-_INTS = ("stable_frames", "accel_window", "collision_guard_frames", "collision_merge_frames")
+_INTS = ("stable_frames", "accel_window", "collision_guard_frames", "collision_merge_frames", "start_frame")
 
 
 def check_labels_cfg(cfg: dict) -> dict:

@@ -10,7 +10,8 @@ velocity label or a direction word.
       -> how fast is the red sedan moving at the start?
 
 The operations keep the paper's names. Added (and only these):
-- `start`: None -> FrameID, the first frame ("at the start of the video").
+- `start`: None -> FrameID, "the start of the video": frame `labels.start_frame` (1/6 s in), because a velocity is
+  a change over frames: no one, model or person, reads a speed or direction from frame 0 alone.
 - `unique` and `exist` also take a CollisionEventSet (-> CollisionEvent / Bool), so that "when X collides with Y"
   is `... filter_collision unique get_frame`.
 - `filter_moving_velocity[slow|fast]` keeps objects of that velocity class; without an argument, every moving
@@ -27,6 +28,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from typing import Callable
+
+import numpy as np
 
 from dynclevr import DynclevrError
 from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
@@ -54,11 +57,32 @@ class FrameID(int):
 
 
 class ObjectSet(tuple):
-    """Object ids, ascending."""
+    """Object ids, ascending.
+
+    `misses` remembers, for every object the set was narrowed from, how far it is from the description so far (the
+    filters it failed; a sub-type of the right category fails by half). `unique` uses it to resolve a reference that
+    an estimated scene matches with no object or several: perception is uncertain, and the object closest to the
+    description is the most likely referent. On the truth, generated references match exactly one object, so the
+    resolution never acts there, and strict mode (question generation) keeps it off."""
+
+    misses: dict
+
+    def __new__(cls, ids=(), misses: dict | None = None):
+        s = super().__new__(cls, ids)
+        s.misses = {i: 0.0 for i in s} if misses is None else misses
+        return s
 
 
 class CollisionEventSet(tuple):
-    """Collisions, by frame."""
+    """Collisions, by frame. `about` names the objects it was filtered by, so that `unique` can resolve "the
+    moment X collides with Y" in an estimate that missed the contact: the moment they come closest."""
+
+    about: tuple
+
+    def __new__(cls, events=(), about: tuple = ()):
+        s = super().__new__(cls, events)
+        s.about = about
+        return s
 
 
 # A CollisionEvent is a scene.Collision, a Bool a bool, a Value (colour, sub-type, velocity label or direction) a str.
@@ -99,11 +123,23 @@ class World:
         self.scene, self.strict = scene, strict
         self.labels: Labels = compute_labels(scene, labels_cfg)
         self.margin = labels_cfg["compare_margin"]
+        self.start_frame = min(labels_cfg["start_frame"], scene.num_frames - 1)
         merge = labels_cfg["collision_merge_frames"]
         self.events = CollisionEventSet(merge_events(scene.collisions, merge))
         self.future_events = CollisionEventSet(future_events(scene, merge))
         self.counterfactuals = {k: CollisionEventSet(merge_events(v, merge)) for k, v in scene.counterfactuals.items()}
         self._index = {o.id: i for i, o in enumerate(scene.objects)}
+
+    def closest(self, a: int, b: int) -> tuple[int, float]:
+        """(frame, distance) of the closest approach of two objects' centres while both are in view."""
+        ia, ib = self._index[a], self._index[b]
+        both = self.scene.visible[:, ia] & self.scene.visible[:, ib]
+        if not both.any():
+            return 0, float("inf")
+        d = np.linalg.norm(self.scene.position[:, ia] - self.scene.position[:, ib], axis=1)
+        d[~both] = np.inf
+        t = int(np.argmin(d))
+        return t, float(d[t])
 
     def obj(self, oid: int):
         return self.scene.objects[self._index[oid]]
@@ -162,19 +198,24 @@ def futureEvents(w: World) -> CollisionEventSet:
 
 @op("start", returns=FrameID)
 def start(w: World) -> FrameID:
-    return FrameID(0)
+    return FrameID(w.start_frame)
 
 
 # ---- event operations -------------------------------------------------------------------------------------------
 
 @op("filter_collision", CollisionEventSet, Object, returns=CollisionEventSet)
 def filter_collision(w: World, events: CollisionEventSet, obj: Object) -> CollisionEventSet:
-    return CollisionEventSet(e for e in events if obj in (e.a, e.b))
+    return CollisionEventSet((e for e in events if obj in (e.a, e.b)), events.about + (int(obj),))
 
 
 @op("get_all_col_partners", CollisionEventSet, Object, returns=ObjectSet)
 def get_all_col_partners(w: World, events: CollisionEventSet, obj: Object) -> ObjectSet:
-    return ObjectSet(sorted({e.b if e.a == obj else e.a for e in events if obj in (e.a, e.b)}))
+    partners = sorted({e.b if e.a == obj else e.a for e in events if obj in (e.a, e.b)})
+    # Non-partners miss by more than any filter can, nearest first: an estimate that missed the contact still
+    # names the object that came closest.
+    misses = {o.id: 0.0 if o.id in partners else 2.0 + w.closest(int(obj), o.id)[1] / 100
+              for o in w.scene.objects if o.id != obj}
+    return ObjectSet(partners, misses)
 
 
 @op("get_frame", Collision, returns=FrameID)
@@ -192,30 +233,48 @@ def come_in_frame(w: World, obj: Object) -> FrameID:
 
 # ---- object filters ---------------------------------------------------------------------------------------------
 
+def _narrow(w: World, objs: ObjectSet, miss: Callable[[int], float]) -> ObjectSet:
+    """The members with miss 0, remembering every candidate's accumulated miss (see ObjectSet)."""
+    if w.strict:
+        return ObjectSet([i for i in objs if miss(i) == 0])
+    misses = {}
+    for i, m in objs.misses.items():
+        try:
+            misses[i] = m + miss(i)
+        except ProgramError:  # a candidate outside the set whose label cannot be read is simply far
+            misses[i] = m + 1.0
+    return ObjectSet([i for i in objs if misses[i] == objs.misses[i]], misses)
+
+
 @op("filter_attributes", ObjectSet, returns=ObjectSet, args=ATTRIBUTE_VALUES)
 def filter_attributes(w: World, objs: ObjectSet, value: str) -> ObjectSet:
-    return ObjectSet(i for i in objs if value in (w.obj(i).color, w.obj(i).shape, w.obj(i).category))
+    def miss(i: int) -> float:
+        o = w.obj(i)
+        if value in (o.color, o.shape, o.category):
+            return 0.0
+        return 0.5 if value in SUBTYPES and SUBTYPES[value][0] == o.category else 1.0
+    return _narrow(w, objs, miss)
 
 
 @op("filter_static", ObjectSet, FrameID, returns=ObjectSet)
 def filter_static(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
-    return ObjectSet([i for i in objs if w.velocity(i, t) == "static"])
+    return _narrow(w, objs, lambda i: float(w.velocity(i, t) != "static"))
 
 
 @op("filter_moving_velocity", ObjectSet, FrameID, returns=ObjectSet, args=MOVING, arg_required=False)
 def filter_moving_velocity(w: World, objs: ObjectSet, t: FrameID, velocity: str | None = None) -> ObjectSet:
     keep = {velocity} if velocity else MOVING
-    return ObjectSet([i for i in objs if w.velocity(i, t) in keep])
+    return _narrow(w, objs, lambda i: float(w.velocity(i, t) not in keep))
 
 
 @op("filter_accelerating", ObjectSet, FrameID, returns=ObjectSet)
 def filter_accelerating(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
-    return ObjectSet([i for i in objs if w.accelerating(i, t)])
+    return _narrow(w, objs, lambda i: float(not w.accelerating(i, t)))
 
 
 @op("filter_floating", ObjectSet, FrameID, returns=ObjectSet)
 def filter_floating(w: World, objs: ObjectSet, t: FrameID) -> ObjectSet:
-    return ObjectSet([i for i in objs if w.floating(i, t)])
+    return _narrow(w, objs, lambda i: float(not w.floating(i, t)))
 
 
 # ---- object queries ---------------------------------------------------------------------------------------------
@@ -287,6 +346,15 @@ COUNTERFACTUAL_OPS = {"static": "Counterfactual_static", "slow": "Counterfactual
 
 @op("unique", (ObjectSet, CollisionEventSet), returns=(Object, Collision))
 def unique(w: World, items: tuple):
+    if len(items) != 1 and not w.strict:
+        if isinstance(items, ObjectSet) and items.misses:
+            pool = items if items else items.misses
+            return Object(min(pool, key=lambda i: (items.misses[i], -w.obj(i).confidence, i)))
+        if isinstance(items, CollisionEventSet) and items:
+            return items[0]  # several contacts of the pair: the first is the moment they collide
+        if isinstance(items, CollisionEventSet) and len(items.about) == 2:
+            a, b = items.about
+            return Collision(w.closest(a, b)[0], min(a, b), max(a, b))
     if len(items) != 1:
         kind = "objects" if isinstance(items, ObjectSet) else "collisions"
         raise ProgramError(f"unique: {len(items)} {kind} match, expected exactly one")

@@ -115,5 +115,5 @@ def _extra(store, cfg) -> dict[str, str]:
             **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
 
-STAGE = Stage("answer", 1, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
+STAGE = Stage("answer", 3, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
               outputs=(".parquet",), run_scene=run_scene, finalize=finalize, extra_inputs=_extra)
