@@ -15,6 +15,7 @@ from functools import lru_cache
 
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel, manifest_digest
 from dynclevr.perception.tracker import parse_video
+from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
@@ -42,5 +43,6 @@ STAGE = Stage(
     params=lambda cfg: cfg.digest("parser", "physics", "video", "labels"),
     outputs=(".mcap",),
     run_scene=run_scene,
-    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR)},
+    # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.
+    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "assets": catalogue_digest(cfg)},
 )
