@@ -24,14 +24,18 @@ from scipy.spatial.transform import Rotation
 from dynclevr.physics import heading
 
 
-def motion(pos: np.ndarray, fps: int, min_frames: int) -> tuple[np.ndarray, np.ndarray]:
+def motion(pos: np.ndarray, fps: int, min_frames: int, short_frames: int | None = None
+           ) -> tuple[np.ndarray, np.ndarray]:
     """(velocity, acceleration) at the last of `pos` [n, 3] (the positions to fit, oldest first).
+
+    `short_frames` (<= min_frames): from that many positions a linear fit already gives a velocity (a young track:
+    without one the physics prior predicts it parked and pins it where it was found, and it reads as static).
 
     Fewer than `min_frames` positions give no velocity, fewer than twice that no acceleration: from two or three
     noisy poses a difference is mostly noise (5 cm of jitter between two frames reads as 3 m/s), and fed back into
     the physics prior as an engine or a speed it would push the estimate away from the object."""
     n = len(pos)
-    if n < max(min_frames, 2):
+    if n < max(min(short_frames or min_frames, min_frames), 2):
         return np.zeros(3), np.zeros(3)
     quadratic = n >= 2 * min_frames
     t = (np.arange(n) - (n - 1)) / fps

@@ -39,8 +39,8 @@ def parser_params(cfg: Config) -> dict:
     p = cfg["parser"]
     for key in ("prior_sigma2", "kappa", "foreground_bias", "learning_rate", "iterations", "detect_iterations",
                 "detect_every", "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells",
-                "merge_radius", "fit_window", "min_fit_frames", "angular_window", "color_frames", "lost_frames",
-                "min_area"):
+                "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames", "angular_window",
+                "confirm_frames", "color_frames", "lost_frames", "min_area"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
     if not 0 < p["heatmap_threshold"] < 1:
@@ -68,6 +68,7 @@ class Track:
     seen: list = field(default_factory=list)         # the likelihood found the object in this frame
     color_logp: np.ndarray = field(default_factory=lambda: np.zeros(len(COLOR_NAMES)))
     lost: int = 0
+    confirmed: int | None = None                     # frame from which it is reported (seen confirm_frames times)
     segment: int = 0                                 # the motion fit starts here (its last collision)
     end: int | None = None                           # first frame it is no longer tracked
 
@@ -114,7 +115,9 @@ class SceneParser:
         prev = torch.tensor(np.array([k.pose[-1] for k in active]), dtype=torch.float32)
         predicted, touched = self._predict(active)
         # contacts count between objects the image confirmed in the last frame (not between stale, lost tracks)
-        touched = {(a, b): v for (a, b), v in touched.items() if active[a].seen[-1] and active[b].seen[-1]}
+        # and only between confirmed tracks (a short-lived false track's contacts are as false as it is)
+        touched = {(a, b): v for (a, b), v in touched.items() if active[a].seen[-1] and active[b].seen[-1]
+                   and active[a].confirmed is not None and active[b].confirmed is not None}
         if touched:
             contacts.append((t, {(active[a].id, active[b].id): v for (a, b), v in touched.items()}))
             for (a, b), (_, impulse) in touched.items():
@@ -159,13 +162,21 @@ class SceneParser:
         k.pose.append(pose)
         k.quat.append(euler_to_quat(pose[3:]))
         k.seen.append(seen)
+        if k.confirmed is None and sum(k.seen) >= self.p["confirm_frames"]:
+            k.confirmed = k.start + len(k.seen) - 1
 
     def _update(self, k: Track, t: int, frame: np.ndarray) -> None:
         """The track's dynamics at frame t (from its poses up to t), and its colour evidence."""
         p = self.p
         pos, quats = np.array(k.pose)[:, :3], np.array(k.quat)
         category, size = SUBTYPES[self.subtypes[k.mesh]]
-        vel, acc = dynamics.motion(pos[max(k.segment, len(pos) - p["fit_window"]):], self.fps, p["min_fit_frames"])
+        first = max(k.segment, len(pos) - p["fit_window"])
+        if len(pos) - first < p["min_fit_frames"]:
+            # too few frames since the last impact for a fit of their own: bridge it with a linear fit over the last
+            # min_fit_frames (a velocity averaged across the impact beats none: zero reads as static, and the prior
+            # then holds the object where it was)
+            first = max(0, len(pos) - p["min_fit_frames"])
+        vel, acc = dynamics.motion(pos[first:], self.fps, p["min_fit_frames"], p["min_velocity_frames"])
         if np.linalg.norm(vel) < p["static_speed"]:
             vel = np.zeros(3)
         k.vel.append(vel)
@@ -186,6 +197,11 @@ class SceneParser:
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
     def _scene(self, name: str, tracks: list[Track], contacts: list, T: int) -> Scene4D:
+        # Only confirmed tracks are objects, reported from the frame they were confirmed on (causal: whether an
+        # object exists at frame t depends on frames <= t), in the order of confirmation (so the objects confirmed
+        # by frame t keep their places whatever follows). Duplicates and drifting tracks rarely last that long.
+        masses = [k.mass for k in tracks]                # by track id (the contacts' ids)
+        tracks = sorted((k for k in tracks if k.confirmed is not None), key=lambda k: (k.confirmed, k.id))
         N = len(tracks)
         pos, quat = np.zeros((T, N, 3)), np.tile([0.0, 0.0, 0.0, 1.0], (T, N, 1))
         vel, ang, acc = np.zeros((T, N, 3)), np.zeros((T, N, 3)), np.zeros((T, N, 3))
@@ -196,7 +212,8 @@ class SceneParser:
             sl = slice(k.start, k.start + n)
             pos[sl, i], quat[sl, i] = np.array(k.pose)[:, :3], np.array(k.quat)
             vel[sl, i], acc[sl, i], ang[sl, i] = np.array(k.vel), np.array(k.acc), np.array(k.ang)
-            eng[sl, i], flo[sl, i], vis[sl, i] = k.engine, k.floating, k.seen
+            eng[sl, i], flo[sl, i] = k.engine, k.floating
+            vis[sl, i] = np.array(k.seen) & (np.arange(k.start, k.start + n) >= k.confirmed)
             # before it is found and after it is lost, an object keeps its first / last estimate
             pos[:k.start, i], quat[:k.start, i] = pos[k.start, i], quat[k.start, i]
             pos[k.start + n:, i], quat[k.start + n:, i] = pos[k.start + n - 1, i], quat[k.start + n - 1, i]
@@ -215,7 +232,7 @@ class SceneParser:
                 speed_class=dynamics.speed_class(float(np.linalg.norm(k.vel[a][:2])), self.physics.slow_speed,
                                                  self.physics.fast_speed),
                 confidence=k.confidence))
-        events = _Events(self.physics.merge_frames, [o.mass for o in objects], self.physics.min_impact_speed)
+        events = _Events(self.physics.merge_frames, masses, self.physics.min_impact_speed)
         for t, touched in contacts:
             events.add(t, touched)
         collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()]
