@@ -351,7 +351,7 @@ class World:
                 else:
                     touched[key] = [tuple(map(float, pt[5])), pt[9] * dt]
             if engine and pp.engine_until_collision and touched:
-                # The engine stops at the body's first collision: an impact as _Events counts it, not a graze.
+                # The engine stops at the body's first collision: an impact as ContactEvents counts it, not a graze.
                 hit = {i for (a, b), (_, imp) in touched.items() if imp * (1 / self.masses[a] + 1 / self.masses[b])
                        >= pp.min_impact_speed for i in (a, b)}
                 if hit:
@@ -371,7 +371,7 @@ class World:
                      self.engine.copy(), self.floating.copy())
 
 
-class _Events:
+class ContactEvents:
     """Merges per-frame contacts into impacts: the same pair touching again within `merge` frames of its last
     contact is the same event (its impulse adds up); the event's frame and point are those of the first contact.
     An event whose impulse changes the pair's relative velocity by less than `min_speed` (impulse / reduced mass)
@@ -413,7 +413,7 @@ def simulate(bodies: Sequence[Body], params: PhysicsParams, frames: int, world: 
     try:
         if not own:
             world.set_bodies(bodies)
-        events = _Events(params.merge_frames, world.masses, params.min_impact_speed)
+        events = ContactEvents(params.merge_frames, world.masses, params.min_impact_speed)
         n = len(bodies)
         T = frames if record else 1
         pos, quat = np.zeros((T, n, 3)), np.zeros((T, n, 4))

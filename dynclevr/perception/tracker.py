@@ -30,7 +30,7 @@ from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.pose import Evidence, fit
 from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler, transform
-from dynclevr.physics import Body, PhysicsParams, World, _Events
+from dynclevr.physics import Body, ContactEvents, PhysicsParams, World
 from dynclevr.scene import Collision, Scene4D, SceneObject
 
 
@@ -232,7 +232,7 @@ class SceneParser:
                 speed_class=dynamics.speed_class(float(np.linalg.norm(k.vel[a][:2])), self.physics.slow_speed,
                                                  self.physics.fast_speed),
                 confidence=k.confidence))
-        events = _Events(self.physics.merge_frames, masses, self.physics.min_impact_speed)
+        events = ContactEvents(self.physics.merge_frames, masses, self.physics.min_impact_speed)
         for t, touched in contacts:
             events.add(t, touched)
         collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()]
