@@ -100,14 +100,14 @@ def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
                                                                      "paper: NS-4DPhysics w/o physics prior")]
     x = np.arange(len(COLUMNS))
     w = 0.8 / len(names)
-    fig, ax = plt.subplots(figsize=(11, 4.5))
+    fig, ax = plt.subplots(figsize=(11, 5.2))
     for k, n in enumerate(names):
         ax.bar(x + k * w - 0.4 + w / 2, [0 if math.isnan(v) else v for v in rows[n]], w, label=n)
     ax.set_xticks(x, COLUMNS)
     ax.set_ylabel("accuracy (%)")
     ax.set_ylim(0, 105)
     ax.set_title(f"DynSuperCLEVR question answering, split '{split}'")
-    ax.legend(fontsize=7, ncol=2, loc="lower right")
+    ax.legend(fontsize=8, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.08), frameon=False)
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
