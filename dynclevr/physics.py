@@ -359,6 +359,16 @@ class World:
                     engine = [(uid, f) for uid, f in engine if index[uid] not in hit]
         return {k: (v[0], float(v[1])) for k, v in touched.items()}
 
+    def gaps(self, within: float) -> dict[tuple[int, int], float]:
+        """Body pairs (i < j) whose hulls are closer than `within` metres now, with their signed distance."""
+        out: dict[tuple[int, int], float] = {}
+        for i in range(len(self.ids)):
+            for j in range(i + 1, len(self.ids)):
+                pts = self.client.getClosestPoints(self.ids[i], self.ids[j], within)
+                if pts:
+                    out[(i, j)] = float(min(pt[8] for pt in pts))
+        return out
+
     def states(self) -> State:
         c = self.client
         pose = [c.getBasePositionAndOrientation(u) for u in self.ids]

@@ -60,8 +60,11 @@ class Stage:
 
 
 def model_variant(cfg: Config) -> str:
-    """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior."""
-    return "" if cfg.data.get("parser", {}).get("physics_prior", True) else "noprior"
+    """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior, '...refine' with the
+    render-and-compare refinement where it is not the default."""
+    p = cfg.data.get("parser", {})
+    parts = ([] if p.get("physics_prior", True) else ["noprior"]) + (["refine"] if p.get("refine", False) else [])
+    return "-".join(parts)
 
 
 def get_stage(name: str) -> Stage:

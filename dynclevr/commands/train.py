@@ -27,6 +27,23 @@ def register(app: typer.Typer) -> None:
         cfg = Config.load(config)
         train_parser(cfg, data_dir, cfg.split(split), out, workers, echo=typer.echo)
 
+    @train.command("detector")
+    def detector(config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt,
+                 out: Path = typer.Option(WEIGHTS_DIR / "detector", "--out"),
+                 resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint in --out"),
+                 steps: Optional[int] = typer.Option(None, "--steps", help="total steps (default parser.detector_steps)"),
+                 minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long"),
+                 data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop")):
+        """Detection head: centre heatmap, sub-type, colour, yaw, distance and height per cell (resumable)."""
+        from dynclevr.config import Config
+        from dynclevr.perception.detector_train import generate, train_detector
+
+        cfg = Config.load(config)
+        if data_only:
+            generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
+            return
+        train_detector(cfg, data_dir, out, workers, resume, steps, minutes, echo=typer.echo)
+
     @train.command("qparser")
     def qparser(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
                 data_dir: Path = DataOpt, out: Path = typer.Option(WEIGHTS_DIR / "qparser", "--out")):

@@ -44,6 +44,12 @@ def motion(pos: np.ndarray, fps: int, min_frames: int, short_frames: int | None 
     return coef[1], (coef[2] if quadratic else np.zeros(3))
 
 
+def slope(values: np.ndarray, fps: int) -> np.ndarray:
+    """Least-squares slope per second of `values` [n, ...] sampled once a frame (n >= 2)."""
+    t = (np.arange(len(values)) - (len(values) - 1) / 2) / fps
+    return np.tensordot(t, values - values.mean(0), axes=1) / float(t @ t)
+
+
 def angular_velocity(quats: np.ndarray, fps: int, window: int) -> np.ndarray:
     """Causal angular velocity (world frame, rad/s) at the last frame of `quats` [n, 4]."""
     n = min(window, len(quats) - 1)

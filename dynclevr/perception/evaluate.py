@@ -12,10 +12,14 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
+from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
+from dynclevr.perception.detector_data import yaw_of
 from dynclevr.questions.labels import compute_labels, merge_events
 from dynclevr.scene import Scene4D
 
 MATCH_RADIUS = 1.5      # metres
+DUPLICATE_RADIUS = 1.5  # metres: an unmatched estimate this close to a matched true object is a duplicate of it
+FLIP = np.deg2rad(135)  # a heading further off than this is a front/back flip
 MIN_VISIBLE = 5         # frames a true object must be in view to count as one to detect
 EVENT_TOLERANCE = 6     # frames between an estimated and a true collision of the same pair
 
@@ -37,18 +41,40 @@ def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
 def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
     pairs = match(truth, est)
     lt, le = compute_labels(truth, labels_cfg), compute_labels(est, labels_cfg)
-    s = {"true_objects": int((truth.visible.sum(0) >= MIN_VISIBLE).sum()), "est_objects": len(est.objects),
+    counted = truth.visible.sum(0) >= MIN_VISIBLE
+    s = {"true_objects": int(counted.sum()), "est_objects": len(est.objects),
          "matched": len(pairs), "subtype": [], "color": [], "pos_err": [], "velocity": [], "accelerating": [],
-         "floating": []}
+         "floating": [], "depth_err": [], "yaw_err": [], "confusion": [],
+         "true_by_category": {c: 0 for c in CATEGORIES}, "found_by_category": {c: 0 for c in CATEGORIES}}
+    for i, o in enumerate(truth.objects):
+        if counted[i]:
+            s["true_by_category"][o.category] += 1
+    eye = np.asarray(truth.camera.position, float)
+    matched_est = {j for _, j in pairs}
     for i, j in pairs:
+        s["found_by_category"][truth.objects[i].category] += int(counted[i])
         s["subtype"].append(truth.objects[i].shape == est.objects[j].shape)
+        s["confusion"].append((truth.objects[i].shape, est.objects[j].shape))
         s["color"].append(truth.objects[i].color == est.objects[j].color)
         both = truth.visible[:, i] & est.visible[:, j]
         s["pos_err"] += np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).tolist()
+        ray = truth.position[both, i] - eye
+        ray /= np.linalg.norm(ray, axis=1, keepdims=True)
+        s["depth_err"] += ((est.position[both, j] - truth.position[both, i]) * ray).sum(1).tolist()
+        dyaw = yaw_of(est.orientation[both, j]) - yaw_of(truth.orientation[both, i])
+        s["yaw_err"] += np.abs(np.arctan2(np.sin(dyaw), np.cos(dyaw))).tolist()
         for key, amb in (("velocity", "velocity_ambiguous"), ("accelerating", "accelerating_ambiguous"),
                          ("floating", "floating_ambiguous")):
             ok = both & ~getattr(lt, amb)[:, i]
             s[key] += (getattr(lt, key)[ok, i] == getattr(le, key)[ok, j]).tolist()
+    s["duplicates"] = 0
+    for j in set(range(len(est.objects))) - matched_est:
+        for i, jj in pairs:
+            both = truth.visible[:, i] & est.visible[:, j]
+            if both.any() and np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).mean() \
+                    < DUPLICATE_RADIUS:
+                s["duplicates"] += 1
+                break
     # collision events: estimated pairs renamed to the true ids they matched
     to_truth = {est.objects[j].id: truth.objects[i].id for i, j in pairs}
     merge = labels_cfg["collision_merge_frames"]
@@ -75,16 +101,26 @@ def summarise(stats: list[dict]) -> dict:
         return float(np.mean(v)) if v else float("nan")
 
     err = np.array([x for s in stats for x in s["pos_err"]])
+    depth = np.array([x for s in stats for x in s["depth_err"]])
+    yaw = np.array([x for s in stats for x in s["yaw_err"]])
+    per_cat = {}
+    for c in CATEGORIES:
+        n = sum(s["true_by_category"][c] for s in stats)
+        per_cat[f"recall_{c}"] = sum(s["found_by_category"][c] for s in stats) / n if n else float("nan")
     p = total("matched") / max(total("est_objects"), 1)
     r = total("matched") / max(total("true_objects"), 1)
     ep = total("events_tp") / max(total("events_est"), 1)
     er = total("events_tp") / max(total("events_true"), 1)
     return {
         "scenes": len(stats),
-        "detection_precision": p, "detection_recall": r,
+        "detection_precision": p, "detection_recall": r, **per_cat,
+        "duplicate_rate": total("duplicates") / max(total("est_objects"), 1),
         "subtype_acc": mean("subtype"), "color_acc": mean("color"),
         "position_err_median_m": float(np.median(err)) if len(err) else float("nan"),
         "position_err_p90_m": float(np.percentile(err, 90)) if len(err) else float("nan"),
+        "depth_bias_m": float(depth.mean()) if len(depth) else float("nan"),
+        "yaw_err_median_deg": float(np.degrees(np.median(yaw))) if len(yaw) else float("nan"),
+        "yaw_flip_rate": float((yaw > FLIP).mean()) if len(yaw) else float("nan"),
         "velocity_class_acc": mean("velocity"), "accelerating_acc": mean("accelerating"),
         "floating_acc": mean("floating"),
         "collision_precision": ep, "collision_recall": er,
@@ -93,8 +129,11 @@ def summarise(stats: list[dict]) -> dict:
 
 
 ROWS = [("detection_precision", "detection precision"), ("detection_recall", "detection recall"),
+        *[(f"recall_{c}", f"recall, {c}") for c in CATEGORIES], ("duplicate_rate", "duplicates per estimate"),
         ("subtype_acc", "sub-type accuracy"), ("color_acc", "colour accuracy"),
         ("position_err_median_m", "position error, median (m)"), ("position_err_p90_m", "position error, 90th pct (m)"),
+        ("depth_bias_m", "depth bias along the ray (m)"), ("yaw_err_median_deg", "yaw error, median (deg)"),
+        ("yaw_flip_rate", "yaw flips (> 135 deg)"),
         ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
         ("floating_acc", "floating accuracy"), ("collision_precision", "collision-event precision"),
         ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1")]
@@ -107,3 +146,29 @@ def markdown(results: dict[str, dict]) -> str:
     for key, label in ROWS:
         lines.append(f"| {label} | " + " | ".join(f"{results[n][key]:.3f}" for n in names) + " |")
     return "\n".join(lines) + "\n"
+
+
+def confusion_png(stats: list[dict], path) -> None:
+    """Sub-type confusion of matched objects (rows: truth, columns: estimate), row-normalised."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from dynclevr.artifacts import atomic_path
+
+    names = list(SUBTYPES)
+    m = np.zeros((len(names), len(names)))
+    for s in stats:
+        for a, b in s["confusion"]:
+            m[names.index(a), names.index(b)] += 1
+    m = m / np.maximum(m.sum(1, keepdims=True), 1)
+    fig, ax = plt.subplots(figsize=(7, 6))
+    ax.imshow(m, cmap="Blues", vmin=0, vmax=1)
+    ax.set_xticks(range(len(names)), names, rotation=90, fontsize=7)
+    ax.set_yticks(range(len(names)), names, fontsize=7)
+    ax.set(xlabel="estimated sub-type", ylabel="true sub-type", title="sub-type confusion (matched objects)")
+    fig.tight_layout()
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, format="png", dpi=90)
+    plt.close(fig)

@@ -1,182 +1,346 @@
-"""The causal filter: frame-by-frame render-and-compare with the physics prior (REFERENCE.md section 2.1-2.3).
+"""The scene parser over time: detect, associate, place, filter with the physics prior, refine by render-and-compare,
+and read the dynamics (REFERENCE.md section 2.1-2.4; DESIGN.md "The scene parser").
 
-For each frame t (paper, appendix 3; a single-particle Bayes filter):
-1. predict: put the previous estimates (pose, fitted velocity, inferred engine / floating) into the physics
-   engine and step one frame: mu_t = PE(S_{t-1}); the engine's contacts during that step are the collision events
-   (in both variants: without the prior the engine still checks the estimates for contacts, its prediction unused);
-2. correct: maximise rendering likelihood x N(mu_t, sigma^2 I) over every tracked object's pose, starting at mu_t;
-   without the prior (the paper's ablation) start at S_{t-1} and maximise the likelihood alone;
-3. every `detect_every` frames, propose objects the tracks do not explain (objects that come into view);
-4. update each track's dynamics, and its colour during its first `color_frames` frames.
-Nothing at frame t reads a frame after t, so the state at frame 30 is the same whatever follows.
+For each frame t (a causal Bayes filter; nothing at frame t reads a later frame, so the state at frame 30 is the
+same whatever follows):
+1. detect: the detection head's peaks (detector.py);
+2. predict: the physics engine steps every track's last state one frame: mu_t = PE(S_{t-1}) (paper, eq. 4), the
+   mean of the prior; its covariance grows by the process noise (what the engine does not know: a collision it
+   missed, an engine it does not model). The engine's contacts during the step are the collision events (also in
+   the ablation, whose estimate does not use mu_t);
+3. associate: detections to tracks by Hungarian assignment on the image distance between a detection and the
+   track's predicted centre, plus appearance (sub-type and colour evidence); a missed track coasts on its
+   prediction and ends after `lost_frames` misses; a confident detection on no track's image starts one;
+4. correct: the detection, placed in 3D with the track's sub-type (place.py), is the measurement (tight across the
+   camera ray, loose along it); the Kalman update of position and velocity is the posterior (the Gaussian product
+   of prior and likelihood). A measurement far outside the prior (a collision the engine missed) widens the
+   velocity's uncertainty first, so the filter follows it. Without the prior (the paper's ablation) the estimate
+   is the measurement alone. With `parser.refine`, render-and-compare with the neural meshes then maximises the
+   rendering likelihood around that estimate (paper, section 2.1), and its likelihood is the frame's confidence;
+5. dynamics: velocity from the filter (without the prior: from a fit to the positions, dynamics.py), acceleration
+   as the slope of the velocity since the last impact, engine and floating from them; sub-type and colour from the
+   head's evidence summed over the track's frames (within the observed frames for an object seen in them, so the
+   predictive questions never depend on later frames).
+A track becomes an object once detected in `confirm_frames` frames, and is reported from that frame on.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
 import torch
-from torch.nn import functional as F
+from scipy.optimize import linear_sum_assignment
 
 from dynclevr.assets.catalogue import SUBTYPES, get_asset
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception import dynamics
-from dynclevr.perception.color import box, crop
-from dynclevr.perception.detect import propose
+from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
+from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place
 from dynclevr.perception.pose import Evidence, fit
-from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler, transform
+from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler
 from dynclevr.physics import Body, ContactEvents, PhysicsParams, World
 from dynclevr.scene import Collision, Scene4D, SceneObject
+
+POSITIVE = ("contact_distance", "impact_frames", "impact_speed_change", "max_velocity_change", "reacquire", "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_speed",
+            "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
+            "learning_rate", "iterations", "gate_pixels", "spawn_pixels", "lost_frames", "confirm_frames",
+            "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames", "angular_window")
 
 
 def parser_params(cfg: Config) -> dict:
     """cfg["parser"], checked."""
     p = cfg["parser"]
-    for key in ("prior_sigma2", "kappa", "foreground_bias", "learning_rate", "iterations", "detect_iterations",
-                "detect_every", "yaw_grid", "detect_subtypes", "max_proposals", "track_radius", "track_cells",
-                "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames", "angular_window",
-                "confirm_frames", "color_frames", "lost_frames", "min_area"):
+    for key in POSITIVE:
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
-    if not 0 < p["heatmap_threshold"] < 1:
-        raise ConfigError(f"'parser.heatmap_threshold' = {p['heatmap_threshold']!r} must lie in (0, 1)")
+    for key in ("detect_threshold", "new_track_score"):
+        if not 0 < p[key] < 1:
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
     return p
 
 
+def _wrap(a: float) -> float:
+    return math.atan2(math.sin(a), math.cos(a))
+
+
 @dataclass
 class Track:
     id: int
-    mesh: int
     start: int
-    confidence: float
-    mass: float
-    pose: list = field(default_factory=list)        # [6] per frame from start
+    subtype_logp: np.ndarray
+    color_logp: np.ndarray
+    pose: list = field(default_factory=list)        # [6] per frame from start: x, y, z, yaw, pitch, roll
     quat: list = field(default_factory=list)
     vel: list = field(default_factory=list)
     acc: list = field(default_factory=list)
     ang: list = field(default_factory=list)
     engine: list = field(default_factory=list)
     floating: list = field(default_factory=list)
-    seen: list = field(default_factory=list)         # the likelihood found the object in this frame
-    color_logp: np.ndarray = field(default_factory=lambda: np.zeros(len(COLOR_NAMES)))
+    seen: list = field(default_factory=list)         # a detection was assigned in this frame
+    fvel: np.ndarray = field(default_factory=lambda: np.zeros(3))   # the filter's velocity
+    fvels: list = field(default_factory=list)        # ... per frame
+    cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
+    scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
-    confirmed: int | None = None                     # frame from which it is reported (seen confirm_frames times)
-    segment: int = 0                                 # the motion fit starts here (its last collision)
-    end: int | None = None                           # first frame it is no longer tracked
+    confirmed: int | None = None
+    segment: int = 0                                 # the motion fit starts here (its last impact)
+    end: int | None = None
+
+    @property
+    def mesh(self) -> int:
+        return int(np.argmax(self.subtype_logp))
+
+    @property
+    def shape(self) -> str:
+        return SUBTYPE_NAMES[self.mesh]
+
+    def mass(self, density: float) -> float:
+        return get_asset(self.shape).mass(density)
 
 
 class SceneParser:
-    def __init__(self, model: ParserModel, camera: Camera, cfg: Config):
-        self.model, self.camera, self.cfg = model, camera, cfg
+    def __init__(self, model: ParserModel, detector, camera: Camera, cfg: Config):
+        self.model, self.detector, self.camera, self.cfg = model, detector, camera, cfg
         self.p = parser_params(cfg)
         self.physics = PhysicsParams.from_config(cfg)
         self.fps = int(cfg["video"]["fps"])
         self.observed = int(cfg["video"]["observed_frames"])
         self.gcam = GridCamera(camera)
-        self.subtypes = model.meshes.subtypes
         self.world: World | None = None
+        self.near: list[tuple[int, int, int]] = []    # (frame, track a, track b): hulls within contact_distance
+        self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
-    # ---- the filter ----------------------------------------------------------------------------------------------
+    def detect(self, frames: np.ndarray) -> list[list[Detection]]:
+        maps = run(self.detector, frames)
+        return [decode(m, self.p["detect_threshold"], self.p["max_detections"]) for m in maps]
 
-    def parse(self, frames: np.ndarray, name: str) -> Scene4D:
-        feats, heat, logdist = extract(self.model.net, frames)
+    def parse(self, frames: np.ndarray, name: str, detections: list[list[Detection]] | None = None) -> Scene4D:
+        """`detections`: per frame, in place of the head's (tests give synthetic ones)."""
+        p = self.p
+        detections = self.detect(frames) if detections is None else detections
+        feats = extract(self.model.net, frames)[0] if p["refine"] else None
         tracks: list[Track] = []
         contacts: list[tuple[int, dict]] = []
         try:
-            for t in range(len(frames)):
+            for t, dets in enumerate(detections):
                 active = [k for k in tracks if k.end is None]
+                pairs = {}
                 if active:
-                    self._track(t, active, feats[t], contacts)
-                if t % self.p["detect_every"] == 0:
-                    tracked = [(k.pose[-1], k.mesh) for k in tracks if k.end is None]
-                    for q in propose(feats[t], heat[t], logdist[t], self.model.meshes, self.gcam, self.p, tracked):
-                        mass = get_asset(self.subtypes[q.mesh]).mass(self.physics.density)
-                        k = Track(len(tracks), q.mesh, t, float(np.clip(q.quality, 0.0, 1.0)), mass)
-                        self._record(k, q.pose, True)
-                        tracks.append(k)
+                    mu, mu_vel = self._predict(t, active, contacts)
+                    pairs = self._associate(active, mu, dets)
+                    for i, k in enumerate(active):
+                        self._correct(k, mu[i], mu_vel[i], dets[pairs[i]] if i in pairs else None, t)
+                    if feats is not None:
+                        self._refine(active, pairs, feats[t])
+                    self._merge(active, t)
+                used = set(pairs.values())
+                seen_uv = [self._pixel(k.pose[-1][:3]) for k in tracks if k.end is None]
+                for j, d in enumerate(dets):
+                    if j in used or d.score < p["new_track_score"]:
+                        continue
+                    if any(math.hypot(d.u - u, d.v - v) < p["spawn_pixels"] for u, v in seen_uv):
+                        continue   # a second peak on a tracked object
+                    m = place(self.camera, d)
+                    k = Track(len(tracks), t, np.zeros(len(SUBTYPES)), np.zeros(len(COLOR_NAMES)))
+                    self._init_filter(k, m)
+                    self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), d, t)
+                    tracks.append(k)
+                    seen_uv.append((d.u, d.v))
                 for k in tracks:
                     if k.end is None or k.end == t + 1:
-                        self._update(k, t, frames[t])
+                        self._dynamics(k, t)
         finally:
             if self.world is not None:
                 self.world.close()
                 self.world = None
-        return self._scene(name, tracks, contacts, len(frames))
+        return self._scene(name, tracks, contacts, len(detections))
 
-    def _track(self, t: int, active: list[Track], feats: torch.Tensor, contacts: list) -> None:
-        prev = torch.tensor(np.array([k.pose[-1] for k in active]), dtype=torch.float32)
-        predicted, touched = self._predict(active)
-        # contacts count between objects the image confirmed in the last frame (not between stale, lost tracks)
-        # and only between confirmed tracks (a short-lived false track's contacts are as false as it is)
-        touched = {(a, b): v for (a, b), v in touched.items() if active[a].seen[-1] and active[b].seen[-1]
-                   and active[a].confirmed is not None and active[b].confirmed is not None}
+    # ---- the filter's steps ------------------------------------------------------------------------------------
+
+    def _pixel(self, point: np.ndarray) -> tuple[float, float]:
+        (u, v), _ = self.camera.project(np.asarray(point, float))
+        return float(u), float(v)
+
+    def _predict(self, t: int, active: list[Track], contacts: list) -> tuple[np.ndarray, np.ndarray]:
+        """mu_t = PE(S_{t-1}): poses [N, 6] and velocities [N, 3]; records the engine's contacts between confirmed
+        tracks (an impact also restarts the tracks' motion fits)."""
+        density = self.physics.density
+        bodies = [Body(k.shape, tuple(k.pose[-1][:3]), tuple(k.quat[-1]), tuple(k.fvel), tuple(k.ang[-1]),
+                       k.engine[-1], k.floating[-1]) for k in active]
+        if self.world is None:
+            self.world = World(bodies, self.physics)
+        else:
+            self.world.set_bodies(bodies)
+        confirmed = [k.confirmed is not None for k in active]
+        for (a, b), gap in self.world.gaps(self.p["contact_distance"]).items():
+            if confirmed[a] and confirmed[b]:
+                self.near.append((t, active[a].id, active[b].id))
+        touched = self.world.step_frame()
+        s = self.world.states()
+        touched = {(a, b): v for (a, b), v in touched.items()
+                   if active[a].confirmed is not None and active[b].confirmed is not None}
         if touched:
             contacts.append((t, {(active[a].id, active[b].id): v for (a, b), v in touched.items()}))
             for (a, b), (_, impulse) in touched.items():
-                # an impact (not a graze or resting contact) breaks the motion: the fits restart after it
-                if impulse * (1 / active[a].mass + 1 / active[b].mass) >= self.physics.min_impact_speed:
+                ma, mb = active[a].mass(density), active[b].mass(density)
+                if impulse * (1 / ma + 1 / mb) >= self.physics.min_impact_speed:
                     for k in (active[a], active[b]):
                         k.segment = t - k.start
-        prior = bool(self.p["physics_prior"])
-        mesh_idx = torch.tensor([k.mesh for k in active])
-        ev = Evidence.compute(feats, self.model.meshes, sorted(set(mesh_idx.tolist())), self.p["kappa"],
-                              self.p["foreground_bias"])
-        poses, ll, area = fit(predicted if prior else prev, mesh_idx, ev, self.model.meshes, self.gcam,
-                              self.p["iterations"], self.p["learning_rate"], joint=True,
-                              prior_mean=predicted if prior else None, sigma2=self.p["prior_sigma2"])
+        # Estimated hulls can overlap (a depth error), and the engine pushes overlapping bodies apart at any speed:
+        # a change of velocity above what an impact of these vehicles gives is such an artefact, not a prediction.
+        prev = np.array([k.fvel for k in active])
+        dv = s.velocity - prev
+        big = np.linalg.norm(dv, axis=1, keepdims=True) / self.p["max_velocity_change"]
+        return np.concatenate([s.position, quat_to_euler(s.orientation)], 1), prev + dv / np.maximum(big, 1.0)
+
+    def _associate(self, active: list[Track], mu: np.ndarray, dets: list[Detection]) -> dict[int, int]:
+        """Track index -> detection index: Hungarian on image distance / gate + appearance disagreement; then the
+        tracks left over (their prediction missed: a collision the engine did not see, a long occlusion) against
+        the detections left over, within `reacquire` gates where the appearance agrees."""
+        if not dets:
+            return {}
+        p = self.p
+        dist = np.zeros((len(active), len(dets)))
+        agree = np.zeros((len(active), len(dets)))
         for i, k in enumerate(active):
-            seen = float(area[i]) >= self.p["min_area"] and float(ll[i] / area[i]) >= self.p["min_quality"]
-            self._record(k, poses[i].numpy().astype(float), seen)
-            k.lost = 0 if seen else k.lost + 1
-            if k.lost >= self.p["lost_frames"]:
+            u, v = self._pixel(mu[i, :3])
+            ps = np.exp(k.subtype_logp - k.subtype_logp.max())
+            pc = np.exp(k.color_logp - k.color_logp.max())
+            ps, pc = ps / ps.sum(), pc / pc.sum()
+            for j, d in enumerate(dets):
+                dist[i, j] = math.hypot(d.u - u, d.v - v)
+                agree[i, j] = 0.5 * (np.sqrt(ps * np.exp(d.subtype_logp)).sum() + np.sqrt(pc * np.exp(d.color_logp)).sum())
+        pairs: dict[int, int] = {}
+        for gate, min_agree in ((p["gate_pixels"], 0.0), (p["gate_pixels"] * p["reacquire"], p["reacquire_agreement"])):
+            rows = [i for i in range(len(active)) if i not in pairs]
+            cols = [j for j in range(len(dets)) if j not in pairs.values()]
+            if not rows or not cols:
+                break
+            sub_d, sub_a = dist[np.ix_(rows, cols)], agree[np.ix_(rows, cols)]
+            cost = np.where((sub_d <= gate) & (sub_a >= min_agree),
+                            sub_d / gate + 2 * p["appearance_weight"] * (1 - sub_a), 1e6)
+            for r, c in zip(*linear_sum_assignment(cost)):
+                if cost[r, c] < 1e6:
+                    pairs[rows[r]] = cols[c]
+        return pairs
+
+    def _init_filter(self, k: Track, m: Measurement) -> None:
+        p = self.p
+        cov = np.zeros((6, 6))
+        cov[:3, :3] = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying else p["measure_along"])
+        cov[3:, 3:] = p["initial_speed"] ** 2 * np.eye(3)
+        k.cov = cov
+
+    def _correct(self, k: Track, mu: np.ndarray, mu_vel: np.ndarray, d: Detection | None, t: int) -> None:
+        p = self.p
+        prior = bool(p["physics_prior"])
+        dt = 1.0 / self.fps
+        F_ = np.eye(6)
+        F_[:3, 3:] = dt * np.eye(3)
+        Q = np.diag([p["process_position"] ** 2] * 3 + [p["process_velocity"] ** 2] * 3)
+        k.cov = F_ @ k.cov @ F_.T + Q
+        if d is None:
+            # missed: coast on the prediction (the engine's, or constant velocity without the prior)
+            if prior:
+                pose, k.fvel = mu.copy(), mu_vel.copy()
+            else:
+                pose = np.concatenate([k.pose[-1][:3] + k.vel[-1] / self.fps, k.pose[-1][3:]])
+            k.lost += 1
+            if k.lost >= p["lost_frames"]:
                 k.end = t + 1
-        # two tracks that converged on one object: the younger one ends
+            self._record(k, pose, None, t)
+            return
+        k.lost = 0
+        m = place(self.camera, d, k.shape)
+        z = m.position
+        if not prior:
+            self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), d, t)
+            return
+        R = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying else p["measure_along"])
+        x = np.concatenate([mu[:3], mu_vel])
+        innov = z - x[:3]
+        S = k.cov[:3, :3] + R
+        if innov @ np.linalg.solve(S, innov) > p["maneuver_chi2"]:
+            k.cov[3:, 3:] += p["maneuver_speed"] ** 2 * np.eye(3)    # the motion changed: follow the image
+            S = k.cov[:3, :3] + R
+        gain = k.cov[:, :3] @ np.linalg.inv(S)
+        x = x + gain @ innov
+        k.cov = (np.eye(6) - gain @ np.eye(3, 6)) @ k.cov
+        k.fvel = x[3:]
+        # heading: a moving vehicle that has not collided yet drives forwards, so a detection facing against its
+        # motion is a front/back flip of the head
+        yaw_m = m.yaw
+        speed = float(np.linalg.norm(x[3:5]))
+        if k.segment == 0 and speed > 1.0 and math.cos(yaw_m - math.atan2(x[4], x[3])) < 0:
+            yaw_m = _wrap(yaw_m + math.pi)
+        kyaw = p["yaw_sigma"] ** 2 / (p["yaw_sigma"] ** 2 + p["measure_yaw"] ** 2)
+        yaw = _wrap(mu[3] + kyaw * _wrap(yaw_m - mu[3]))
+        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), d, t)
+
+    def _refine(self, active: list[Track], pairs: dict[int, int], feats: torch.Tensor) -> None:
+        """Render-and-compare around the filtered poses of the tracks detected in this frame (joint, occlusion-aware);
+        the prior N(filtered pose, refine_sigma2) keeps it from sliding along the flat directions of the likelihood."""
+        idx = [i for i in pairs]
+        if not idx:
+            return
+        meshes = self.model.meshes
+        mesh_ids = torch.tensor([self.mesh_index[active[i].shape] for i in idx])
+        start = torch.tensor(np.array([active[i].pose[-1] for i in idx]), dtype=torch.float32)
+        ev = Evidence.compute(feats, meshes, sorted(set(mesh_ids.tolist())), self.p["kappa"],
+                              self.p["foreground_bias"])
+        poses, ll, area = fit(start, mesh_ids, ev, meshes, self.gcam, self.p["iterations"], self.p["learning_rate"],
+                              joint=True, prior_mean=start, sigma2=self.p["refine_sigma2"])
+        for n, i in enumerate(idx):
+            k = active[i]
+            k.pose[-1] = poses[n].numpy().astype(float)
+            k.quat[-1] = euler_to_quat(k.pose[-1][3:])
+            k.scores[-1] = float(np.clip(ll[n] / area[n].clamp(min=1.0), 0.0, 1.0))
+
+    def _merge(self, active: list[Track], t: int) -> None:
+        """Two tracks that converged on one object: the younger one ends."""
         for i, a in enumerate(active):
             for b in active[i + 1:]:
                 if a.end is None and b.end is None and \
                         np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
                     b.end = t + 1
 
-    def _predict(self, active: list[Track]) -> tuple[torch.Tensor, dict]:
-        """mu_t = PE(S_{t-1}): one physics-engine frame from the previous estimates; and the contacts of that step."""
-        bodies = [Body(self.subtypes[k.mesh], tuple(k.pose[-1][:3]), tuple(k.quat[-1]), tuple(k.vel[-1]),
-                       tuple(k.ang[-1]), k.engine[-1], k.floating[-1]) for k in active]
-        if self.world is None:
-            self.world = World(bodies, self.physics)
-        else:
-            self.world.set_bodies(bodies)
-        touched = self.world.step_frame()
-        s = self.world.states()
-        mu = np.concatenate([s.position, quat_to_euler(s.orientation)], 1)
-        return torch.tensor(mu, dtype=torch.float32), touched
-
-    def _record(self, k: Track, pose: np.ndarray, seen: bool) -> None:
+    def _record(self, k: Track, pose: np.ndarray, d: Detection | None, t: int) -> None:
         k.pose.append(pose)
         k.quat.append(euler_to_quat(pose[3:]))
-        k.seen.append(seen)
+        k.seen.append(d is not None)
+        k.scores.append(d.score if d is not None else 0.0)
+        # static attributes: the head's evidence, within the observed frames for an object seen in them
+        if d is not None and (t < self.observed or k.start >= self.observed):
+            k.subtype_logp += d.score * d.subtype_logp
+            k.color_logp += d.score * d.color_logp
         if k.confirmed is None and sum(k.seen) >= self.p["confirm_frames"]:
-            k.confirmed = k.start + len(k.seen) - 1
+            k.confirmed = t
 
-    def _update(self, k: Track, t: int, frame: np.ndarray) -> None:
-        """The track's dynamics at frame t (from its poses up to t), and its colour evidence."""
+    def _dynamics(self, k: Track, t: int) -> None:
+        """The track's dynamics at frame t, from its poses up to t."""
         p = self.p
         pos, quats = np.array(k.pose)[:, :3], np.array(k.quat)
-        category, size = SUBTYPES[self.subtypes[k.mesh]]
+        category, size = SUBTYPES[k.shape]
         first = max(k.segment, len(pos) - p["fit_window"])
         if len(pos) - first < p["min_fit_frames"]:
             # too few frames since the last impact for a fit of their own: bridge it with a linear fit over the last
-            # min_fit_frames (a velocity averaged across the impact beats none: zero reads as static, and the prior
-            # then holds the object where it was)
+            # min_fit_frames (a velocity averaged across the impact beats none, which would read as static)
             first = max(0, len(pos) - p["min_fit_frames"])
         vel, acc = dynamics.motion(pos[first:], self.fps, p["min_fit_frames"], p["min_velocity_frames"])
+        if p["physics_prior"]:
+            k.fvels.append(k.fvel.copy())
+            vel = k.fvel.copy()
+            hist = np.array(k.fvels[first:])      # since the last impact, at most fit_window frames
+            acc = dynamics.slope(hist, self.fps) if len(hist) >= 2 * p["min_fit_frames"] else np.zeros(3)
         if np.linalg.norm(vel) < p["static_speed"]:
             vel = np.zeros(3)
         k.vel.append(vel)
@@ -184,23 +348,12 @@ class SceneParser:
         k.ang.append(dynamics.angular_velocity(quats, self.fps, p["angular_window"]))
         k.engine.append(dynamics.engine_on(vel, acc, quats[-1], p))
         k.floating.append(dynamics.floating(category, pos[-1, 2], size[2] / 2, acc, self.physics.gravity))
-        early = t - k.start < p["color_frames"] and (t < self.observed or k.start >= self.observed)
-        if early and k.seen[-1]:
-            pose = torch.tensor(np.array(k.pose[-1:]), dtype=torch.float32)
-            world = transform(self.model.meshes.points[k.mesh], pose)
-            b = box(self.camera, world[0].numpy())
-            if b is not None:
-                with torch.no_grad():
-                    logits = self.model.color(torch.from_numpy(crop(frame, b))[None])
-                k.color_logp += F.log_softmax(logits, 1)[0].numpy()
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
     def _scene(self, name: str, tracks: list[Track], contacts: list, T: int) -> Scene4D:
-        # Only confirmed tracks are objects, reported from the frame they were confirmed on (causal: whether an
-        # object exists at frame t depends on frames <= t), in the order of confirmation (so the objects confirmed
-        # by frame t keep their places whatever follows). Duplicates and drifting tracks rarely last that long.
-        masses = [k.mass for k in tracks]                # by track id (the contacts' ids)
+        density = self.physics.density
+        masses = [k.mass(density) for k in tracks]        # by track id (the contacts' ids)
         tracks = sorted((k for k in tracks if k.confirmed is not None), key=lambda k: (k.confirmed, k.id))
         N = len(tracks)
         pos, quat = np.zeros((T, N, 3)), np.tile([0.0, 0.0, 0.0, 1.0], (T, N, 1))
@@ -214,31 +367,63 @@ class SceneParser:
             vel[sl, i], acc[sl, i], ang[sl, i] = np.array(k.vel), np.array(k.acc), np.array(k.ang)
             eng[sl, i], flo[sl, i] = k.engine, k.floating
             vis[sl, i] = np.array(k.seen) & (np.arange(k.start, k.start + n) >= k.confirmed)
-            # before it is found and after it is lost, an object keeps its first / last estimate
-            pos[:k.start, i], quat[:k.start, i] = pos[k.start, i], quat[k.start, i]
-            pos[k.start + n:, i], quat[k.start + n:, i] = pos[k.start + n - 1, i], quat[k.start + n - 1, i]
-            # object-level attributes are read once the first fit window is full, but within the observed frames
-            # for an object found in them: the predictive questions never depend on later frames
+            # object-level attributes once the first fit window is full, but within the observed frames for an
+            # object found in them: the predictive questions never depend on later frames
             a = k.start + self.p["fit_window"] - 1
             if k.start < self.observed:
                 a = min(a, self.observed - 1)
             a = min(a, k.start + n - 1) - k.start
-            shape = self.subtypes[k.mesh]
-            category, size = SUBTYPES[shape]
+            # before it is found, an object was on its way in at its first fitted velocity (not parked: "speed 0"
+            # would be a claim the video does not make); after it is lost it keeps its last estimate
+            back = (np.arange(k.start) - k.start)[:, None] / self.fps
+            v0 = np.array([*k.vel[a][:2], 0.0])
+            pos[:k.start, i], quat[:k.start, i] = pos[k.start, i] + back * v0, quat[k.start, i]
+            vel[:k.start, i] = v0
+            pos[k.start + n:, i], quat[k.start + n:, i] = pos[k.start + n - 1, i], quat[k.start + n - 1, i]
+            category, size = SUBTYPES[k.shape]
+            seen_scores = [s for s, v in zip(k.scores, k.seen) if v]
             objects.append(SceneObject(
-                id=k.id, shape=shape, category=category, color=COLOR_NAMES[int(k.color_logp.argmax())],
-                size=tuple(float(s) for s in size), mass=float(k.mass),
+                id=k.id, shape=k.shape, category=category, color=COLOR_NAMES[int(k.color_logp.argmax())],
+                size=tuple(float(s) for s in size), mass=float(masses[k.id]),
                 engine_on=bool(k.engine[a]), floating=bool(k.floating[a]),
                 speed_class=dynamics.speed_class(float(np.linalg.norm(k.vel[a][:2])), self.physics.slow_speed,
                                                  self.physics.fast_speed),
-                confidence=k.confidence))
+                confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
         events = ContactEvents(self.physics.merge_frames, masses, self.physics.min_impact_speed)
-        for t, touched in contacts:
+        for t, touched in sorted(contacts + self._trajectory_contacts(tracks, masses, T), key=lambda c: c[0]):
             events.add(t, touched)
         collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=collisions, observed_frames=self.observed)
 
 
-def parse_video(frames: np.ndarray, camera: Camera, model: ParserModel, cfg: Config, name: str) -> Scene4D:
-    return SceneParser(model, camera, cfg).parse(frames, name)
+    def _trajectory_contacts(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, dict]]:
+        """Collisions the engine's prediction did not produce, read from the estimated trajectories: the two hulls
+        came within contact_distance and the pair's relative velocity changed by an impact's worth within
+        impact_frames on either side. The frame is the first of the approach, so the event at frame t reads
+        frames up to t + impact_frames only."""
+        w = self.p["impact_frames"]
+        vel = {}
+        for k in tracks:
+            v = np.full((T, 3), np.nan)
+            v[k.start:k.start + len(k.vel)] = np.array(k.fvels if self.p["physics_prior"] else k.vel)
+            vel[k.id] = v
+        out, last = [], {}
+        for t, a, b in self.near:
+            run_start = last.get((a, b))
+            last[(a, b)] = t
+            if run_start is not None and t - run_start <= self.physics.merge_frames:
+                continue           # the same approach
+            if t - w < 0 or t + w >= T:
+                continue
+            before, after = vel[a][t - w] - vel[b][t - w], vel[a][t + w] - vel[b][t + w]
+            change = float(np.linalg.norm(after - before))
+            if np.isfinite(change) and change >= self.p["impact_speed_change"]:
+                reduced = masses[a] * masses[b] / (masses[a] + masses[b])
+                out.append((t, {(min(a, b), max(a, b)): ((0.0, 0.0, 0.0), change * reduced)}))
+        return out
+
+
+def parse_video(frames: np.ndarray, camera: Camera, model: ParserModel, detector, cfg: Config,
+                name: str) -> Scene4D:
+    return SceneParser(model, detector, camera, cfg).parse(frames, name)

@@ -1,8 +1,8 @@
 """Stage parse-scene: the NS-4DPhysics scene parser (REFERENCE.md section 2.1-2.4; dynclevr/perception/).
 
 Reads: `video/<scene>.mcap` through `Video.frames()` and `.camera` only (RGB frames and the calibration: never the
-masks or depth that the same file carries for training and tests), the scene-parser weights (weights/parser/) and
-the asset catalogue. Params: [parser], [physics] (the engine of the prior), [video], [labels].
+masks or depth that the same file carries for training and tests), the detection head (weights/detector/), the
+scene-parser weights (weights/parser/: feature CNN and neural meshes) and the asset catalogue. Params: [parser], [physics] (the engine of the prior), [video], [labels].
 Writes: `parsed/<scene>.mcap`, a Scene4D of kind "estimate" in the truth's schema (objects with confidence,
 per-frame 4D states, collisions), so the executor runs on it unchanged; its /tf and /scene/vehicles channels show
 the estimate beside the truth in Foxglove. With parser.physics_prior = false (`--no-physics-prior`) this is the
@@ -13,18 +13,20 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
+from dynclevr.perception.detector_train import detector_digest, load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel, manifest_digest
 from dynclevr.perception.tracker import parse_video
 from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 2
+VERSION = 3
 
 
 @lru_cache(maxsize=1)
-def _model() -> ParserModel:
-    return ParserModel.load(DEFAULT_DIR)
+def _model():
+    return ParserModel.load(DEFAULT_DIR), load_detector(DETECTOR_DIR)
 
 
 def run_scene(job: SceneJob) -> None:
@@ -32,7 +34,7 @@ def run_scene(job: SceneJob) -> None:
 
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
-    scene = parse_video(video.frames(), video.camera, _model(), job.cfg, job.scene)
+    scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene)
     scene.write(job.outputs[0], kind="estimate")
 
 
@@ -44,5 +46,6 @@ STAGE = Stage(
     outputs=(".mcap",),
     run_scene=run_scene,
     # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.
-    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "assets": catalogue_digest(cfg)},
+    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "detector": detector_digest(DETECTOR_DIR),
+                                     "assets": catalogue_digest(cfg)},
 )

@@ -1,0 +1,113 @@
+"""The detection head (CenterNet-style, plain torch): every object's first estimate in every frame.
+
+A small encoder (stride 16, dilated at the coarsest level for ~200 px of context) and a decoder back to stride 4
+with skips give, per cell of a 80x60 map (320x240 frames):
+- an object-centre heatmap (the projected 3D centre; for an object partly out of view, the nearest cell inside);
+- the offset from the cell to that centre, pixels / STRIDE (so out-of-view centres are reachable);
+- sub-type logits (21) and colour logits (8);
+- the yaw relative to the camera ray, as (sin, cos): a 180-degree flip is a wrong sign, learnable, not a tie;
+- log distance from the camera to the centre, and the centre's height above the ground.
+`decode` turns the maps of one frame into Detections (peaks above a threshold, with their head values).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import torch
+from torch import nn
+from torch.nn import functional as F
+
+from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.colors import COLOR_NAMES
+
+STRIDE = 4
+N_SUB, N_COL = len(SUBTYPES), len(COLOR_NAMES)
+# output channels: heat, offset (2), sub-type, colour, sin/cos alpha, log distance, height
+CHANNELS = {"heat": slice(0, 1), "offset": slice(1, 3), "subtype": slice(3, 3 + N_SUB),
+            "color": slice(3 + N_SUB, 3 + N_SUB + N_COL), "alpha": slice(3 + N_SUB + N_COL, 5 + N_SUB + N_COL),
+            "logdist": slice(5 + N_SUB + N_COL, 6 + N_SUB + N_COL),
+            "height": slice(6 + N_SUB + N_COL, 7 + N_SUB + N_COL)}
+OUT = 7 + N_SUB + N_COL
+MEAN = torch.tensor([0.45, 0.45, 0.45]).view(1, 3, 1, 1)
+STD = torch.tensor([0.25, 0.25, 0.25]).view(1, 3, 1, 1)
+
+
+def _conv(cin: int, cout: int, stride: int = 1, dilation: int = 1, k: int = 3) -> nn.Sequential:
+    return nn.Sequential(nn.Conv2d(cin, cout, k, stride, padding=dilation * (k // 2), dilation=dilation, bias=False),
+                         nn.BatchNorm2d(cout), nn.ReLU(inplace=True))
+
+
+class DetectNet(nn.Module):
+    def __init__(self, width: int = 32):
+        super().__init__()
+        w = width
+        self.s2 = _conv(3, w // 2, 2, k=5)                                        # 160x120
+        self.s4 = nn.Sequential(_conv(w // 2, w, 2), _conv(w, w))                # 80x60
+        self.s8 = nn.Sequential(_conv(w, 2 * w, 2), _conv(2 * w, 2 * w))         # 40x30
+        self.s16 = nn.Sequential(_conv(2 * w, 3 * w, 2), _conv(3 * w, 3 * w, dilation=2),
+                                 _conv(3 * w, 3 * w, dilation=4), _conv(3 * w, 3 * w))   # 20x15
+        self.up8 = _conv(3 * w + 2 * w, 2 * w)
+        self.up4 = _conv(2 * w + w, 3 * w // 2)
+        self.head = nn.Sequential(_conv(3 * w // 2, 3 * w // 2), nn.Conv2d(3 * w // 2, OUT, 1))
+        with torch.no_grad():
+            self.head[-1].bias.zero_()
+            self.head[-1].bias[0] = -4.0             # "no object" everywhere at first (focal-loss practice)
+            self.head[-1].bias[CHANNELS["logdist"]] = float(np.log(11.0))
+            self.head[-1].bias[CHANNELS["height"]] = 0.8
+
+    def forward(self, images: torch.Tensor) -> torch.Tensor:
+        """images [B, 3, H, W] in [0, 1] (H, W multiples of 16) -> maps [B, OUT, H/4, W/4]."""
+        x4 = self.s4(self.s2((images - MEAN) / STD))
+        x8 = self.s8(x4)
+        x16 = self.s16(x8)
+        y8 = self.up8(torch.cat([F.interpolate(x16, size=x8.shape[-2:], mode="bilinear", align_corners=False), x8], 1))
+        y4 = self.up4(torch.cat([F.interpolate(y8, size=x4.shape[-2:], mode="bilinear", align_corners=False), x4], 1))
+        return self.head(y4)
+
+
+def to_tensor(frames: np.ndarray) -> torch.Tensor:
+    """uint8 frames [T, H, W, 3] -> float [T, 3, H, W] in [0, 1]."""
+    return torch.from_numpy(np.ascontiguousarray(frames)).permute(0, 3, 1, 2).float().div_(255.0)
+
+
+@torch.no_grad()
+def run(net: DetectNet, frames: np.ndarray, batch: int = 16) -> torch.Tensor:
+    """The head's maps for a whole video [T, OUT, H/4, W/4]."""
+    net.eval()
+    return torch.cat([net(to_tensor(frames[i:i + batch])) for i in range(0, len(frames), batch)])
+
+
+@dataclass
+class Detection:
+    u: float                 # projected centre, pixels
+    v: float
+    score: float             # heatmap probability
+    subtype_logp: np.ndarray  # [N_SUB]
+    color_logp: np.ndarray    # [N_COL]
+    alpha: float             # yaw relative to the ray's azimuth, radians
+    dist: float              # camera to centre, metres
+    height: float            # centre z, metres
+
+
+def decode(maps: torch.Tensor, threshold: float, limit: int = 20, window: int = 5) -> list[Detection]:
+    """One frame's maps [OUT, h, w] -> detections at the heatmap's local maxima above `threshold`."""
+    prob = torch.sigmoid(maps[0])
+    is_max = prob == F.max_pool2d(prob[None, None], window, 1, window // 2)[0, 0]
+    rows, cols = torch.nonzero(is_max & (prob > threshold), as_tuple=True)
+    order = prob[rows, cols].argsort(descending=True)[:limit]
+    sub = F.log_softmax(maps[CHANNELS["subtype"]], 0)
+    col = F.log_softmax(maps[CHANNELS["color"]], 0)
+    out = []
+    for k in order.tolist():
+        r, c = int(rows[k]), int(cols[k])
+        off = maps[CHANNELS["offset"], r, c]
+        sa, ca = maps[CHANNELS["alpha"], r, c].tolist()
+        out.append(Detection(u=(c + 0.5 + float(off[0])) * STRIDE, v=(r + 0.5 + float(off[1])) * STRIDE,
+                             score=float(prob[r, c]), subtype_logp=sub[:, r, c].numpy().copy(),
+                             color_logp=col[:, r, c].numpy().copy(), alpha=float(np.arctan2(sa, ca)),
+                             dist=math.exp(float(maps[CHANNELS["logdist"], r, c])),
+                             height=float(maps[CHANNELS["height"], r, c])))
+    return out

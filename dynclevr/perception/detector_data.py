@@ -1,0 +1,132 @@
+"""Training frames for the detection head, made on demand by the generator itself (simulate + render), never from
+the val or test seeds.
+
+A scene is sampled and simulated exactly as the simulate stage does (its factual run only: the detector needs no
+counterfactuals), and `frames_per_video` of its frames are drawn by the render stage's renderer and JPEG-coded as
+the video stage codes them, so the detector trains on the pixels it will see. Per frame and object, the targets
+come from the truth and the exact instance mask:
+
+| column | meaning |
+|---|---|
+| frame | row of the shard's frame list |
+| u, v | the projected 3D centre, pixels (may lie outside the image for an object partly out of view) |
+| pixels | visible pixels in the instance mask (occlusion and the image border included) |
+| subtype, color | indices into SUBTYPES and COLOR_NAMES |
+| alpha | yaw relative to the camera ray's azimuth (what the image shows of the heading; yaw = alpha + azimuth) |
+| logdist | log of the camera-to-centre distance (m) |
+| height | the centre's z (m) |
+| radius | the object's projected half size, pixels (the heatmap's spread) |
+
+Shards (`<data>/<split>/detector/shard_NNNN.npz`) hold `scenes` of them; a shard is written atomically and reused
+when it exists, so generation resumes where it stopped.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import cv2
+import numpy as np
+
+from dynclevr.artifacts import atomic_path
+from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.config import Config, Split, scene_seed
+from dynclevr.scene import Scene4D
+from dynclevr.video import encode_rgb
+
+LABEL_COLUMNS = ("frame", "u", "v", "pixels", "subtype", "color", "alpha", "logdist", "height", "radius")
+SUBTYPE_INDEX = {s: i for i, s in enumerate(SUBTYPES)}
+FRAME_STREAM = 0x44455445   # the frame choice draws from its own stream of the scene seed
+
+
+def yaw_of(quat: np.ndarray) -> np.ndarray:
+    """Heading angle (about z) of quaternions [..., 4] (x, y, z, w)."""
+    x, y, z, w = np.moveaxis(np.asarray(quat, float), -1, 0)
+    return np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+
+
+def azimuth(camera_position, points: np.ndarray) -> np.ndarray:
+    d = np.asarray(points, float) - np.asarray(camera_position, float)
+    return np.arctan2(d[..., 1], d[..., 0])
+
+
+def frame_labels(truth: Scene4D, t: int, mask: np.ndarray, frame_row: int) -> list[list[float]]:
+    cam = truth.camera
+    rows = []
+    counts = np.bincount(mask[mask >= 0].ravel().astype(np.int64), minlength=max(o.id for o in truth.objects) + 1)
+    for i, obj in enumerate(truth.objects):
+        pos = truth.position[t, i]
+        (u, v), z = cam.project(pos)
+        if z < 0.5:
+            continue
+        dist = float(np.linalg.norm(pos - np.asarray(cam.position)))
+        alpha = float(yaw_of(truth.orientation[t, i]) - azimuth(cam.position, pos))
+        alpha = math.atan2(math.sin(alpha), math.cos(alpha))
+        radius = cam.fx * max(obj.size) / 2 / dist
+        rows.append([frame_row, u, v, counts[obj.id], SUBTYPE_INDEX[obj.shape], COLOR_NAMES.index(obj.color),
+                     alpha, math.log(dist), pos[2], radius])
+    return rows
+
+
+def render_frames(cfg: Config, seed: int, frames_per_video: int) -> tuple[list[bytes], list[list[float]]]:
+    """One scene: (JPEG bytes per chosen frame, label rows with frame = index into that list)."""
+    from dynclevr.physics import PhysicsParams, simulate
+    from dynclevr.render import make_renderer
+    from dynclevr.render.environments import environment
+    from dynclevr.stages.render import appearance, check
+    from dynclevr.stages.simulate import sample_scene, visibility
+
+    params = PhysicsParams.from_config(cfg)
+    T = cfg["video"]["frames"]
+    objects, bodies, camera = sample_scene(np.random.default_rng(seed), cfg)
+    tr = simulate(bodies, params, T)
+    truth = Scene4D("train", params.fps, camera, objects, tr.position, tr.orientation, tr.velocity,
+                    tr.angular_velocity, tr.acceleration, tr.engine, tr.floating, visibility(camera, tr.position))
+    r = check(cfg)
+    cam = camera.with_resolution(r["width"], r["height"])
+    truth.camera = cam
+    env_index, variants = appearance(seed, len(objects))
+    chosen = np.sort(np.random.default_rng([seed, FRAME_STREAM]).choice(T, frames_per_video, replace=False))
+    jpegs, labels = [], []
+    with make_renderer(r["backend"], truth, cam, environment(env_index), variants, r) as renderer:
+        for t in chosen:
+            rgb, mask, _ = renderer.render(int(t))
+            labels += frame_labels(truth, int(t), mask, len(jpegs))
+            jpegs.append(encode_rgb(rgb))
+    return jpegs, labels
+
+
+def shard_path(data_dir: Path, split: Split, shard: int) -> Path:
+    return Path(data_dir) / split.name / "detector" / f"shard_{shard:04d}.npz"
+
+
+def make_shard(cfg: Config, split: Split, data_dir: Path, shard: int, scenes_per_shard: int,
+               frames_per_video: int) -> Path:
+    out = shard_path(data_dir, split, shard)
+    if out.exists():
+        return out
+    jpegs, labels = [], []
+    for i in range(shard * scenes_per_shard, min((shard + 1) * scenes_per_shard, split.scenes)):
+        j, lab = render_frames(cfg, scene_seed(split.seed, i), frames_per_video)
+        for row in lab:
+            row[0] += len(jpegs)
+        jpegs += j
+        labels += lab
+    offsets = np.cumsum([0] + [len(b) for b in jpegs])
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with atomic_path(out) as tmp:
+        with open(tmp, "wb") as f:
+            np.savez(f, jpeg=np.frombuffer(b"".join(jpegs), np.uint8), offsets=offsets,
+                     labels=np.array(labels, np.float32).reshape(-1, len(LABEL_COLUMNS)))
+    return out
+
+
+def load_shard(path: Path) -> tuple[np.ndarray, np.ndarray]:
+    """(frames uint8 [F, H, W, 3], labels [L, len(LABEL_COLUMNS)])."""
+    z = np.load(path)
+    buf, off = z["jpeg"], z["offsets"]
+    frames = np.stack([cv2.cvtColor(cv2.imdecode(buf[off[k]:off[k + 1]], cv2.IMREAD_COLOR), cv2.COLOR_BGR2RGB)
+                       for k in range(len(off) - 1)])
+    return frames, z["labels"]

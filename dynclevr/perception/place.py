@@ -1,0 +1,72 @@
+"""3D placement from geometry: a detection's centre pixel, the camera calibration and the head's values -> a 3D
+measurement (DESIGN.md: place).
+
+The centre pixel fixes the camera ray. A ground vehicle rests on the ground plane, so its centre is where the ray
+meets the plane z = its resting height (a sub-pixel centre pins it to centimetres across the ray and about a
+decimetre along it); an aeroplane flies, so its centre is at the head's distance along the ray. The heading is
+the head's yaw relative to the ray plus the ray's azimuth. The measurement's uncertainty is anisotropic: tight
+across the ray, looser along it (`Measurement.covariance`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.camera import Camera
+from dynclevr.perception.detector import Detection
+
+SUBTYPE_NAMES = list(SUBTYPES)
+IS_PLANE = np.array([SUBTYPES[s][0] == "aeroplane" for s in SUBTYPE_NAMES])
+
+
+@lru_cache(maxsize=None)
+def resting_height(shape: str) -> float:
+    from dynclevr.physics import ground_height
+
+    return ground_height(shape)
+
+
+@dataclass
+class Measurement:
+    position: np.ndarray      # [3] world, metres
+    yaw: float                # world heading, radians
+    ray: np.ndarray           # [3] unit camera ray through the centre
+    flying: bool
+    detection: Detection
+
+    def covariance(self, across: float, along: float) -> np.ndarray:
+        """3x3: `across` metres of standard deviation across the ray, `along` (per 10 m of distance) along it."""
+        along_sd = along * max(self.detection.dist, 1.0) / 10.0
+        return across ** 2 * np.eye(3) + (along_sd ** 2 - across ** 2) * np.outer(self.ray, self.ray)
+
+
+def camera_ray(camera: Camera, u: float, v: float) -> np.ndarray:
+    R = camera.world_to_camera[:3, :3]
+    d = np.array([(u - camera.width / 2) / camera.fx, (v - camera.height / 2) / camera.fx, 1.0])
+    w = R.T @ d
+    return w / np.linalg.norm(w)
+
+
+def place(camera: Camera, det: Detection, shape: str | None = None) -> Measurement:
+    """`shape`: the sub-type to place it as (a track's, from all its frames); None: the detection's own."""
+    eye = np.asarray(camera.position, float)
+    ray = camera_ray(camera, det.u, det.v)
+    if shape is None:
+        flying = float(np.exp(det.subtype_logp)[IS_PLANE].sum()) > 0.5
+        if not flying:
+            shape = SUBTYPE_NAMES[int(np.argmax(np.where(IS_PLANE, -np.inf, det.subtype_logp)))]
+    else:
+        flying = SUBTYPES[shape][0] == "aeroplane"
+    if flying:
+        centre = eye + ray * det.dist
+    else:
+        reach = (resting_height(shape) - eye[2]) / min(ray[2], -1e-3)
+        # a ray that never meets the plane in front (the centre above the horizon) falls back to the distance
+        centre = eye + ray * (reach if 0 < reach < 3 * det.dist else det.dist)
+    yaw = det.alpha + math.atan2(centre[1] - eye[1], centre[0] - eye[0])
+    return Measurement(centre, math.atan2(math.sin(yaw), math.cos(yaw)), ray, flying, det)

@@ -1,0 +1,120 @@
+"""The detection head's targets and decoding, and 3D placement from the camera geometry."""
+
+import math
+
+import numpy as np
+import torch
+
+from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.camera import Camera
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.perception.detector import CHANNELS, OUT, STRIDE, Detection, DetectNet, decode
+from dynclevr.perception.detector_data import LABEL_COLUMNS, azimuth
+from dynclevr.perception.detector_train import COL, losses, targets
+from dynclevr.perception.place import place, resting_height
+
+CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
+NAMES = list(SUBTYPES)
+
+
+def _onehot_logp(n: int, k: int) -> np.ndarray:
+    v = np.full(n, -30.0)
+    v[k] = 0.0
+    return v
+
+
+def _detection(pos, yaw, shape) -> Detection:
+    (u, v), _ = CAMERA.project(np.asarray(pos))
+    dist = float(np.linalg.norm(np.asarray(pos) - np.asarray(CAMERA.position)))
+    return Detection(u=float(u), v=float(v), score=0.9, subtype_logp=_onehot_logp(len(NAMES), NAMES.index(shape)),
+                     color_logp=_onehot_logp(len(COLOR_NAMES), 0), alpha=yaw - float(azimuth(CAMERA.position, pos)),
+                     dist=dist, height=float(pos[2]))
+
+
+def test_a_ground_vehicle_is_placed_on_the_ground_plane():
+    pos = np.array([1.0, 2.0, resting_height("sedan")])
+    det = _detection(pos, 0.7, "sedan")
+    det.dist *= 1.3                      # the head's distance is off: the ground plane still pins the centre
+    m = place(CAMERA, det)
+    np.testing.assert_allclose(m.position, pos, atol=1e-6)
+    assert not m.flying
+    assert abs(m.yaw - 0.7) < 1e-6
+
+
+def test_an_aeroplane_is_placed_at_the_heads_distance_in_the_air():
+    pos = np.array([-2.0, 1.0, 2.7])
+    m = place(CAMERA, _detection(pos, -2.5, "jet"))
+    np.testing.assert_allclose(m.position, pos, atol=1e-6)
+    assert m.flying and abs(m.yaw + 2.5) < 1e-6
+
+
+def test_measurement_covariance_is_loose_along_the_ray_only():
+    m = place(CAMERA, _detection(np.array([0.0, 0.0, resting_height("suv")]), 0.0, "suv"))
+    C = m.covariance(0.04, 0.25)
+    along = m.ray @ C @ m.ray
+    side = np.cross(m.ray, [0, 0, 1.0])
+    side /= np.linalg.norm(side)
+    assert along > 10 * (side @ C @ side)
+    assert abs(side @ C @ side - 0.04 ** 2) < 1e-9
+
+
+def _labels(rows):
+    lab = np.zeros((len(rows), len(LABEL_COLUMNS)), np.float32)
+    for i, r in enumerate(rows):
+        for k, v in r.items():
+            lab[i, COL[k]] = v
+    return lab
+
+
+def test_targets_decode_back_to_the_labels():
+    lab = _labels([
+        dict(u=101.3, v=77.9, pixels=900, subtype=5, color=2, alpha=1.0, logdist=math.log(9.0), height=0.6, radius=30),
+        dict(u=250.6, v=160.2, pixels=400, subtype=17, color=7, alpha=-2.0, logdist=math.log(14.0), height=2.4,
+             radius=20),
+        dict(u=40.0, v=40.0, pixels=10, subtype=1, color=1, alpha=0.0, logdist=2.0, height=0.5, radius=15)])
+    h, w = 240 // STRIDE, 320 // STRIDE
+    tg = targets(lab, h, w)
+    assert len(tg["cells"]) == 2                       # the third is hidden (10 pixels): neither positive ...
+    assert tg["ignore"][round(40 / STRIDE - 0.5), round(40 / STRIDE - 0.5)]   # ... nor negative
+    maps = torch.full((OUT, h, w), 0.0)
+    maps[0] = torch.logit(torch.from_numpy(tg["heat"]).clamp(1e-4, 1 - 1e-4) * 0.999)
+    for (r, c), g in zip(tg["cells"], tg["regs"]):
+        maps[CHANNELS["offset"], r, c] = torch.tensor(g[:2])
+        maps[CHANNELS["subtype"].start + int(g[2]), r, c] = 20.0
+        maps[CHANNELS["color"].start + int(g[3]), r, c] = 20.0
+        maps[CHANNELS["alpha"], r, c] = torch.tensor(g[4:6])
+        maps[CHANNELS["logdist"], r, c] = float(g[6])
+        maps[CHANNELS["height"], r, c] = float(g[7])
+    dets = sorted(decode(maps, 0.5), key=lambda d: d.u)
+    assert len(dets) == 2
+    for d, row in zip(dets, lab[:2]):
+        assert abs(d.u - row[COL["u"]]) < 1e-4 and abs(d.v - row[COL["v"]]) < 1e-4
+        assert int(np.argmax(d.subtype_logp)) == int(row[COL["subtype"]])
+        assert int(np.argmax(d.color_logp)) == int(row[COL["color"]])
+        assert abs(d.alpha - row[COL["alpha"]]) < 1e-5
+        assert abs(math.log(d.dist) - row[COL["logdist"]]) < 1e-5 and abs(d.height - row[COL["height"]]) < 1e-5
+
+
+def test_an_out_of_view_centre_is_reached_through_the_offset():
+    lab = _labels([dict(u=-12.0, v=100.0, pixels=300, subtype=0, color=0, alpha=0, logdist=2, height=2, radius=40)])
+    tg = targets(lab, 60, 80)
+    (r, c), g = tg["cells"][0], tg["regs"][0]
+    assert c == 0 and (c + 0.5 + g[0]) * STRIDE == -12.0
+
+
+def test_the_losses_train_the_net_and_fall_on_one_batch():
+    torch.manual_seed(0)
+    net = DetectNet(16)
+    img = torch.rand(2, 3, 96, 128)
+    lab = _labels([dict(u=50, v=40, pixels=500, subtype=3, color=4, alpha=0.5, logdist=2.3, height=0.7, radius=20)])
+    opt = torch.optim.Adam(net.parameters(), 3e-3)
+    first = None
+    for _ in range(30):
+        maps = net(img)
+        parts = losses(maps, [targets(lab, maps.shape[2], maps.shape[3])] * 2)
+        loss = sum(parts.values())
+        first = first if first is not None else float(loss.detach())
+        opt.zero_grad()
+        loss.backward()
+        opt.step()
+    assert float(loss.detach()) < 0.5 * first
