@@ -38,6 +38,7 @@ class Measurement:
     ray: np.ndarray           # [3] unit camera ray through the centre
     flying: bool
     detection: Detection
+    confidence: float | None = None   # the rendering likelihood, where render-and-compare refined it
 
     def covariance(self, across: float, along: float) -> np.ndarray:
         """3x3: `across` metres of standard deviation across the ray, `along` (per 10 m of distance) along it."""

@@ -33,7 +33,7 @@ import numpy as np
 import torch
 from scipy.optimize import linear_sum_assignment
 
-from dynclevr.assets.catalogue import SUBTYPES, get_asset
+from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES, get_asset
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
@@ -49,7 +49,7 @@ from dynclevr.scene import Collision, Scene4D, SceneObject
 
 POSITIVE = ("contact_distance", "impact_frames", "impact_speed_change", "max_velocity_change", "reacquire", "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_speed",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
-            "learning_rate", "iterations", "gate_pixels", "spawn_pixels", "lost_frames", "confirm_frames",
+            "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames", "confirm_frames",
             "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames", "angular_window")
 
 
@@ -66,6 +66,21 @@ def parser_params(cfg: Config) -> dict:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
     return p
+
+
+CATEGORY_OF = np.array([[SUBTYPES[s][0] == c for s in SUBTYPES] for c in CATEGORIES], float)   # [5, 21]
+
+
+def _appearance(subtype_logp: np.ndarray, color_logp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(category, colour) distributions from summed log evidence. Categories, not sub-types: the head confuses a
+    tandem with a road bike far more often than a bike with a bus."""
+    ps, pc = np.exp(subtype_logp - subtype_logp.max()), np.exp(color_logp - color_logp.max())
+    return CATEGORY_OF @ (ps / ps.sum()), pc / pc.sum()
+
+
+def _agreement(cat_a, col_a, cat_b, col_b) -> float:
+    """Mean Bhattacharyya coefficient of the category and colour distributions: 1 alike, 0 disjoint."""
+    return 0.5 * float(np.sqrt(cat_a * cat_b).sum() + np.sqrt(col_a * col_b).sum())
 
 
 def _wrap(a: float) -> float:
@@ -89,6 +104,7 @@ class Track:
     fvel: np.ndarray = field(default_factory=lambda: np.zeros(3))   # the filter's velocity
     fvels: list = field(default_factory=list)        # ... per frame
     cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
+    yaw_var: float = 0.0                             # ... and the variance of its heading
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
     confirmed: int | None = None
@@ -137,24 +153,25 @@ class SceneParser:
                 if active:
                     mu, mu_vel = self._predict(t, active, contacts)
                     pairs = self._associate(active, mu, dets)
+                    meas = {i: place(self.camera, dets[j], active[i].shape) for i, j in pairs.items()}
+                    if feats is not None and meas:
+                        self._refine(active, mu, meas, feats[t])
                     for i, k in enumerate(active):
-                        self._correct(k, mu[i], mu_vel[i], dets[pairs[i]] if i in pairs else None, t)
-                    if feats is not None:
-                        self._refine(active, pairs, feats[t])
+                        self._correct(k, mu[i], mu_vel[i], meas.get(i), t)
                     self._merge(active, t)
                 used = set(pairs.values())
-                seen_uv = [self._pixel(k.pose[-1][:3]) for k in tracks if k.end is None]
+                taken = self._footprints(tracks)
                 for j, d in enumerate(dets):
                     if j in used or d.score < p["new_track_score"]:
                         continue
-                    if any(math.hypot(d.u - u, d.v - v) < p["spawn_pixels"] for u, v in seen_uv):
-                        continue   # a second peak on a tracked object
+                    if self._second_peak(d, taken):
+                        continue
                     m = place(self.camera, d)
                     k = Track(len(tracks), t, np.zeros(len(SUBTYPES)), np.zeros(len(COLOR_NAMES)))
                     self._init_filter(k, m)
-                    self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), d, t)
+                    self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), m, t)
                     tracks.append(k)
-                    seen_uv.append((d.u, d.v))
+                    taken += self._footprints([k])
                 for k in tracks:
                     if k.end is None or k.end == t + 1:
                         self._dynamics(k, t)
@@ -170,11 +187,36 @@ class SceneParser:
         (u, v), _ = self.camera.project(np.asarray(point, float))
         return float(u), float(v)
 
+    def _radius(self, k: Track, point: np.ndarray) -> float:
+        """The track's object's projected half length, pixels: its image footprint scales the gates."""
+        dist = float(np.linalg.norm(np.asarray(point) - np.asarray(self.camera.position)))
+        return self.camera.fx * max(SUBTYPES[k.shape][1]) / 2 / max(dist, 1.0)
+
+    def _footprints(self, tracks: list[Track]) -> list[tuple[float, float, float, np.ndarray, np.ndarray]]:
+        """(u, v, spawn radius, category and colour distributions) of every active track's current centre."""
+        out = []
+        for k in tracks:
+            if k.end is None:
+                u, v = self._pixel(k.pose[-1][:3])
+                r = max(self.p["spawn_pixels"], self.p["spawn_share"] * self._radius(k, k.pose[-1][:3]))
+                out.append((u, v, r, *_appearance(k.subtype_logp, k.color_logp)))
+        return out
+
+    def _second_peak(self, d: Detection, taken: list) -> bool:
+        """A detection on a tracked object's image: within spawn_pixels of its centre, or within its footprint
+        and alike (category and colour; a different vehicle may well stand in front of a bus)."""
+        pd, pc = _appearance(d.subtype_logp, d.color_logp)
+        return any(math.hypot(d.u - u, d.v - v) < self.p["spawn_pixels"]
+                   or (math.hypot(d.u - u, d.v - v) < r and _agreement(pd, pc, tc, tcol) >= self.p["reacquire_agreement"])
+                   for u, v, r, tc, tcol in taken)
+
     def _predict(self, t: int, active: list[Track], contacts: list) -> tuple[np.ndarray, np.ndarray]:
         """mu_t = PE(S_{t-1}): poses [N, 6] and velocities [N, 3]; records the engine's contacts between confirmed
         tracks (an impact also restarts the tracks' motion fits)."""
         density = self.physics.density
-        bodies = [Body(k.shape, tuple(k.pose[-1][:3]), tuple(k.quat[-1]), tuple(k.fvel), tuple(k.ang[-1]),
+        # No estimated spin goes in: a heading error read as a turn would make the engine turn the body further,
+        # and the next estimate starts there (a feedback loop); the engine turns bodies through contacts.
+        bodies = [Body(k.shape, tuple(k.pose[-1][:3]), tuple(k.quat[-1]), tuple(k.fvel), (0.0, 0.0, 0.0),
                        k.engine[-1], k.floating[-1]) for k in active]
         if self.world is None:
             self.world = World(bodies, self.physics)
@@ -213,21 +255,21 @@ class SceneParser:
         agree = np.zeros((len(active), len(dets)))
         for i, k in enumerate(active):
             u, v = self._pixel(mu[i, :3])
-            ps = np.exp(k.subtype_logp - k.subtype_logp.max())
-            pc = np.exp(k.color_logp - k.color_logp.max())
-            ps, pc = ps / ps.sum(), pc / pc.sum()
+            tc, tcol = _appearance(k.subtype_logp, k.color_logp)
             for j, d in enumerate(dets):
                 dist[i, j] = math.hypot(d.u - u, d.v - v)
-                agree[i, j] = 0.5 * (np.sqrt(ps * np.exp(d.subtype_logp)).sum() + np.sqrt(pc * np.exp(d.color_logp)).sum())
+                agree[i, j] = _agreement(*_appearance(d.subtype_logp, d.color_logp), tc, tcol)
         pairs: dict[int, int] = {}
-        for gate, min_agree in ((p["gate_pixels"], 0.0), (p["gate_pixels"] * p["reacquire"], p["reacquire_agreement"])):
+        base = np.array([max(p["gate_pixels"], p["gate_share"] * self._radius(k, mu[i, :3]))
+                         for i, k in enumerate(active)])[:, None]
+        for gate, min_agree in ((base, 0.0), (base * p["reacquire"], p["reacquire_agreement"])):
             rows = [i for i in range(len(active)) if i not in pairs]
             cols = [j for j in range(len(dets)) if j not in pairs.values()]
             if not rows or not cols:
                 break
-            sub_d, sub_a = dist[np.ix_(rows, cols)], agree[np.ix_(rows, cols)]
-            cost = np.where((sub_d <= gate) & (sub_a >= min_agree),
-                            sub_d / gate + 2 * p["appearance_weight"] * (1 - sub_a), 1e6)
+            sub_d, sub_a, g = dist[np.ix_(rows, cols)], agree[np.ix_(rows, cols)], gate[rows]
+            cost = np.where((sub_d <= g) & (sub_a >= min_agree), sub_d / g + 2 * p["appearance_weight"] * (1 - sub_a),
+                            1e6)
             for r, c in zip(*linear_sum_assignment(cost)):
                 if cost[r, c] < 1e6:
                     pairs[rows[r]] = cols[c]
@@ -239,8 +281,9 @@ class SceneParser:
         cov[:3, :3] = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying else p["measure_along"])
         cov[3:, 3:] = p["initial_speed"] ** 2 * np.eye(3)
         k.cov = cov
+        k.yaw_var = p["measure_yaw"] ** 2
 
-    def _correct(self, k: Track, mu: np.ndarray, mu_vel: np.ndarray, d: Detection | None, t: int) -> None:
+    def _correct(self, k: Track, mu: np.ndarray, mu_vel: np.ndarray, m: Measurement | None, t: int) -> None:
         p = self.p
         prior = bool(p["physics_prior"])
         dt = 1.0 / self.fps
@@ -248,7 +291,8 @@ class SceneParser:
         F_[:3, 3:] = dt * np.eye(3)
         Q = np.diag([p["process_position"] ** 2] * 3 + [p["process_velocity"] ** 2] * 3)
         k.cov = F_ @ k.cov @ F_.T + Q
-        if d is None:
+        if m is None:
+            k.yaw_var += p["yaw_sigma"] ** 2
             # missed: coast on the prediction (the engine's, or constant velocity without the prior)
             if prior:
                 pose, k.fvel = mu.copy(), mu_vel.copy()
@@ -260,10 +304,9 @@ class SceneParser:
             self._record(k, pose, None, t)
             return
         k.lost = 0
-        m = place(self.camera, d, k.shape)
         z = m.position
         if not prior:
-            self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), d, t)
+            self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), m, t)
             return
         R = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying else p["measure_along"])
         x = np.concatenate([mu[:3], mu_vel])
@@ -282,28 +325,30 @@ class SceneParser:
         speed = float(np.linalg.norm(x[3:5]))
         if k.segment == 0 and speed > 1.0 and math.cos(yaw_m - math.atan2(x[4], x[3])) < 0:
             yaw_m = _wrap(yaw_m + math.pi)
-        kyaw = p["yaw_sigma"] ** 2 / (p["yaw_sigma"] ** 2 + p["measure_yaw"] ** 2)
+        k.yaw_var += p["yaw_sigma"] ** 2
+        kyaw = k.yaw_var / (k.yaw_var + p["measure_yaw"] ** 2)
+        k.yaw_var *= 1 - kyaw
         yaw = _wrap(mu[3] + kyaw * _wrap(yaw_m - mu[3]))
-        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), d, t)
+        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t)
 
-    def _refine(self, active: list[Track], pairs: dict[int, int], feats: torch.Tensor) -> None:
-        """Render-and-compare around the filtered poses of the tracks detected in this frame (joint, occlusion-aware);
-        the prior N(filtered pose, refine_sigma2) keeps it from sliding along the flat directions of the likelihood."""
-        idx = [i for i in pairs]
-        if not idx:
-            return
+    def _refine(self, active: list[Track], mu: np.ndarray, meas: dict[int, Measurement], feats: torch.Tensor) -> None:
+        """Render-and-compare (paper, section 2.1) of this frame's measurements, jointly (occlusion-aware): from the
+        placed detection, with the track's heading once it has one (the head's heading may be flipped), the
+        prior N(start, refine_sigma2) keeping it from sliding along the flat directions of the likelihood. The
+        refined pose is the filter's measurement; its mean log-likelihood ratio per cell, the frame's confidence."""
+        idx = list(meas)
         meshes = self.model.meshes
         mesh_ids = torch.tensor([self.mesh_index[active[i].shape] for i in idx])
-        start = torch.tensor(np.array([active[i].pose[-1] for i in idx]), dtype=torch.float32)
+        start = torch.tensor(np.array([[*meas[i].position, mu[i, 3] if active[i].confirmed is not None
+                                        else meas[i].yaw, mu[i, 4], mu[i, 5]] for i in idx]), dtype=torch.float32)
         ev = Evidence.compute(feats, meshes, sorted(set(mesh_ids.tolist())), self.p["kappa"],
                               self.p["foreground_bias"])
         poses, ll, area = fit(start, mesh_ids, ev, meshes, self.gcam, self.p["iterations"], self.p["learning_rate"],
                               joint=True, prior_mean=start, sigma2=self.p["refine_sigma2"])
         for n, i in enumerate(idx):
-            k = active[i]
-            k.pose[-1] = poses[n].numpy().astype(float)
-            k.quat[-1] = euler_to_quat(k.pose[-1][3:])
-            k.scores[-1] = float(np.clip(ll[n] / area[n].clamp(min=1.0), 0.0, 1.0))
+            m = meas[i]
+            m.position, m.yaw = poses[n, :3].numpy().astype(float), float(poses[n, 3])
+            m.confidence = float(np.clip(ll[n] / area[n].clamp(min=1.0), 0.0, 1.0))
 
     def _merge(self, active: list[Track], t: int) -> None:
         """Two tracks that converged on one object: the younger one ends."""
@@ -313,11 +358,12 @@ class SceneParser:
                         np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
                     b.end = t + 1
 
-    def _record(self, k: Track, pose: np.ndarray, d: Detection | None, t: int) -> None:
+    def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int) -> None:
         k.pose.append(pose)
         k.quat.append(euler_to_quat(pose[3:]))
-        k.seen.append(d is not None)
-        k.scores.append(d.score if d is not None else 0.0)
+        k.seen.append(m is not None)
+        k.scores.append(0.0 if m is None else m.detection.score if m.confidence is None else m.confidence)
+        d = None if m is None else m.detection
         # static attributes: the head's evidence, within the observed frames for an object seen in them
         if d is not None and (t < self.observed or k.start >= self.observed):
             k.subtype_logp += d.score * d.subtype_logp
@@ -381,7 +427,7 @@ class SceneParser:
             vel[:k.start, i] = v0
             pos[k.start + n:, i], quat[k.start + n:, i] = pos[k.start + n - 1, i], quat[k.start + n - 1, i]
             category, size = SUBTYPES[k.shape]
-            seen_scores = [s for s, v in zip(k.scores, k.seen) if v]
+            seen_scores = [s for s, v in zip(k.scores[:a + 1], k.seen[:a + 1]) if v]
             objects.append(SceneObject(
                 id=k.id, shape=k.shape, category=category, color=COLOR_NAMES[int(k.color_logp.argmax())],
                 size=tuple(float(s) for s in size), mass=float(masses[k.id]),
