@@ -324,6 +324,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads",
         "command": "dynclevr train detector [--resume]"})
     B = p["detector_batch"]
+    first_step = step
     rng = np.random.default_rng([p["seed"], step])
     start = time.perf_counter()
     last_save = start
@@ -366,6 +367,8 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     manifest["metrics_heldout"] = evaluate(net, val)
     manifest["training_seconds"] = round(base_seconds + time.perf_counter() - start, 1)
     manifest["steps_done"] = step
+    manifest.setdefault("runs", []).append({"from_step": first_step, "to_step": step, "steps_planned": total,
+                                            "seconds": round(time.perf_counter() - start, 1)})
     _save(net, opt, step, out_dir, manifest)
     echo(f"train detector: step {step}, held-out {manifest['metrics_heldout']}; written to {out_dir}")
     return manifest

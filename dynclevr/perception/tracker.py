@@ -21,7 +21,8 @@ same whatever follows):
    as the slope of the velocity since the last impact, engine and floating from them; sub-type and colour from the
    head's evidence summed over the track's frames (within the observed frames for an object seen in them, so the
    predictive questions never depend on later frames).
-A track becomes an object once detected in `confirm_frames` frames, and is reported from that frame on.
+A track becomes an object once detected in `confirm_frames` of its first `confirm_window` frames, and is reported
+from that frame on; one that is not by then was a passing false peak and ends.
 """
 
 from __future__ import annotations
@@ -47,10 +48,13 @@ from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler
 from dynclevr.physics import Body, ContactEvents, PhysicsParams, World
 from dynclevr.scene import Collision, Scene4D, SceneObject
 
-POSITIVE = ("contact_distance", "impact_frames", "impact_speed_change", "max_velocity_change", "reacquire", "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_speed",
+POSITIVE = ("overlap_tolerance", "contact_distance", "impact_frames", "impact_speed_change", "max_velocity_change", "reacquire",
+            "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_frames",
+            "maneuver_speed",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
-            "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames", "confirm_frames",
-            "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames", "angular_window")
+            "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
+            "confirm_frames", "confirm_window", "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames",
+            "angular_window")
 
 
 def parser_params(cfg: Config) -> dict:
@@ -105,6 +109,8 @@ class Track:
     fvels: list = field(default_factory=list)        # ... per frame
     cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
     yaw_var: float = 0.0                             # ... and the variance of its heading
+    engine_decided: bool | None = None               # the prior's engine, once decided
+    surprises: int = 0                               # consecutive measurements far outside the prediction
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
     confirmed: int | None = None
@@ -145,13 +151,12 @@ class SceneParser:
         detections = self.detect(frames) if detections is None else detections
         feats = extract(self.model.net, frames)[0] if p["refine"] else None
         tracks: list[Track] = []
-        contacts: list[tuple[int, dict]] = []
         try:
             for t, dets in enumerate(detections):
                 active = [k for k in tracks if k.end is None]
                 pairs = {}
                 if active:
-                    mu, mu_vel = self._predict(t, active, contacts)
+                    mu, mu_vel = self._predict(t, active)
                     pairs = self._associate(active, mu, dets)
                     meas = {i: place(self.camera, dets[j], active[i].shape) for i, j in pairs.items()}
                     if feats is not None and meas:
@@ -179,7 +184,7 @@ class SceneParser:
             if self.world is not None:
                 self.world.close()
                 self.world = None
-        return self._scene(name, tracks, contacts, len(detections))
+        return self._scene(name, tracks, len(detections))
 
     # ---- the filter's steps ------------------------------------------------------------------------------------
 
@@ -210,9 +215,10 @@ class SceneParser:
                    or (math.hypot(d.u - u, d.v - v) < r and _agreement(pd, pc, tc, tcol) >= self.p["reacquire_agreement"])
                    for u, v, r, tc, tcol in taken)
 
-    def _predict(self, t: int, active: list[Track], contacts: list) -> tuple[np.ndarray, np.ndarray]:
-        """mu_t = PE(S_{t-1}): poses [N, 6] and velocities [N, 3]; records the engine's contacts between confirmed
-        tracks (an impact also restarts the tracks' motion fits)."""
+    def _predict(self, t: int, active: list[Track]) -> tuple[np.ndarray, np.ndarray]:
+        """mu_t = PE(S_{t-1}): poses [N, 6] and velocities [N, 3]. Records the collision candidates between
+        confirmed tracks: the engine's contacts in the step (an impact also restarts the tracks' motion fits) and
+        the pairs whose hulls come within contact_distance."""
         density = self.physics.density
         # No estimated spin goes in: a heading error read as a turn would make the engine turn the body further,
         # and the next estimate starts there (a feedback loop); the engine turns bodies through contacts.
@@ -223,16 +229,17 @@ class SceneParser:
         else:
             self.world.set_bodies(bodies)
         confirmed = [k.confirmed is not None for k in active]
+        overlap = set()
         for (a, b), gap in self.world.gaps(self.p["contact_distance"]).items():
             if confirmed[a] and confirmed[b]:
                 self.near.append((t, active[a].id, active[b].id))
+            if gap < -self.p["overlap_tolerance"]:
+                overlap |= {a, b}
         touched = self.world.step_frame()
         s = self.world.states()
-        touched = {(a, b): v for (a, b), v in touched.items()
-                   if active[a].confirmed is not None and active[b].confirmed is not None}
-        if touched:
-            contacts.append((t, {(active[a].id, active[b].id): v for (a, b), v in touched.items()}))
-            for (a, b), (_, impulse) in touched.items():
+        for (a, b), (_, impulse) in touched.items():
+            if confirmed[a] and confirmed[b]:
+                self.near.append((t, active[a].id, active[b].id))
                 ma, mb = active[a].mass(density), active[b].mass(density)
                 if impulse * (1 / ma + 1 / mb) >= self.physics.min_impact_speed:
                     for k in (active[a], active[b]):
@@ -242,7 +249,16 @@ class SceneParser:
         prev = np.array([k.fvel for k in active])
         dv = s.velocity - prev
         big = np.linalg.norm(dv, axis=1, keepdims=True) / self.p["max_velocity_change"]
-        return np.concatenate([s.position, quat_to_euler(s.orientation)], 1), prev + dv / np.maximum(big, 1.0)
+        mu = np.concatenate([s.position, quat_to_euler(s.orientation)], 1)
+        mu_vel = prev + dv / np.maximum(big, 1.0)
+        # Hulls that already overlap at the start (the estimates are decimetres off) get pushed apart by the engine
+        # whatever their motion: for them the prior is their own motion alone; a real impact shows in the images
+        # within a few frames (the filter's manoeuvre rule).
+        for i in overlap:
+            k = active[i]
+            mu[i] = np.concatenate([k.pose[-1][:3] + k.fvel / self.fps, k.pose[-1][3:]])
+            mu_vel[i] = k.fvel
+        return mu, mu_vel
 
     def _associate(self, active: list[Track], mu: np.ndarray, dets: list[Detection]) -> dict[int, int]:
         """Track index -> detection index: Hungarian on image distance / gate + appearance disagreement; then the
@@ -312,9 +328,19 @@ class SceneParser:
         x = np.concatenate([mu[:3], mu_vel])
         innov = z - x[:3]
         S = k.cov[:3, :3] + R
-        if innov @ np.linalg.solve(S, innov) > p["maneuver_chi2"]:
-            k.cov[3:, 3:] += p["maneuver_speed"] ** 2 * np.eye(3)    # the motion changed: follow the image
+        d2 = float(innov @ np.linalg.solve(S, innov))
+        if d2 > p["maneuver_chi2"] and len(k.pose) >= p["min_fit_frames"]:   # (a young track's velocity is unknown)
+            # far from the prediction: a bad detection (down-weighted, Huber-like) unless it persists, which means
+            # the motion changed (a collision the engine missed): then the velocity's uncertainty grows
+            k.surprises += 1
+            if k.surprises >= p["maneuver_frames"]:
+                k.cov[3:, 3:] += p["maneuver_speed"] ** 2 * np.eye(3)
+                k.surprises = 0
+            else:
+                R = R * d2 / p["maneuver_chi2"]
             S = k.cov[:3, :3] + R
+        else:
+            k.surprises = 0
         gain = k.cov[:, :3] @ np.linalg.inv(S)
         x = x + gain @ innov
         k.cov = (np.eye(6) - gain @ np.eye(3, 6)) @ k.cov
@@ -370,6 +396,8 @@ class SceneParser:
             k.color_logp += d.score * d.color_logp
         if k.confirmed is None and sum(k.seen) >= self.p["confirm_frames"]:
             k.confirmed = t
+        elif k.confirmed is None and len(k.seen) >= self.p["confirm_window"]:
+            k.end = t + 1
 
     def _dynamics(self, k: Track, t: int) -> None:
         """The track's dynamics at frame t, from its poses up to t."""
@@ -385,19 +413,28 @@ class SceneParser:
         if p["physics_prior"]:
             k.fvels.append(k.fvel.copy())
             vel = k.fvel.copy()
-            hist = np.array(k.fvels[first:])      # since the last impact, at most fit_window frames
+            # since the last impact, at most fit_window frames, and not while a new track's velocity converges
+            hist = np.array(k.fvels[max(first, p["min_fit_frames"]):])
             acc = dynamics.slope(hist, self.fps) if len(hist) >= 2 * p["min_fit_frames"] else np.zeros(3)
         if np.linalg.norm(vel) < p["static_speed"]:
             vel = np.zeros(3)
         k.vel.append(vel)
         k.acc.append(acc)
         k.ang.append(dynamics.angular_velocity(quats, self.fps, p["angular_window"]))
-        k.engine.append(dynamics.engine_on(vel, acc, quats[-1], p))
+        if p["physics_prior"]:
+            # The engine is a hidden state that the prior itself drives: read afresh each frame, an estimated
+            # speed-up turns it on and the prediction then speeds up. So it is decided once, from the first fit
+            # window (within the observed frames), and holds until the object's first impact (the generator's rule).
+            if k.engine_decided is None and (len(pos) >= p["fit_window"] or t == self.observed - 1):
+                k.engine_decided = dynamics.engine_on(vel, acc, quats[-1], p)
+            k.engine.append(bool(k.engine_decided) and k.segment == 0)
+        else:
+            k.engine.append(dynamics.engine_on(vel, acc, quats[-1], p))
         k.floating.append(dynamics.floating(category, pos[-1, 2], size[2] / 2, acc, self.physics.gravity))
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
-    def _scene(self, name: str, tracks: list[Track], contacts: list, T: int) -> Scene4D:
+    def _scene(self, name: str, tracks: list[Track], T: int) -> Scene4D:
         density = self.physics.density
         masses = [k.mass(density) for k in tracks]        # by track id (the contacts' ids)
         tracks = sorted((k for k in tracks if k.confirmed is not None), key=lambda k: (k.confirmed, k.id))
@@ -419,8 +456,13 @@ class SceneParser:
             if k.start < self.observed:
                 a = min(a, self.observed - 1)
             a = min(a, k.start + n - 1) - k.start
-            # before it is found, an object was on its way in at its first fitted velocity (not parked: "speed 0"
-            # would be a claim the video does not make); after it is lost it keeps its last estimate
+            # A new track's velocity converges over its first min_fit_frames: it then holds the velocity it has by
+            # then (a lag within the observed frames, where the object was found in them). Before it is found, an
+            # object was on its way in at that velocity (not parked: "speed 0" would be a claim the video does not
+            # make); after it is lost it keeps its last estimate.
+            settle = min(self.p["min_fit_frames"], n - 1)
+            if k.start + settle < self.observed or k.start >= self.observed:
+                vel[k.start:k.start + settle, i] = vel[k.start + settle, i]
             back = (np.arange(k.start) - k.start)[:, None] / self.fps
             v0 = np.array([*k.vel[a][:2], 0.0])
             pos[:k.start, i], quat[:k.start, i] = pos[k.start, i] + back * v0, quat[k.start, i]
@@ -436,18 +478,19 @@ class SceneParser:
                                                  self.physics.fast_speed),
                 confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
         events = ContactEvents(self.physics.merge_frames, masses, self.physics.min_impact_speed)
-        for t, touched in sorted(contacts + self._trajectory_contacts(tracks, masses, T), key=lambda c: c[0]):
+        for t, touched in self._collisions(tracks, masses, T):
             events.add(t, touched)
         collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=collisions, observed_frames=self.observed)
 
 
-    def _trajectory_contacts(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, dict]]:
-        """Collisions the engine's prediction did not produce, read from the estimated trajectories: the two hulls
-        came within contact_distance and the pair's relative velocity changed by an impact's worth within
-        impact_frames on either side. The frame is the first of the approach, so the event at frame t reads
-        frames up to t + impact_frames only."""
+    def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, dict]]:
+        """Collision events from the candidates (the engine's contacts while it predicted, hulls within
+        contact_distance) that the estimated trajectories confirm: the pair's relative velocity changed by an
+        impact's worth within impact_frames on either side (overlapping hulls from a depth error, grazes and near
+        misses change nothing). The frame is the first of the approach, so an event at frame t reads frames up to
+        t + impact_frames only."""
         w = self.p["impact_frames"]
         vel = {}
         for k in tracks:
@@ -455,7 +498,7 @@ class SceneParser:
             v[k.start:k.start + len(k.vel)] = np.array(k.fvels if self.p["physics_prior"] else k.vel)
             vel[k.id] = v
         out, last = [], {}
-        for t, a, b in self.near:
+        for t, a, b in sorted(set(self.near)):
             run_start = last.get((a, b))
             last[(a, b)] = t
             if run_start is not None and t - run_start <= self.physics.merge_frames:
