@@ -44,6 +44,18 @@ def motion(pos: np.ndarray, fps: int, min_frames: int, short_frames: int | None 
     return coef[1], (coef[2] if quadratic else np.zeros(3))
 
 
+def quadratic_acceleration(samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int) -> np.ndarray:
+    """The second derivative of a least-squares quadratic through (frame, position) samples; zeros with fewer
+    than `min_samples`."""
+    if len(samples) < min_samples:
+        return np.zeros(3)
+    t = np.array([f for f, _ in samples], float) / fps
+    t -= t.mean()
+    A = np.stack([np.ones_like(t), t, 0.5 * t * t], 1)
+    coef, *_ = np.linalg.lstsq(A, np.array([x for _, x in samples]), rcond=None)
+    return coef[2]
+
+
 def slope(values: np.ndarray, fps: int) -> np.ndarray:
     """Least-squares slope per second of `values` [n, ...] sampled once a frame (n >= 2)."""
     t = (np.arange(len(values)) - (len(values) - 1) / 2) / fps

@@ -110,6 +110,7 @@ class Track:
     cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
     yaw_var: float = 0.0                             # ... and the variance of its heading
     engine_decided: bool | None = None               # the prior's engine, once decided
+    measured: list = field(default_factory=list)     # (frame, measured position) while the engine is undecided
     surprises: int = 0                               # consecutive measurements far outside the prediction
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
@@ -321,6 +322,7 @@ class SceneParser:
             return
         k.lost = 0
         z = m.position
+        k.measured.append((t, z.copy()))
         if not prior:
             self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), m, t)
             return
@@ -425,8 +427,12 @@ class SceneParser:
             # The engine is a hidden state that the prior itself drives: read afresh each frame, an estimated
             # speed-up turns it on and the prediction then speeds up. So it is decided once, from the first fit
             # window (within the observed frames), and holds until the object's first impact (the generator's rule).
+            # Its evidence is the measurements alone (the filter's velocity follows the prior's engine): the
+            # forward acceleration of a quadratic fit to the measured positions, against engine_threshold.
             if k.engine_decided is None and (len(pos) >= p["fit_window"] or t == self.observed - 1):
-                k.engine_decided = dynamics.engine_on(vel, acc, quats[-1], p)
+                fit_acc = dynamics.quadratic_acceleration(k.measured, self.fps, 2 * p["min_fit_frames"])
+                k.engine_decided = dynamics.engine_on(vel, fit_acc, quats[-1], p)
+                k.measured = []
             k.engine.append(bool(k.engine_decided) and k.segment == 0)
         else:
             k.engine.append(dynamics.engine_on(vel, acc, quats[-1], p))
