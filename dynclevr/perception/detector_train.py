@@ -31,7 +31,7 @@ from torch.nn import functional as F
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import atomic_path, file_digest, write_json_atomic
 from dynclevr.config import Config, ConfigError
-from dynclevr.perception.detector import CHANNELS, N_COL, N_SUB, STRIDE, DetectNet, decode, run, to_tensor
+from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run, to_tensor
 from dynclevr.perception.detector_data import LABEL_COLUMNS, make_shard, shard_path
 
 DEFAULT_DIR = WEIGHTS_DIR / "detector"
