@@ -1,5 +1,8 @@
 """Dynamics attributes from the estimated trajectory (REFERENCE.md section 2.3), causal: frame t uses frames <= t.
 
+With the physics prior the velocity is the filter's (tracker.py) and the acceleration its `slope`; the engine is
+decided from `quadratic_acceleration` of the measurements. Without the prior (the paper's ablation), as follows.
+
 The paper takes finite differences of the positions and smooths them with a moving average of 5 frames. With
 centimetres of pose noise per frame that gives velocities good to about half a metre per second, and accelerations
 (a second difference) with metres per second squared of noise: far above the ~2 m/s^2 that separate an engine from
@@ -38,10 +41,14 @@ def motion(pos: np.ndarray, fps: int, min_frames: int, short_frames: int | None 
     if n < max(min(short_frames or min_frames, min_frames), 2):
         return np.zeros(3), np.zeros(3)
     quadratic = n >= 2 * min_frames
-    t = (np.arange(n) - (n - 1)) / fps
-    A = np.stack([np.ones_like(t), t, 0.5 * t * t] if quadratic else [np.ones_like(t), t], 1)
-    coef, *_ = np.linalg.lstsq(A, pos, rcond=None)
+    coef = _fit((np.arange(n) - (n - 1)) / fps, pos, quadratic)
     return coef[1], (coef[2] if quadratic else np.zeros(3))
+
+
+def _fit(t: np.ndarray, pos: np.ndarray, quadratic: bool) -> np.ndarray:
+    """Least-squares (position, velocity[, acceleration]) at t = 0 of positions [n, 3] at times t [n] (s)."""
+    A = np.stack([np.ones_like(t), t, 0.5 * t * t] if quadratic else [np.ones_like(t), t], 1)
+    return np.linalg.lstsq(A, pos, rcond=None)[0]
 
 
 def quadratic_acceleration(samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int) -> np.ndarray:
@@ -50,10 +57,7 @@ def quadratic_acceleration(samples: list[tuple[int, np.ndarray]], fps: int, min_
     if len(samples) < min_samples:
         return np.zeros(3)
     t = np.array([f for f, _ in samples], float) / fps
-    t -= t.mean()
-    A = np.stack([np.ones_like(t), t, 0.5 * t * t], 1)
-    coef, *_ = np.linalg.lstsq(A, np.array([x for _, x in samples]), rcond=None)
-    return coef[2]
+    return _fit(t - t.mean(), np.array([x for _, x in samples]), True)[2]
 
 
 def slope(values: np.ndarray, fps: int) -> np.ndarray:
