@@ -24,6 +24,7 @@ from typing import Sequence
 
 import numpy as np
 
+from dynclevr.assets import collision
 from dynclevr.assets.catalogue import SUBTYPES, get_asset
 from dynclevr.config import Config, ConfigError
 from dynclevr.scene import INTERVENTIONS, Collision
@@ -170,19 +171,7 @@ class Trajectory:
     engine: np.ndarray            # [T, N] bool
     floating: np.ndarray          # [T, N] bool
     collisions: list[Collision]
-
-
-@functools.lru_cache(maxsize=None)
-def collision_vertices(shape: str) -> np.ndarray:
-    """The collision shape of a sub-type: its convex hull, with the bottom widened to the full footprint.
-
-    A bicycle's or motorbike's hull stands on two thin, round wheel profiles and would topple or rock by itself;
-    real vehicles are balanced (riders, stands), so the shape stands on the rectangle under its bounding box, and
-    keeps the hull's silhouette above it."""
-    hull = get_asset(shape).collision_hull
-    lo, hi = hull.min(axis=0), hull.max(axis=0)
-    corners = np.array([[x, y, lo[2]] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])])
-    return np.round(np.concatenate([hull, corners]), 6)
+    grazes: list[Collision]       # touches too gentle to be collisions (see ContactEvents)
 
 
 def catalogue_digest(cfg: Config) -> str:
@@ -191,14 +180,15 @@ def catalogue_digest(cfg: Config) -> str:
     h = hashlib.sha256()
     for shape in sorted(SUBTYPES):
         h.update(shape.encode())
-        h.update(np.ascontiguousarray(collision_vertices(shape), dtype="<f8").tobytes())
+        for piece in collision.load(shape):
+            h.update(np.ascontiguousarray(piece, dtype="<f8").tobytes())
         h.update(repr(round(get_asset(shape).mass(density), 9)).encode())
     return h.hexdigest()
 
 
 def ground_height(shape: str) -> float:
     """z of a body of this sub-type resting upright on the floor (its position is its bounding-box centre)."""
-    return float(-collision_vertices(shape)[:, 2].min()) + SPAWN_CLEARANCE
+    return float(-min(piece[:, 2].min() for piece in collision.load(shape))) + SPAWN_CLEARANCE
 
 
 def heading(quat: np.ndarray) -> np.ndarray:
@@ -244,7 +234,7 @@ class World:
 
     def _setup(self) -> None:
         c, pp = self.client, self.params
-        self._hulls: dict[str, int] = {}
+        self._shapes: dict[str, int] = {}
         c.setGravity(0, 0, -pp.gravity)
         c.setTimeStep(1.0 / pp.hz)
         c.setPhysicsEngineParameter(
@@ -272,27 +262,32 @@ class World:
                                    linearDamping=0.0, angularDamping=self.params.angular_damping,
                                    contactProcessingThreshold=0.0)
 
-    def _hull(self, shape: str) -> int:
-        if shape not in self._hulls:
-            self._hulls[shape] = self.client.createCollisionShape(p.GEOM_MESH,
-                                                                  vertices=collision_vertices(shape).tolist())
-        return self._hulls[shape]
+    def _shape(self, shape: str) -> int:
+        """The sub-type's compound of convex pieces (dynclevr/assets/collision.py), made once per world."""
+        if shape not in self._shapes:
+            collision.load(shape)   # checks the file against the mesh
+            self._shapes[shape] = self.client.createCollisionShape(p.GEOM_MESH, fileName=str(collision.path(shape)))
+        return self._shapes[shape]
 
     def set_bodies(self, bodies: Sequence[Body]) -> None:
-        """Make the world hold exactly `bodies` in their initial states: a clean start, as in a new World."""
+        """Make the world hold exactly `bodies` in their initial states: a clean start, as in a new World.
+
+        A run must be a pure function of its initial state. Bodies left over from an earlier run keep contact
+        manifolds and warm-start impulses, removed-and-recreated ones get new ids and a new pair order, and
+        Bullet's saveState / restoreState does not restore free rigid bodies exactly: each made reruns drift. So
+        the world is emptied (resetSimulation, which keeps the client: a new connection costs 20 ms) and rebuilt."""
         c = self.client
         shapes = [b.shape for b in bodies]
         for s in shapes:
             if s not in SUBTYPES:
                 raise KeyError(f"unknown sub-type {s!r}")
+        if self.ids:
+            c.resetSimulation()
+            self._setup()
         self.masses = [b.mass_with(self.params.density) for b in bodies]
-        # Always new bodies: a teleported body keeps its contact manifolds and their warm-start impulses, so a run
-        # would depend on the run before it. Re-creating from cached collision shapes is cheap.
-        for uid in self.ids:
-            c.removeBody(uid)
-        # Maximal coordinates: a free rigid body (btRigidBody) rather than a one-link multibody; faster and
-        # the plain rigid-body model the generator uses.
-        self.ids = [c.createMultiBody(m, self._hull(s), useMaximalCoordinates=True)
+        # Maximal coordinates: a free rigid body (btRigidBody) rather than a one-link multibody; faster and the
+        # plain rigid-body model the generator uses.
+        self.ids = [c.createMultiBody(m, self._shape(s), useMaximalCoordinates=True)
                     for s, m in zip(shapes, self.masses)]
         for uid in self.ids:
             self._dynamics(uid, self.params.object_friction)
@@ -402,14 +397,14 @@ class ContactEvents:
                 self.events.append(ev)
             self._open[(a, b)] = (ev, frame)
 
-    def done(self) -> list[Collision]:
-        out = []
+    def done(self) -> tuple[list[Collision], list[Collision]]:
+        """(impacts, grazes), each sorted by frame."""
+        impacts, grazes = [], []
         for e in self.events:
             ma, mb = self.masses[e.a], self.masses[e.b]
-            if e.impulse * (ma + mb) / (ma * mb) >= self.min_speed:
-                e.impulse = round(float(e.impulse), 6)
-                out.append(e)
-        return sorted(out, key=lambda e: (e.frame, e.a, e.b))
+            e.impulse = round(float(e.impulse), 6)
+            (impacts if e.impulse * (ma + mb) / (ma * mb) >= self.min_speed else grazes).append(e)
+        return tuple(sorted(x, key=lambda e: (e.frame, e.a, e.b)) for x in (impacts, grazes))
 
 
 def simulate(bodies: Sequence[Body], params: PhysicsParams, frames: int, world: World | None = None,
@@ -447,7 +442,7 @@ def simulate(bodies: Sequence[Body], params: PhysicsParams, frames: int, world: 
     if T > 1:
         acc[1:] = np.diff(vel, axis=0) * params.fps
         acc[0] = acc[1]
-    return Trajectory(pos, quat, vel, ang, acc, eng, flo, events.done())
+    return Trajectory(pos, quat, vel, ang, acc, eng, flo, *events.done())
 
 
 def intervene(bodies: Sequence[Body], index: int, intervention: str, params: PhysicsParams) -> list[Body] | None:
@@ -486,9 +481,10 @@ def _same(a: Body, b: Body) -> bool:
 
 
 def counterfactual(bodies: Sequence[Body], index: int, intervention: str, params: PhysicsParams, frames: int,
-                   world: World | None = None) -> list[Collision] | None:
-    """The collision events of a re-simulation with one intervention on body `index` (None if it changes nothing)."""
+                   world: World | None = None) -> Trajectory | None:
+    """A re-simulation with one intervention on body `index`, its collisions and grazes only (None if the
+    intervention changes nothing)."""
     changed = intervene(bodies, index, intervention, params)
     if changed is None:
         return None
-    return simulate(changed, params, frames, world=world, record=False).collisions
+    return simulate(changed, params, frames, world=world, record=False)

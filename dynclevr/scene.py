@@ -15,7 +15,7 @@ from dynclevr.camera import Camera
 from dynclevr.mcapio import McapIn, McapOut, frame_time_ns
 
 SCENE_SCHEMA = "dynclevr.scene4d"
-SCENE_VERSION = 1
+SCENE_VERSION = 2   # 2: grazes
 INTERVENTIONS = ("static", "slow", "fast", "accelerating", "floating")
 
 
@@ -63,6 +63,10 @@ class Scene4D:
     future_collisions: list[Collision] = field(default_factory=list)   # after the observed frames
     counterfactuals: dict[tuple[int, str], list[Collision]] = field(default_factory=dict)
     observed_frames: int = 30
+    # Touches too gentle to be collisions (truth only): no collision question is asked about a pair that grazes,
+    # since a viewer sees them touch. Per video and per counterfactual run.
+    grazes: list[Collision] = field(default_factory=list)
+    counterfactual_grazes: dict[tuple[int, str], list[Collision]] = field(default_factory=dict)
 
     @property
     def num_frames(self) -> int:
@@ -97,8 +101,10 @@ class Scene4D:
                      {"events": [asdict(c) for c in self.collisions]})
             out.json("/scene/future_collisions", "dynclevr.CollisionEvents", 0,
                      {"events": [asdict(c) for c in self.future_collisions]})
+            out.json("/scene/grazes", "dynclevr.CollisionEvents", 0, {"events": [asdict(c) for c in self.grazes]})
             out.json("/scene/counterfactuals", "dynclevr.CounterfactualOutcomes", 0, {"runs": [
-                {"object": oid, "intervention": iv, "events": [asdict(c) for c in events]}
+                {"object": oid, "intervention": iv, "events": [asdict(c) for c in events],
+                 "grazes": [asdict(c) for c in self.counterfactual_grazes.get((oid, iv), [])]}
                 for (oid, iv), events in sorted(self.counterfactuals.items())]})
 
     @classmethod
@@ -126,4 +132,5 @@ class Scene4D:
             collisions=events(src.first("/scene/collisions")["events"]),
             future_collisions=events(src.first("/scene/future_collisions")["events"]),
             counterfactuals={(r["object"], r["intervention"]): events(r["events"]) for r in cf},
-            observed_frames=cat["observed_frames"])
+            observed_frames=cat["observed_frames"], grazes=events(src.first("/scene/grazes")["events"]),
+            counterfactual_grazes={(r["object"], r["intervention"]): events(r["grazes"]) for r in cf if r["grazes"]})

@@ -26,17 +26,17 @@ def cfg():
 
 @pytest.fixture(scope="module")
 def simulated(tmp_path_factory, cfg):
-    """The tiny split simulated and annotated in a fresh data dir (real physics, real truth)."""
+    """The tiny split simulated, rendered and annotated in a fresh data dir (real physics, real truth)."""
     root = tmp_path_factory.mktemp("data")
     r = Runner(cfg, cfg.split("tiny"), root, echo=lambda *a: None)
-    r.run("simulate", list(range(3)))
-    r.run("annotate", list(range(3)))
+    for stage in ("simulate", "render", "annotate"):
+        r.run(stage, list(range(3)))
     return root
 
 
 def test_oracle_on_the_hand_built_scene(cfg):
     scene = known_scene()
-    qs = scene_candidates(scene, cfg["labels"], seed=5)
+    qs = scene_candidates(scene, cfg["labels"], seed=5)[0]
     assert {q["family"] for q in qs} >= {"velocity_start", "faster_start", "direction_start",
                                          "floating_start", "collide_pair", "predict_pair", "counterfactual_fast"}
     for q in qs:
@@ -72,7 +72,7 @@ def test_references_are_unique_and_shortened():
     assert ("shape",) not in {a for a, _ in references(scene, red_bus)}
     assert ("shape",) in {a for a, _ in references(scene, sedan)} and ("color",) not in {
         a for a, _ in references(scene, sedan)}
-    qs = scene_candidates(scene, Config.load()["labels"], seed=1)
+    qs = scene_candidates(scene, Config.load()["labels"], seed=1)[0]
     assert not any("Objects filter_attributes[school_bus] unique" in q["program"] for q in qs)
     assert not any(re.search(r"the school bus|the red (object|vehicle)", q["text"]) for q in qs)
 
@@ -80,14 +80,14 @@ def test_references_are_unique_and_shortened():
 def test_twins_are_never_referred_to(cfg):
     scene = known_scene()
     scene.objects[5].color = "yellow"       # two yellow school buses: neither can be named
-    qs = scene_candidates(scene, cfg["labels"], seed=1)
+    qs = scene_candidates(scene, cfg["labels"], seed=1)[0]
     assert qs and not any("school_bus" in q["program"] or "yellow" in q["program"] for q in qs)
 
 
 def test_no_question_on_ambiguous_labels(cfg):
     scene = known_scene()
     scene.velocity[:, 1] *= 5.2 / 3.0      # the yellow bus at 5.2 m/s: between slow and fast
-    qs = scene_candidates(scene, {**cfg["labels"], "start_frame": 0}, seed=1)
+    qs = scene_candidates(scene, {**cfg["labels"], "start_frame": 0}, seed=1)[0]
     about_bus = [q for q in qs if q["family"] == "velocity_start" and "yellow" in q["program"]]
     assert about_bus == []
     assert not any(q["family"] == "velocity_filter_attribute" for q in qs)   # a filter touches every object
@@ -147,18 +147,19 @@ def test_select_balances_every_family_and_is_deterministic(cfg):
 
 
 def test_candidates_are_deterministic(cfg):
-    a = scene_candidates(known_scene(), cfg["labels"], seed=3)
-    assert a == scene_candidates(known_scene(), cfg["labels"], seed=3)
-    b = scene_candidates(known_scene(), cfg["labels"], seed=4)
+    a = scene_candidates(known_scene(), cfg["labels"], seed=3)[0]
+    assert a == scene_candidates(known_scene(), cfg["labels"], seed=3)[0]
+    b = scene_candidates(known_scene(), cfg["labels"], seed=4)[0]
     assert [(q["family"], q["answer"]) for q in a] == [(q["family"], q["answer"]) for q in b]
 
 
 def test_stage_outputs_are_byte_identical_and_cached(simulated, cfg, tmp_path):
-    shutil.copytree(simulated / "tiny" / "sim", tmp_path / "tiny" / "sim")
+    for stage_dir in ("sim", "video"):
+        shutil.copytree(simulated / "tiny" / stage_dir, tmp_path / "tiny" / stage_dir)
     r = Runner(cfg, cfg.split("tiny"), tmp_path, echo=lambda *a: None)
     assert r.run("annotate", list(range(3))).items() >= {"ran": 3, "cached": 0}.items()
     for name in ["questions.parquet", "labels/000000.parquet", "labels/000001.events.parquet",
-                 "labels/000002.questions.parquet"]:
+                 "labels/000002.questions.parquet", "labels/000001.dropped.parquet"]:
         assert (tmp_path / "tiny" / name).read_bytes() == (simulated / "tiny" / name).read_bytes()
     assert r.run("annotate", list(range(3))).items() >= {"ran": 0, "cached": 3}.items()
 
@@ -167,3 +168,7 @@ def test_stats_tables(simulated, cfg):
     text = annotate.stats(Store(simulated, "tiny"), cfg)
     assert "| family | type | questions | majority answer | answers |" in text
     assert "| factual |" in text and "per video" in text
+    # the truth audit: contact gaps, copy-factual accuracy per counterfactual family, drops per reason
+    assert "| events | gap median | gap p90 |" in text and "masks > 1 px apart" in text
+    assert "| family | questions | copy-factual accuracy |" in text
+    assert "| reason | candidates |" in text and "not visible" in text

@@ -93,9 +93,9 @@ def test_static_counterfactual_freezes_the_object(params):
     changed = intervene(bodies, 1, "static", params)
     tr = simulate(changed, params, 120)
     np.testing.assert_allclose(tr.position[:, 1], tr.position[:1, 1].repeat(120, 0), atol=1e-3)
-    assert counterfactual(bodies, 1, "static", params, 120) == []
+    assert counterfactual(bodies, 1, "static", params, 120).collisions == []
     # Making the struck car fast instead (it faces +x, away from the striker) still ends in no collision.
-    assert counterfactual(bodies, 0, "fast", params, 120) == []
+    assert counterfactual(bodies, 0, "fast", params, 120).collisions == []
 
 
 def test_interventions(params):

@@ -196,7 +196,7 @@ def heldout_questions(tmp_path_factory) -> list[dict]:
     (d / "split.toml").write_text(f"[splits.{HELDOUT}]\nseed = 987654\nscenes = 3\n")
     cfg = Config.load(d / "split.toml")
     runner = Runner(cfg, cfg.split(HELDOUT), d / "data", echo=lambda *_: None)
-    for stage in ("simulate", "annotate"):
+    for stage in ("simulate", "render", "annotate"):
         runner.run(stage, [0, 1, 2])
     return [q for s in runner.split.scene_names()
             for q in read_questions(runner.store.path("annotate", s, ".questions.parquet"))]

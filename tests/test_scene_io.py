@@ -3,7 +3,7 @@ import pytest
 
 from dynclevr.artifacts import ArtifactError
 from dynclevr.mcapio import McapOut
-from dynclevr.scene import Scene4D
+from dynclevr.scene import SCENE_VERSION, Scene4D
 
 
 def test_scene_roundtrip_and_bytes(tiny_scene, tmp_path):
@@ -27,5 +27,5 @@ def test_corrupt_and_wrong_version(tiny_scene, tmp_path):
         Scene4D.read(p)
     with McapOut(p, "dynclevr.scene4d", 99):
         pass
-    with pytest.raises(ArtifactError, match="v99, expected dynclevr.scene4d v1"):
+    with pytest.raises(ArtifactError, match=f"v99, expected dynclevr.scene4d v{SCENE_VERSION}"):
         Scene4D.read(p)

@@ -137,6 +137,7 @@ def test_truth_content_and_schemas(simulated):
             if isinstance(msg, dict):
                 name = {"/scene/camera": "Camera", "/scene/objects": "ObjectCatalogue", "/scene/states": "FrameStates",
                         "/scene/collisions": "CollisionEvents", "/scene/future_collisions": "CollisionEvents",
+                        "/scene/grazes": "CollisionEvents",
                         "/scene/counterfactuals": "CounterfactualOutcomes"}[topic]
                 _conforms(msg, json.loads((SCHEMA_DIR / f"dynclevr.{name}.json").read_text()), topic)
         assert counts["/tf"] == counts["/scene/vehicles"] == counts["/scene/states"] == 60
@@ -180,7 +181,8 @@ def test_corrupt_and_wrong_version_files_give_clear_errors(simulated, tmp_path):
     with McapOut(path, SCENE_SCHEMA, SCENE_VERSION + 1):
         pass
     with pytest.raises(ArtifactError,
-                       match=r"v2, expected dynclevr.scene4d v1: rerun `dynclevr simulate --split t --force`"):
+                       match=rf"v{SCENE_VERSION + 1}, expected dynclevr.scene4d v{SCENE_VERSION}: rerun `dynclevr "
+                             r"simulate --split t --force`"):
         simulate.stats(store, cfg)
 
 

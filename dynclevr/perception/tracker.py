@@ -486,7 +486,7 @@ class SceneParser:
         events = ContactEvents(self.physics.merge_frames, masses, self.physics.min_impact_speed)
         for t, touched in self._collisions(tracks, masses, T):
             events.add(t, touched)
-        collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()]
+        collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()[0]]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=collisions, observed_frames=self.observed)
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+from collections import Counter
 from functools import lru_cache
 from itertools import permutations
 from pathlib import Path
@@ -20,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from dynclevr.config import ConfigError
-from dynclevr.questions.programs import Executor, ProgramError
+from dynclevr.questions.programs import AmbiguousLabel, Executor, ProgramError
 from dynclevr.scene import INTERVENTIONS, Scene4D, SceneObject
 
 TEMPLATES_PATH = Path(__file__).with_name("templates.json")
@@ -95,19 +96,23 @@ def _changes(obj: SceneObject, intervention: str) -> bool:
     return obj.category == "aeroplane" and not obj.floating
 
 
-def _conditions_hold(fam: dict, scene: Scene4D, objs: dict[str, SceneObject], start: int) -> bool:
-    idx = {o.id: i for i, o in enumerate(scene.objects)}
-    frames = scene.observed_frames if "observed" in fam["where"] else scene.num_frames
-    for o in objs.values():
-        if not scene.visible[:frames, idx[o.id]].any():
-            return False
-        if "visible_start" in fam["where"] and not scene.visible[start, idx[o.id]]:
-            return False
+def _applies(fam: dict, objs: dict[str, SceneObject]) -> bool:
     x = objs.get("X")
     if "aeroplane_X" in fam["where"] and x.category != "aeroplane":
         return False
-    if "changes_X" in fam["where"] and not _changes(x, fam["intervention"]):
-        return False
+    return "changes_X" not in fam["where"] or _changes(x, fam["intervention"])
+
+
+def _seen_enough(fam: dict, scene: Scene4D, objs: dict[str, SceneObject], start: int, seen: np.ndarray) -> bool:
+    """Every object is seen in the frames the question is about: at the start for start questions, within the
+    observed frames for predictive and counterfactual ones, at some frame otherwise."""
+    idx = {o.id: i for i, o in enumerate(scene.objects)}
+    frames = scene.observed_frames if "observed" in fam["where"] else scene.num_frames
+    for o in objs.values():
+        if not seen[:frames, idx[o.id]].any():
+            return False
+        if "visible_start" in fam["where"] and not seen[start, idx[o.id]]:
+            return False
     return True
 
 
@@ -126,17 +131,27 @@ def _bindings(fam: dict, scene: Scene4D):
             yield dict(zip(names, objs)), dict(slots)
 
 
-def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int) -> list[dict]:
-    """Every answerable question of one scene, its answer from the truth by the executor in strict mode."""
+def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarray | None = None
+                     ) -> tuple[list[dict], Counter]:
+    """Every answerable question of one scene, its answer from the truth by the executor in strict mode, and the
+    bindings dropped per (family, reason). `seen` [T, N]: the objects a viewer sees (default: centres in view).
+
+    A counterfactual question also records the answer of copying the video's own outcome ("factual"), against
+    which `select` balances."""
+    seen = scene.visible if seen is None else seen
     rng = np.random.default_rng(seed)
-    ex = Executor(scene, labels_cfg, strict=True)
+    ex = Executor(scene, labels_cfg, strict=True, seen=seen)
+    copy = Executor(scene, labels_cfg, copy_factual=True)
     refs = {o.id: references(scene, o) for o in scene.objects}
     slots = templates()["slots"]
-    out = []
+    out, dropped = [], Counter()
     start = labels_cfg["start_frame"]
     for fam in templates()["families"]:
         for objs, slot_keys in _bindings(fam, scene):
-            if any(not refs[o.id] for o in objs.values()) or not _conditions_hold(fam, scene, objs, start):
+            if any(not refs[o.id] for o in objs.values()) or not _applies(fam, objs):
+                continue
+            if not _seen_enough(fam, scene, objs, start, seen):
+                dropped[(fam["name"], "not visible")] += 1
                 continue
             if fam.get("unordered") and rng.random() < 0.5:
                 objs = dict(zip(objs, reversed(list(objs.values()))))
@@ -152,11 +167,16 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int) -> list[dict]:
             program = _fill(fam["program"], values, "program")
             try:
                 answer = ex.run(program)
+            except AmbiguousLabel as e:
+                dropped[(fam["name"], e.reason)] += 1
+                continue
             except ProgramError:
                 continue
+            factual = copy.run(program) if fam["type"] == "counterfactual" else ""
             out.append({"id": "", "scene": scene.name, "type": fam["type"], "subtype": fam["subtype"],
-                        "family": fam["name"], "text": text, "program": program, "answer": answer})
-    return out
+                        "family": fam["name"], "text": text, "program": program, "answer": answer,
+                        "factual": factual})
+    return out, dropped
 
 
 # ---- split-level selection --------------------------------------------------------------------------------------
@@ -166,8 +186,9 @@ def check_annotate_cfg(cfg: dict) -> dict:
         v = cfg.get(k)
         if not isinstance(v, int) or isinstance(v, bool) or v < 1:
             raise ConfigError(f"'annotate.{k}' = {v!r} must be a positive integer")
-    if not 0.5 <= cfg.get("max_answer_share", 0) <= 1:
-        raise ConfigError(f"'annotate.max_answer_share' = {cfg.get('max_answer_share')!r} must lie in [0.5, 1]")
+    for k in ("max_answer_share", "max_copy_share"):
+        if not 0.5 <= cfg.get(k, 0) <= 1:
+            raise ConfigError(f"'annotate.{k}' = {cfg.get(k)!r} must lie in [0.5, 1]")
     return cfg
 
 
@@ -187,10 +208,15 @@ def balanced_counts(counts: dict[str, int], max_share: float) -> dict[str, int]:
     return {a: 0 for a in counts}
 
 
+def _kind(r: dict) -> str:
+    """What per-scene picking spreads over: the answer, and for counterfactuals whether it differs from the video's."""
+    return r["answer"] + ("|same" if r.get("factual") == r["answer"] else "|differs" if r.get("factual") else "")
+
+
 def _round_robin(rows: list[dict], cap: int, rng: np.random.Generator) -> list[dict]:
     by_answer: dict[str, list[dict]] = {}
     for r in rows:
-        by_answer.setdefault(r["answer"], []).append(r)
+        by_answer.setdefault(_kind(r), []).append(r)
     queues = [[group[i] for i in rng.permutation(len(group))] for _, group in sorted(by_answer.items())]
     queues = [queues[i] for i in rng.permutation(len(queues))]
     out = []
@@ -199,6 +225,30 @@ def _round_robin(rows: list[dict], cap: int, rng: np.random.Generator) -> list[d
             if q and len(out) < cap:
                 out.append(q.pop(0))
     return out
+
+
+def _balance(rows: list[tuple], max_share: float, max_copy: float, rng: np.random.Generator) -> list[tuple]:
+    """The rows (scene, index, question) of one family to keep: no answer above max_share of them and, for
+    counterfactuals, no more than max_copy of them answered by copying the video's own outcome. Each pass only
+    drops rows (at random within a group), so alternating the two caps converges."""
+    while True:
+        counts: dict[str, int] = {}
+        for _, _, r in rows:
+            counts[r["answer"]] = counts.get(r["answer"], 0) + 1
+        quota = balanced_counts(counts, max_share)
+        kept = []
+        for answer in sorted(quota):
+            group = [row for row in rows if row[2]["answer"] == answer]
+            kept += [group[j] for j in sorted(rng.permutation(len(group))[:quota[answer]])]
+        same = [row for row in kept if row[2].get("factual") == row[2]["answer"]]
+        differ = sum(1 for row in kept if row[2].get("factual") not in ("", None, row[2]["answer"]))
+        allowed = math.floor(max_copy / (1 - max_copy) * differ + 1e-9) if max_copy < 1 else len(same)
+        if len(same) > allowed:
+            drop = {id(same[j]) for j in rng.permutation(len(same))[:len(same) - allowed]}
+            kept = [row for row in kept if id(row) not in drop]
+        if len(kept) == len(rows):
+            return sorted(kept, key=lambda row: (row[0], row[1]))
+        rows = sorted(kept, key=lambda row: (row[0], row[1]))
 
 
 def select(candidates: dict[str, list[dict]], cfg: dict, seed: int) -> list[dict]:
@@ -218,13 +268,7 @@ def select(candidates: dict[str, list[dict]], cfg: dict, seed: int) -> list[dict
     keep: set[tuple[str, int]] = set()
     for fam in family_names():
         rows = [(s, i, r) for s, i, r in picked if r["family"] == fam]
-        counts: dict[str, int] = {}
-        for _, _, r in rows:
-            counts[r["answer"]] = counts.get(r["answer"], 0) + 1
-        quota = balanced_counts(counts, c["max_answer_share"])
-        for answer in sorted(quota):
-            same = [(s, i) for s, i, r in rows if r["answer"] == answer]
-            keep.update(same[j] for j in sorted(rng.permutation(len(same))[:quota[answer]]))
+        keep.update((s, i) for s, i, _ in _balance(rows, c["max_answer_share"], c["max_copy_share"], rng))
     out, k = [], {}
     for s, i, r in sorted(picked, key=lambda p: (p[0], p[1])):
         if (s, i) in keep:

@@ -18,8 +18,8 @@ what the executor returns on the truth.
   internal engine force or decelerate due to friction" (paper 3.2), so gravity's pull on a falling plane is not
   "accelerating"; that is "not floating". Frames near a collision of the object are ambiguous (an impulse is not
   an engine).
-- floating: in the air (bottom of the box above float_height_above) with ~zero vertical acceleration; on the ground
-  or falling is "not floating".
+- floating: in the air (bottom of the box above float_height_above) with ~zero vertical acceleration; on the ground,
+  falling, or resting on another vehicle (a plane that fell onto a bus) is "not floating".
 """
 
 from __future__ import annotations
@@ -39,8 +39,9 @@ AMBIGUOUS = "ambiguous"
 _ORDERED = [("static_below", "slow_above"), ("slow_above", "slow_below"), ("slow_below", "fast_above"),
             ("steady_below", "accelerating_above"), ("ground_height_below", "float_height_above"),
             ("float_az_below", "fall_az_above")]
-_POSITIVE = ("static_below", "direction_ratio", "compare_margin", "float_az_below")
-_INTS = ("stable_frames", "accel_window", "collision_guard_frames", "collision_merge_frames", "start_frame")
+_POSITIVE = ("static_below", "direction_ratio", "compare_margin", "float_az_below", "support_gap")
+_INTS = ("stable_frames", "accel_window", "collision_guard_frames", "collision_merge_frames", "start_frame",
+         "min_visible_pixels", "predict_margin")
 
 
 def check_labels_cfg(cfg: dict) -> dict:
@@ -141,6 +142,23 @@ class Labels:
         }
 
 
+def _resting_on_another(position: np.ndarray, scene: Scene4D, gap: float) -> np.ndarray:
+    """[T, N] bool: the object's bottom is within `gap` above another object's top, over its footprint (bounding
+    circles of the horizontal extents: orientation-free, and the same on truth and estimate)."""
+    T, N = position.shape[:2]
+    out = np.zeros((T, N), bool)
+    size = np.array([o.size for o in scene.objects], float).reshape(N, 3)
+    reach = np.hypot(size[:, 0], size[:, 1]) / 2
+    for i in range(N):
+        for j in range(N):
+            if i == j:
+                continue
+            above = (position[:, i, 2] - size[i, 2] / 2) - (position[:, j, 2] + size[j, 2] / 2)
+            over = np.linalg.norm(position[:, i, :2] - position[:, j, :2], axis=-1) < max(reach[i], reach[j])
+            out[:, i] |= over & (np.abs(above) < gap)
+    return out
+
+
 def compute_labels(scene: Scene4D, cfg: dict) -> Labels:
     c = check_labels_cfg(cfg)
     T, N = scene.num_frames, len(scene.objects)
@@ -183,10 +201,15 @@ def compute_labels(scene: Scene4D, cfg: dict) -> Labels:
     az = _window_rate(v[..., 2], c["accel_window"], dt)
     half_height = np.array([o.size[2] / 2 for o in scene.objects]).reshape(1, N)
     bottom = np.asarray(scene.position, float).reshape(T, N, 3)[..., 2] - half_height
+    # A plane that fell and came to rest on another vehicle is high up and still, yet not floating: it fell before
+    # and its bottom lies on another's top. (A floating plane never falls: its force cancels gravity.)
+    fell = np.maximum.accumulate(az < -c["fall_az_above"], axis=0)
+    supported = fell & _resting_on_another(np.asarray(scene.position, float).reshape(T, N, 3), scene,
+                                           c["support_gap"])
     floating = ((bottom > (c["ground_height_below"] + c["float_height_above"]) / 2)
-                & (np.abs(az) < (c["float_az_below"] + c["fall_az_above"]) / 2))
+                & (np.abs(az) < (c["float_az_below"] + c["fall_az_above"]) / 2)) & ~supported
     clear = (((bottom > c["float_height_above"]) & (np.abs(az) < c["float_az_below"]))
-             | (bottom < c["ground_height_below"]) | (az < -c["fall_az_above"]))
+             | (bottom < c["ground_height_below"]) | (az < -c["fall_az_above"]) | supported)
     floating_ambiguous = ~clear | near_collision
 
     return Labels([o.id for o in scene.objects], speed, velocity, velocity_ambiguous, direction, direction_ambiguous,

@@ -43,7 +43,16 @@ class ProgramError(DynclevrError):
 
 
 class AmbiguousLabel(ProgramError):
-    """Strict execution touched a label no question may be asked about."""
+    """Strict execution touched a label no question may be asked about; `reason` says which kind (REASONS)."""
+
+    def __init__(self, message: str, reason: str):
+        super().__init__(message)
+        self.reason = reason
+
+
+# Why question generation drops a binding (`dynclevr stats` counts them).
+REASONS = ("not visible", "ambiguous label", "start differs from frame 0", "similar speeds", "graze",
+           "collision out of view", "collision at the cut")
 
 
 # ---- types ------------------------------------------------------------------------------------------------------
@@ -75,13 +84,18 @@ class ObjectSet(tuple):
 
 class CollisionEventSet(tuple):
     """Collisions, by frame. `about` names the objects it was filtered by, so that `unique` can resolve "the
-    moment X collides with Y" in an estimate that missed the contact: the moment they come closest."""
+    moment X collides with Y" in an estimate that missed the contact: the moment they come closest.
+
+    `unclear` holds (reason, contact) for the contacts a viewer could not call either way (strict mode only):
+    grazes (they touch, but too gently to be a collision), collisions hidden from view, and predicted collisions so
+    soon after the observed frames that the pair already touches there. A question touching one is not asked."""
 
     about: tuple
+    unclear: tuple
 
-    def __new__(cls, events=(), about: tuple = ()):
+    def __new__(cls, events=(), about: tuple = (), unclear: tuple = ()):
         s = super().__new__(cls, events)
-        s.about = about
+        s.about, s.unclear = about, tuple(unclear)
         return s
 
 
@@ -119,16 +133,44 @@ def op(name: str, *inputs, returns, args: frozenset | None = None, arg_required:
 class World:
     """A Scene4D with its labels; truth and estimate alike."""
 
-    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False):
-        self.scene, self.strict = scene, strict
+    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False, seen: np.ndarray | None = None,
+                 copy_factual: bool = False):
+        """`seen` [T, N]: what strict mode may ask about (default: the scene's visibility); annotate passes what
+        the rendered masks show. `copy_factual`: every counterfactual run is replaced by the video's own
+        collisions (the answer of a model that ignores the intervention; annotate balances against it)."""
+        self.scene, self.strict, self.copy_factual = scene, strict, copy_factual
         self.labels: Labels = compute_labels(scene, labels_cfg)
+        self.seen = scene.visible if seen is None else seen
         self.margin = labels_cfg["compare_margin"]
         self.start_frame = min(labels_cfg["start_frame"], scene.num_frames - 1)
         merge = labels_cfg["collision_merge_frames"]
-        self.events = CollisionEventSet(merge_events(scene.collisions, merge))
-        self.future_events = CollisionEventSet(future_events(scene, merge))
-        self.counterfactuals = {k: CollisionEventSet(merge_events(v, merge)) for k, v in scene.counterfactuals.items()}
         self._index = {o.id: i for i, o in enumerate(scene.objects)}
+        events = merge_events(scene.collisions, merge)
+        future = future_events(scene, merge)
+        runs = {k: merge_events(v, merge) for k, v in scene.counterfactuals.items()}
+        if not strict:
+            self.events, self.future_events = CollisionEventSet(events), CollisionEventSet(future)
+            self.counterfactuals = {k: CollisionEventSet(v) for k, v in runs.items()}
+            return
+        def why(reason, events):
+            return [(reason, e) for e in events]
+
+        grazes = merge_events(scene.grazes, merge)
+        hidden = [e for e in events if not self._both_seen(e)]
+        self.events = CollisionEventSet([e for e in events if e not in hidden],
+                                        unclear=why("collision out of view", hidden) + why("graze", grazes))
+        # A predicted collision within predict_margin frames of the cut is all but seen: its pair touches already.
+        soon = scene.observed_frames + labels_cfg["predict_margin"]
+        self.future_events = CollisionEventSet(
+            [e for e in future if e.frame >= soon],
+            unclear=why("collision at the cut", [e for e in future if e.frame < soon])
+            + why("graze", [e for e in grazes if e.frame >= scene.observed_frames]))
+        self.counterfactuals = {
+            k: CollisionEventSet(v, unclear=why("graze", merge_events(scene.counterfactual_grazes.get(k, []), merge)))
+            for k, v in runs.items()}
+
+    def _both_seen(self, e: Collision) -> bool:
+        return all(oid in self._index and self.seen[e.frame, self._index[oid]] for oid in (e.a, e.b))
 
     def closest(self, a: int, b: int) -> tuple[int, float]:
         """(frame, distance) of the closest approach of two objects' centres while both are in view."""
@@ -148,14 +190,19 @@ class World:
         if not 0 <= t < self.scene.num_frames:
             raise ProgramError(f"frame {t} is outside the scene's {self.scene.num_frames} frames")
         i = self._index[oid]
-        if self.strict and not self.scene.visible[t, i]:
-            raise AmbiguousLabel(f"object {oid} is out of view at frame {t} ({what})")
+        if self.strict and not self.seen[t, i]:
+            raise AmbiguousLabel(f"object {oid} is out of view at frame {t} ({what})", "not visible")
         return t, i
 
     def _label(self, values, ambiguous, oid: int, t: int, what: str):
         cell = self._cell(oid, t, what)
         if self.strict and ambiguous[cell]:
-            raise AmbiguousLabel(f"{what} of object {oid} at frame {t} is ambiguous")
+            raise AmbiguousLabel(f"{what} of object {oid} at frame {t} is ambiguous", "ambiguous label")
+        if self.strict and t == self.start_frame and np.any(values[:t + 1, cell[1]] != values[cell]):
+            # "At the start" must agree with the first frame (a plane spawned at rest and falling is "static" at
+            # frame 0 and "slow" at the start frame).
+            raise AmbiguousLabel(f"{what} of object {oid} changes between frame 0 and the start",
+                                 "start differs from frame 0")
         return values[cell]
 
     def velocity(self, oid: int, t: int) -> str:
@@ -173,9 +220,14 @@ class World:
         return bool(self._label(self.labels.floating, self.labels.floating_ambiguous, oid, t, "floating"))
 
     def speed_difference(self, a: int, b: int, t: int) -> float:
-        d = float(self.labels.speed[self._cell(a, t, "speed")] - self.labels.speed[self._cell(b, t, "speed")])
+        speed = self.labels.speed
+        d = float(speed[self._cell(a, t, "speed")] - speed[self._cell(b, t, "speed")])
         if self.strict and abs(d) < self.margin:
-            raise AmbiguousLabel(f"objects {a} and {b} move at similar speeds at frame {t}")
+            raise AmbiguousLabel(f"objects {a} and {b} move at similar speeds at frame {t}", "similar speeds")
+        if self.strict and t == self.start_frame and np.any(
+                (speed[:t + 1, self._index[a]] - speed[:t + 1, self._index[b]]) * d <= 0):
+            raise AmbiguousLabel(f"objects {a} and {b} change order of speed between frame 0 and the start",
+                                 "start differs from frame 0")
         return d
 
 
@@ -205,11 +257,19 @@ def start(w: World) -> FrameID:
 
 @op("filter_collision", CollisionEventSet, Object, returns=CollisionEventSet)
 def filter_collision(w: World, events: CollisionEventSet, obj: Object) -> CollisionEventSet:
-    return CollisionEventSet((e for e in events if obj in (e.a, e.b)), events.about + (int(obj),))
+    return CollisionEventSet((e for e in events if obj in (e.a, e.b)), events.about + (int(obj),),
+                             (u for u in events.unclear if obj in (u[1].a, u[1].b)))
+
+
+def _clear(w: World, events: CollisionEventSet) -> None:
+    if w.strict and events.unclear:
+        reason, e = events.unclear[0]
+        raise AmbiguousLabel(f"objects {e.a} and {e.b} touch at frame {e.frame}: {reason}", reason)
 
 
 @op("get_all_col_partners", CollisionEventSet, Object, returns=ObjectSet)
 def get_all_col_partners(w: World, events: CollisionEventSet, obj: Object) -> ObjectSet:
+    _clear(w, CollisionEventSet(unclear=[u for u in events.unclear if obj in (u[1].a, u[1].b)]))
     partners = sorted({e.b if e.a == obj else e.a for e in events if obj in (e.a, e.b)})
     # Non-partners miss by more than any filter can, nearest first: an estimate that missed the contact still
     # names the object that came closest.
@@ -328,7 +388,7 @@ def _counterfactual(intervention: str):
         events = w.counterfactuals.get((int(obj), intervention))
         if events is None:
             raise ProgramError(f"no counterfactual run of object {obj} with '{intervention}'")
-        return events
+        return w.events if w.copy_factual else events
     return run
 
 
@@ -346,6 +406,8 @@ COUNTERFACTUAL_OPS = {"static": "Counterfactual_static", "slow": "Counterfactual
 
 @op("unique", (ObjectSet, CollisionEventSet), returns=(Object, Collision))
 def unique(w: World, items: tuple):
+    if isinstance(items, CollisionEventSet):
+        _clear(w, items)
     if len(items) != 1 and not w.strict:
         if isinstance(items, ObjectSet) and items.misses:
             pool = items if items else items.misses
@@ -363,6 +425,8 @@ def unique(w: World, items: tuple):
 
 @op("exist", (ObjectSet, CollisionEventSet), returns=bool)
 def exist(w: World, items: tuple) -> bool:
+    if isinstance(items, CollisionEventSet):
+        _clear(w, items)
     return len(items) > 0
 
 
@@ -412,8 +476,9 @@ def answer_word(value) -> str:
 class Executor:
     """Runs many programs on one scene (its labels are computed once)."""
 
-    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False):
-        self.world = World(scene, labels_cfg, strict)
+    def __init__(self, scene: Scene4D, labels_cfg: dict, strict: bool = False, seen: np.ndarray | None = None,
+                 copy_factual: bool = False):
+        self.world = World(scene, labels_cfg, strict, seen, copy_factual)
 
     def run(self, program: str | list[str]) -> str:
         stack: list = []

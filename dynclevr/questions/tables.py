@@ -3,6 +3,7 @@
 - labels/<scene>.parquet            dynclevr.labels: one row per (frame, object); "ambiguous" where no question is asked
 - labels/<scene>.events.parquet     dynclevr.events: merged collision events: observed, future, counterfactual
 - labels/<scene>.questions.parquet  dynclevr.questions: every candidate question of the scene (before balancing)
+- labels/<scene>.dropped.parquet    dynclevr.dropped: candidate questions not asked, per family and reason
 - questions.parquet (split level)   dynclevr.questions: the balanced questions, with ids "<scene>-<k>"
 """
 
@@ -14,7 +15,7 @@ import pyarrow as pa
 
 from dynclevr.artifacts import read_parquet, write_parquet
 
-LABELS_SCHEMA, LABELS_VERSION = "dynclevr.labels", 1
+LABELS_SCHEMA, LABELS_VERSION = "dynclevr.labels", 2
 LABELS = pa.schema([
     ("frame", pa.int32()), ("object", pa.int32()), ("speed", pa.float32()),
     ("velocity", pa.string()),        # static / slow / fast / ambiguous
@@ -22,17 +23,23 @@ LABELS = pa.schema([
     ("accel", pa.float32()),          # d|horizontal velocity|/dt, m/s^2
     ("accelerating", pa.string()),    # true / false / ambiguous
     ("floating", pa.string()),        # true / false / ambiguous
+    ("pixels", pa.int32()),           # the object's pixels in the rendered frame (visible: labels.min_visible_pixels)
 ])
 
-EVENTS_SCHEMA, EVENTS_VERSION = "dynclevr.events", 1
+EVENTS_SCHEMA, EVENTS_VERSION = "dynclevr.events", 2
 EVENTS = pa.schema([
-    ("kind", pa.string()),            # observed / future / counterfactual
+    ("kind", pa.string()),            # observed / future / counterfactual / graze (a touch too gentle to collide)
     ("target", pa.int32()),           # counterfactual: the changed object; else -1
     ("intervention", pa.string()),    # counterfactual: static / slow / fast / accelerating / floating; else ""
     ("frame", pa.int32()), ("a", pa.int32()), ("b", pa.int32()),
+    ("gap_m", pa.float32()),          # observed: metres between the two visual meshes at the frame; else NaN
+    ("gap_px", pa.float32()),         # observed: pixels between the two masks (0: touching; inf: one out of frame)
 ])
 
-QUESTIONS_SCHEMA, QUESTIONS_VERSION = "dynclevr.questions", 1
+DROPPED_SCHEMA, DROPPED_VERSION = "dynclevr.dropped", 1
+DROPPED = pa.schema([("family", pa.string()), ("reason", pa.string()), ("count", pa.int32())])
+
+QUESTIONS_SCHEMA, QUESTIONS_VERSION = "dynclevr.questions", 2
 QUESTION_FIELDS = [
     ("id", pa.string()),              # "<scene>-<k>"; "" in the per-scene candidates
     ("scene", pa.string()),
@@ -42,6 +49,7 @@ QUESTION_FIELDS = [
     ("text", pa.string()),
     ("program", pa.string()),         # postfix tokens, space-separated (dynclevr/questions/programs.py)
     ("answer", pa.string()),
+    ("factual", pa.string()),         # counterfactual: the answer of copying the video's own outcome; else ""
 ]
 QUESTIONS = pa.schema(QUESTION_FIELDS)
 

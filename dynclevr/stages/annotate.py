@@ -1,11 +1,17 @@
 """Stage annotate: language labels and questions from the truth (paper sections 3.2 and 3.4; REFERENCE.md section 1).
 
-Reads: `sim/<scene>.mcap` (the truth), pipeline.toml [labels] and [annotate], dynclevr/questions/templates.json.
+Reads: `sim/<scene>.mcap` (the truth), `video/<scene>.mcap` (its instance masks: what a viewer sees), pipeline.toml
+[labels] and [annotate], dynclevr/questions/templates.json.
 Writes per scene: `labels/<scene>.parquet` (per object and frame: velocity class, moving direction, accelerating,
-floating; "ambiguous" where no question is asked), `labels/<scene>.events.parquet` (merged collision events: observed,
-future, counterfactual) and `labels/<scene>.questions.parquet` (every candidate question with its program and the
-answer the executor gives on the truth). Split level: `questions.parquet`, answer-balanced per family
-(id, scene, type, subtype, family, text, program, answer).
+floating, pixels in view; "ambiguous" where no question is asked), `labels/<scene>.events.parquet` (merged collision
+events: observed with the visible gap between the pair, future, counterfactual, grazes),
+`labels/<scene>.questions.parquet` (every candidate question with its program, the answer the executor gives on
+the truth, and for counterfactuals the answer of copying the video's outcome) and `labels/<scene>.dropped.parquet`
+(candidates not asked, per family and reason). Split level: `questions.parquet`, answer-balanced per family
+(id, scene, type, subtype, family, text, program, answer, factual).
+
+Questions are asked only about what the video shows: objects with at least `labels.min_visible_pixels` pixels in the
+frames a question is about, collisions both of whose vehicles are seen, no pair that only grazes.
 """
 
 from __future__ import annotations
@@ -13,42 +19,59 @@ from __future__ import annotations
 from collections import Counter
 from pathlib import Path
 
+import numpy as np
 import pyarrow as pa
 
-from dynclevr.artifacts import Store, file_digest, write_parquet
+from dynclevr.artifacts import Store, file_digest, read_parquet, write_parquet
 from dynclevr.config import Config
 from dynclevr.pipeline import SceneJob, Stage
+from dynclevr.questions.evidence import mask_gap, mesh_gap, pixel_counts
 from dynclevr.questions.generate import TEMPLATES_PATH, family_names, scene_candidates, select
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
-from dynclevr.questions.tables import (EVENTS, EVENTS_SCHEMA, EVENTS_VERSION, LABELS, LABELS_SCHEMA, LABELS_VERSION,
-                                       QUESTIONS_SCHEMA, QUESTIONS_VERSION, read_questions, write_questions)
+from dynclevr.questions.tables import (DROPPED, DROPPED_SCHEMA, DROPPED_VERSION, EVENTS, EVENTS_SCHEMA, EVENTS_VERSION,
+                                       LABELS, LABELS_SCHEMA, LABELS_VERSION, QUESTIONS_SCHEMA, QUESTIONS_VERSION,
+                                       read_questions, write_questions)
 from dynclevr.scene import Scene4D
+from dynclevr.video import Video
 
-VERSION = 1
+VERSION = 2   # 2: visibility from the masks, grazes, the predictive margin, counterfactual balance
 QUESTIONS_FILE = "questions.parquet"
 # questions.parquet's schema, for its readers (answer, report, the question parser's training)
 __all__ = ["STAGE", "QUESTIONS_FILE", "QUESTIONS_SCHEMA", "QUESTIONS_VERSION", "stats"]
 
 
-def _events_table(scene: Scene4D, merge: int) -> pa.Table:
+def _events_table(scene: Scene4D, merge: int, masks: np.ndarray) -> pa.Table:
     runs = [("observed", -1, "", merge_events(scene.collisions, merge)),
-            ("future", -1, "", future_events(scene, merge))]
+            ("future", -1, "", future_events(scene, merge)),
+            ("graze", -1, "", merge_events(scene.grazes, merge))]
     runs += [("counterfactual", oid, iv, merge_events(ev, merge))
              for (oid, iv), ev in sorted(scene.counterfactuals.items())]
-    rows = [{"kind": kind, "target": target, "intervention": iv, "frame": e.frame, "a": e.a, "b": e.b}
-            for kind, target, iv, events in runs for e in events]
+    rows = []
+    for kind, target, iv, events in runs:
+        for e in events:
+            seen = kind == "observed"
+            rows.append({"kind": kind, "target": target, "intervention": iv, "frame": e.frame, "a": e.a, "b": e.b,
+                         "gap_m": mesh_gap(scene, e) if seen else float("nan"),
+                         "gap_px": mask_gap(masks[e.frame], e.a, e.b) if seen else float("nan")})
     return pa.Table.from_pylist(rows, schema=EVENTS)
 
 
 def run_scene(job: SceneJob) -> None:
     cfg = job.cfg
     scene = Scene4D.read(job.inputs["simulate"][0])
-    labels_path, events_path, questions_path = job.outputs
+    masks = Video.read(job.inputs["render"][0]).masks()
+    labels_path, events_path, questions_path, dropped_path = job.outputs
     labels = compute_labels(scene, cfg["labels"])
-    write_parquet(pa.Table.from_pydict(labels.rows(), schema=LABELS), labels_path, LABELS_SCHEMA, LABELS_VERSION)
-    write_parquet(_events_table(scene, cfg["labels"]["collision_merge_frames"]), events_path, EVENTS_SCHEMA,
+    pixels = pixel_counts(masks, [o.id for o in scene.objects])
+    rows = {**labels.rows(), "pixels": pixels.ravel().tolist()}   # rows are frame-major, like pixels
+    write_parquet(pa.Table.from_pydict(rows, schema=LABELS), labels_path, LABELS_SCHEMA, LABELS_VERSION)
+    write_parquet(_events_table(scene, cfg["labels"]["collision_merge_frames"], masks), events_path, EVENTS_SCHEMA,
                   EVENTS_VERSION)
-    write_questions(scene_candidates(scene, cfg["labels"], job.seed), questions_path)
+    seen = (pixels >= cfg["labels"]["min_visible_pixels"]) & scene.visible
+    candidates, dropped = scene_candidates(scene, cfg["labels"], job.seed, seen)
+    write_questions(candidates, questions_path)
+    write_parquet(pa.Table.from_pylist([{"family": f, "reason": r, "count": n} for (f, r), n in sorted(dropped.items())],
+                                       schema=DROPPED), dropped_path, DROPPED_SCHEMA, DROPPED_VERSION)
 
 
 def finalize(store: Store, cfg: Config, scenes: list[str]) -> list[Path]:
@@ -61,9 +84,9 @@ def finalize(store: Store, cfg: Config, scenes: list[str]) -> list[Path]:
 STAGE = Stage(
     name="annotate",
     version=VERSION,
-    inputs=("simulate",),
+    inputs=("simulate", "render"),
     params=lambda cfg: cfg.digest("labels", "annotate"),
-    outputs=(".parquet", ".events.parquet", ".questions.parquet"),
+    outputs=(".parquet", ".events.parquet", ".questions.parquet", ".dropped.parquet"),
     run_scene=run_scene,
     finalize=finalize,
     extra_inputs=lambda store, cfg: {"templates": file_digest(TEMPLATES_PATH)},
@@ -97,5 +120,53 @@ def stats(store: Store, cfg: Config) -> str:
         dist = ", ".join(f"{a} {c / n:.0%}" for a, c in answers.most_common()) if n else "-"
         majority = f"{answers.most_common(1)[0][1] / n:.0%}" if n else "-"
         rows.append([fam, kind, n, majority, dist])
-    out += [_table(["family", "type", "questions", "majority answer", "answers"], rows)]
-    return "\n".join(out)
+    out += [_table(["family", "type", "questions", "majority answer", "answers"], rows), ""]
+    scenes = [s for s in cfg.split(store.split).scene_names() if store.path("annotate", s, ".events.parquet").exists()]
+    return "\n".join(out + _truth_audit(store, cfg, scenes, qs))
+
+
+def _share(x) -> str:
+    return f"{np.mean(x):.0%}" if len(x) else "-"
+
+
+def _truth_audit(store: Store, cfg: Config, scenes: list[str], qs: list[dict]) -> list[str]:
+    """How far the truth agrees with what a viewer sees, and how much reasoning the questions need."""
+    events = [read_parquet(store.path("annotate", s, ".events.parquet"), EVENTS_SCHEMA, EVENTS_VERSION).to_pylist()
+              for s in scenes]
+    observed = [e for ev in events for e in ev if e["kind"] == "observed"]
+    gm = np.array([e["gap_m"] for e in observed], float)
+    gp = np.array([e["gap_px"] for e in observed], float)
+    gp = gp[np.isfinite(gp)]
+    out = ["### Contacts at collision events (visual meshes and rendered masks at the event frame)", ""]
+    if len(gm):
+        out += [_table(["events", "gap median", "gap p90", "gap > 10 cm", "gap > 25 cm", "both in frame",
+                        "mask gap median", "masks > 1 px apart", "masks > 2 px apart"],
+                       [[len(gm), f"{np.median(gm):.3f} m", f"{np.quantile(gm, 0.9):.3f} m", _share(gm > 0.1),
+                         _share(gm > 0.25), len(gp), f"{np.median(gp):.1f} px" if len(gp) else "-",
+                         _share(gp > 1), _share(gp > 2)]]), ""]
+    grazes = sum(e["kind"] == "graze" for ev in events for e in ev)
+    observed_frames = cfg["video"]["observed_frames"]
+    margin = np.array([e["frame"] - observed_frames for ev in events for e in ev if e["kind"] == "future"])
+    within = cfg["labels"]["predict_margin"]
+    out += [f"Grazes (touches too gentle to be collisions; no collision question about the pair): {grazes}. "
+            f"Future collisions: {len(margin)}, frames after the cut median "
+            f"{np.median(margin) if len(margin) else '-'}; {int((margin < within).sum())} start within "
+            f"`labels.predict_margin` = {within} frames of it and are never asked about.", ""]
+    cf = [q for q in qs if q["type"] == "counterfactual"]
+    fams = sorted({q["family"] for q in cf})
+    cands = [q for s in scenes for q in read_questions(store.path("annotate", s, ".questions.parquet"))
+             if q["type"] == "counterfactual"]
+    rows = [[f, sum(q["family"] == f for q in cf),
+             _share([q["factual"] == q["answer"] for q in cf if q["family"] == f]),
+             _share([q["factual"] == q["answer"] for q in cands if q["family"] == f])] for f in fams]
+    out += ["### Counterfactuals: accuracy of copying the video's own outcome (`annotate.max_copy_share` = "
+            f"{cfg['annotate']['max_copy_share']})", "",
+            _table(["family", "questions", "copy-factual accuracy", "before balancing (all candidates)"], rows), ""]
+    dropped = Counter()
+    for s in scenes:
+        for r in read_parquet(store.path("annotate", s, ".dropped.parquet"), DROPPED_SCHEMA,
+                              DROPPED_VERSION).to_pylist():
+            dropped[r["reason"]] += r["count"]
+    out += ["### Candidate questions dropped, per reason", "",
+            _table(["reason", "candidates"], [[r, n] for r, n in dropped.most_common()])]
+    return out

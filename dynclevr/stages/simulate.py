@@ -35,7 +35,7 @@ from dynclevr.mcapio import McapIn
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.scene import INTERVENTIONS, SCENE_SCHEMA, SCENE_VERSION, Scene4D, SceneObject
 
-VERSION = 2
+VERSION = 3   # 3: collision shapes that follow the meshes, a fresh world per run, grazes
 SPEED_CLASSES = ("static", "slow", "fast")
 OBJECTS_SCHEMA, OBJECTS_VERSION = "dynclevr.objects", 1
 SPAWN_GAP = 0.3          # metres of free space between spawned footprints
@@ -174,16 +174,19 @@ def simulate_scene(name: str, seed: int, cfg: Config) -> Scene4D:
     objects, bodies, camera = sample_scene(np.random.default_rng(seed), cfg)
     with World(bodies, params) as world:
         tr = simulate(bodies, params, frames, world=world)
-        cfs = {}
+        cfs, cf_grazes = {}, {}
         for i, o in enumerate(objects):
             for iv in INTERVENTIONS:
-                events = counterfactual(bodies, i, iv, params, frames, world=world)
-                if events is not None:
-                    cfs[(o.id, iv)] = events
+                run = counterfactual(bodies, i, iv, params, frames, world=world)
+                if run is not None:
+                    cfs[(o.id, iv)] = run.collisions
+                    if run.grazes:
+                        cf_grazes[(o.id, iv)] = run.grazes
     return Scene4D(name, params.fps, camera, objects, tr.position, tr.orientation, tr.velocity, tr.angular_velocity,
                    tr.acceleration, tr.engine, tr.floating, visibility(camera, tr.position),
                    collisions=tr.collisions, future_collisions=[c for c in tr.collisions if c.frame >= observed],
-                   counterfactuals=cfs, observed_frames=observed)
+                   counterfactuals=cfs, observed_frames=observed, grazes=tr.grazes,
+                   counterfactual_grazes=cf_grazes)
 
 
 def run_scene(job: SceneJob) -> None:

@@ -74,10 +74,10 @@ def predict(scene: Scene4D, params: PhysicsParams) -> tuple[list[Collision], dic
         with World(bodies, params) as world:
             for k, oid in enumerate(ids):
                 for iv in INTERVENTIONS:
-                    events = counterfactual(bodies, k, iv, params, scene.num_frames, world=world)
+                    run = counterfactual(bodies, k, iv, params, scene.num_frames, world=world)
                     # An intervention that changes nothing (the object already is static, say) leaves the video
                     # as it was seen: its outcome is the observed collisions.
-                    outcomes[(oid, iv)] = scene.collisions if events is None else _events(events, ids)
+                    outcomes[(oid, iv)] = scene.collisions if run is None else _events(run.collisions, ids)
     return future, outcomes
 
 
