@@ -23,6 +23,7 @@ from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
 SPLIT_ENTRY = "_split"
+WORKER_TASKS = 25   # scenes a pool worker runs before it is replaced
 
 
 @dataclass(frozen=True)
@@ -166,14 +167,19 @@ class Runner:
         console = Console(stderr=True)
         with Progress(console=console, transient=True, disable=not console.is_terminal) as bar:
             task = bar.add_task(stage.name, total=len(todo))
-            if self.workers == 1 or len(todo) == 1:
+            # In this process when that is cheap and bounded: no spawn cost. Past WORKER_TASKS scenes, a pool even
+            # for one worker, so that native memory is returned (below).
+            if len(todo) == 1 or (self.workers == 1 and len(todo) <= WORKER_TASKS):
                 for job, key in todo:
                     stage.run_scene(job)
                     bar.advance(task)
                     yield job, key
                 return
-            with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
-                                     initializer=_worker_init) as pool:
+            # Workers are replaced every WORKER_TASKS scenes: pybullet keeps about 1 MB per connection and the
+            # TinyRenderer tens of MB per scene after disconnecting, so a long-lived worker of a 1,000-scene split
+            # would grow by gigabytes.
+            with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"), initializer=_worker_init,
+                                     max_tasks_per_child=WORKER_TASKS) as pool:
                 futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in todo}
                 try:
                     # In completion order, so every scene done is recorded even when a later one fails.

@@ -21,6 +21,7 @@ import math
 import platform
 import time
 from concurrent.futures import ProcessPoolExecutor
+from multiprocessing import get_context
 from pathlib import Path
 
 import cv2
@@ -243,13 +244,10 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
     if todo:
         echo(f"train detector: making {len(todo)} shard(s) of {per} scenes x {fpv} frames (split {split.name})")
         jobs = [(cfg.data, split, Path(data_dir), s, per, fpv) for s in todo]
-        if workers > 1:
-            with ProcessPoolExecutor(workers) as pool:
-                for k, _ in enumerate(pool.map(_shard_job, jobs)):
-                    echo(f"  shard {k + 1}/{len(todo)}")
-        else:
-            for k, job in enumerate(jobs):
-                _shard_job(job)
+        # One fresh process per shard, even for one worker: pybullet's renderer keeps tens of MB per scene after
+        # disconnecting, so one process making dozens of shards grows until the machine runs out of memory.
+        with ProcessPoolExecutor(max(1, workers), mp_context=get_context("spawn"), max_tasks_per_child=1) as pool:
+            for k, _ in enumerate(pool.map(_shard_job, jobs)):
                 echo(f"  shard {k + 1}/{len(todo)}")
     return [shard_path(data_dir, split, s) for s in shards]
 
