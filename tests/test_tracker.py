@@ -78,3 +78,20 @@ def test_slope_of_a_linear_signal_is_exact():
     v = 2.0 + 1.5 * np.arange(12)[:, None] / FPS * np.array([1.0, -2.0, 0.0])
     np.testing.assert_allclose(slope(v, FPS), [1.5, -3.0, 0.0], atol=1e-9)
     assert math.isclose(float(slope(np.arange(5.0), 1)), 1.0)
+
+
+@pytest.mark.parametrize("falls", [True, False], ids=["falling", "floating"])
+def test_a_falling_plane_is_not_floating_at_the_start_and_a_floating_one_is(falls):
+    """With the prior, an aeroplane's floating is decided once from its measured heights: a plane falling from rest
+    is "not floating" at the start (the prior no longer holds it up), a floating one stays floating."""
+    from dynclevr.questions.labels import compute_labels
+
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    tr = simulate([Body("jet", (1.0, 2.0, 3.4), yaw_quaternion(0.5), (2.0, 0.0, 0.0), floating=not falls)], params, 40)
+    dets = _detections(tr.position[:, 0], 0.5, "jet", np.random.default_rng(2))
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((40, 1, 1, 3), np.uint8), "syn", dets)
+    labels = compute_labels(est, cfg["labels"])
+    start = cfg["labels"]["start_frame"]
+    assert bool(labels.floating[start, 0]) is not falls
+    assert bool(est.floating[start, 0]) is not falls

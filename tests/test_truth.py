@@ -166,3 +166,18 @@ def test_counterfactual_balance_caps_copying_the_video(cfg):
     chosen = [q for q in select(rows, cfg["annotate"], seed=1) if q["family"] == "counterfactual_static"]
     same = np.mean([q["answer"] == q["factual"] for q in chosen])
     assert len(chosen) > 20 and same <= cfg["annotate"]["max_copy_share"] + 1e-9
+
+
+def test_a_collision_shape_made_from_another_mesh_is_refused(tmp_path, monkeypatch):
+    good = collision.path("sedan").read_text().splitlines()
+    monkeypatch.setattr(collision, "DIR", tmp_path)
+    collision.load.cache_clear()
+    try:
+        (tmp_path / "sedan.obj").write_text("\n".join(["# mesh sha256 0000", *good[1:]]))
+        with pytest.raises(collision.CollisionShapeError, match="made from another mesh.*dynclevr.assets.collision"):
+            collision.load("sedan")
+        (tmp_path / "sedan.obj").unlink()
+        with pytest.raises(collision.CollisionShapeError, match="is missing"):
+            collision.load("sedan")
+    finally:
+        collision.load.cache_clear()

@@ -1,7 +1,7 @@
 """Dynamics attributes from the estimated trajectory (REFERENCE.md section 2.3), causal: frame t uses frames <= t.
 
 With the physics prior the velocity is the filter's (tracker.py) and the acceleration its `slope`; the engine is
-decided from `quadratic_acceleration` of the measurements. Without the prior (the paper's ablation), as follows.
+and an aeroplane's floating decided from a `QuadraticFit` of the measurements. Without the prior (the paper's ablation), as follows.
 
 The paper takes finite differences of the positions and smooths them with a moving average of 5 frames. With
 centimetres of pose noise per frame that gives velocities good to about half a metre per second, and accelerations
@@ -51,13 +51,25 @@ def _fit(t: np.ndarray, pos: np.ndarray, quadratic: bool) -> np.ndarray:
     return np.linalg.lstsq(A, pos, rcond=None)[0]
 
 
-def quadratic_acceleration(samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int) -> np.ndarray:
-    """The second derivative of a least-squares quadratic through (frame, position) samples; zeros with fewer
-    than `min_samples`."""
-    if len(samples) < min_samples:
-        return np.zeros(3)
-    t = np.array([f for f, _ in samples], float) / fps
-    return _fit(t - t.mean(), np.array([x for _, x in samples]), True)[2]
+class QuadraticFit:
+    """A least-squares quadratic through (frame, position) samples: its acceleration, and its velocity at any
+    frame. Fewer than `min_samples` samples: no fit (zero acceleration and velocity)."""
+
+    def __init__(self, samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int):
+        self.fps = fps
+        self.ok = len(samples) >= min_samples
+        self.centre, self.coef = 0.0, np.zeros((3, 3))
+        if self.ok:
+            t = np.array([f for f, _ in samples], float) / fps
+            self.centre = float(t.mean())
+            self.coef = _fit(t - self.centre, np.array([x for _, x in samples]), True)
+
+    @property
+    def acceleration(self) -> np.ndarray:
+        return self.coef[2]
+
+    def velocity(self, frame: int) -> np.ndarray:
+        return self.coef[1] + self.coef[2] * (frame / self.fps - self.centre)
 
 
 def slope(values: np.ndarray, fps: int) -> np.ndarray:

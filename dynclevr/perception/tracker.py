@@ -110,6 +110,7 @@ class Track:
     cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
     yaw_var: float = 0.0                             # ... and the variance of its heading
     engine_decided: bool | None = None               # the prior's engine, once decided
+    floating_decided: bool | None = None             # ... and an aeroplane's floating
     measured: list = field(default_factory=list)     # (frame, measured position) while the engine is undecided
     surprises: int = 0                               # consecutive measurements far outside the prediction
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
@@ -430,13 +431,32 @@ class SceneParser:
             # Its evidence is the measurements alone (the filter's velocity follows the prior's engine): the
             # forward acceleration of a quadratic fit to the measured positions, against engine_threshold.
             if k.engine_decided is None and (len(pos) >= p["fit_window"] or t == self.observed - 1):
-                fit_acc = dynamics.quadratic_acceleration(k.measured, self.fps, 2 * p["min_fit_frames"])
-                k.engine_decided = dynamics.engine_on(vel, fit_acc, quats[-1], p)
+                fit = dynamics.QuadraticFit(k.measured, self.fps, 2 * p["min_fit_frames"])
+                k.engine_decided = dynamics.engine_on(vel, fit.acceleration, quats[-1], p)
+                if category == "aeroplane" and fit.ok:
+                    self._decide_floating(k, fit, t)
                 k.measured = []
             k.engine.append(bool(k.engine_decided) and k.segment == 0)
         else:
             k.engine.append(dynamics.engine_on(vel, acc, quats[-1], p))
+        if k.floating_decided is not None:
+            acc = np.array([0.0, 0.0, 0.0 if k.floating_decided else -self.physics.gravity])
         k.floating.append(dynamics.floating(category, pos[-1, 2], size[2] / 2, acc, self.physics.gravity))
+
+    def _decide_floating(self, k: Track, fit: dynamics.QuadraticFit, t: int) -> None:
+        """Floating, like the engine, is a hidden state the prior drives: until decided an aeroplane is predicted
+        floating (held at its height), so the filter follows a fall only slowly and a falling plane reads as
+        floating at the start. Decided once from the measured heights' quadratic: falling when it accelerates
+        down by more than g/2; then the frames so far get the fit's vertical velocity and the prior falls."""
+        k.floating_decided = bool(fit.acceleration[2] > -self.physics.gravity / 2)
+        if k.floating_decided:
+            return
+        for j in range(len(k.vel)):
+            vz = float(fit.velocity(k.start + j)[2])
+            k.vel[j] = np.array([*k.vel[j][:2], vz])
+            k.fvels[j] = np.array([*k.fvels[j][:2], vz])
+        k.floating[:] = [False] * len(k.floating)
+        k.fvel = np.array([*k.fvel[:2], float(fit.velocity(t)[2])])
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 

@@ -5,8 +5,13 @@ slots; the program runs on the truth in strict mode, so a binding whose referenc
 an ambiguous label or an object out of view, is dropped, and the answer is the executor's own. Objects are named by
 colour and shape, or by fewer words where those already pick one object (CLEVR's variety), or by colour and category.
 
+"Out of view" is what the rendered masks show (annotate passes `seen`); strict mode also refuses collisions that
+graze, happen out of view or start right after the observed frames (programs.py); every refusal is counted per
+reason.
+
 Across the split (`select`): per scene and family a few questions with the answers taken in turn, then per family
-no answer above `max_answer_share` where the data allows. Every draw comes from a seeded generator.
+no answer above `max_answer_share` and, for counterfactuals, at most `max_copy_share` answered by copying the
+video's own outcome, where the data allows. Every draw comes from a seeded generator.
 """
 
 from __future__ import annotations

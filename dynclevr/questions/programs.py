@@ -19,8 +19,11 @@ The operations keep the paper's names. Added (and only these):
 
 A program that cannot run (a reference that matches no object or several, an input of the wrong type, a missing
 counterfactual run, a frame outside the scene) raises ProgramError: the answer stage counts these, never crashes.
-In strict mode (question generation on the truth) a label that is ambiguous, or asked of an object out of view,
-raises AmbiguousLabel, so no question is ever asked about it.
+In strict mode (question generation on the truth) a label that is ambiguous, asked of an object out of view, or at
+the start but different at frame 0, and a collision question touching an unclear contact (a graze, a collision out
+of view, a predicted one right after the observed frames), raise AmbiguousLabel with its reason, so no question is
+ever asked about them. Counterfactual programs can also run with every run replaced by the video's own collisions
+(`copy_factual`): the answer of a model that ignores the intervention.
 """
 
 from __future__ import annotations

@@ -21,7 +21,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 3
+VERSION = 4   # 4: an aeroplane's floating decided once, from the measured heights
 
 
 @lru_cache(maxsize=1)
