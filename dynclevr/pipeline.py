@@ -175,23 +175,26 @@ class Runner:
                     bar.advance(task)
                     yield job, key
                 return
-            # Workers are replaced every WORKER_TASKS scenes: pybullet keeps about 1 MB per connection and the
+            # A fresh pool every WORKER_TASKS scenes per worker: pybullet keeps about 1 MB per connection and the
             # TinyRenderer tens of MB per scene after disconnecting, so a long-lived worker of a 1,000-scene split
-            # would grow by gigabytes.
-            with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"), initializer=_worker_init,
-                                     max_tasks_per_child=WORKER_TASKS) as pool:
-                futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in todo}
-                try:
-                    # In completion order, so every scene done is recorded even when a later one fails.
-                    for fut in as_completed(futures):
-                        fut.result()
-                        bar.advance(task)
-                        yield futures[fut]
-                except BaseException:
-                    # Leaving the pool waits for its queue: without this a failure would surface only after
-                    # every other scene of the split had run.
-                    pool.shutdown(cancel_futures=True)
-                    raise
+            # would grow by gigabytes. (Not max_tasks_per_child: with it, Python 3.11's pool can hang once a worker
+            # retires.)
+            size = WORKER_TASKS * self.workers
+            for chunk in (todo[i:i + size] for i in range(0, len(todo), size)):
+                with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
+                                         initializer=_worker_init) as pool:
+                    futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in chunk}
+                    try:
+                        # In completion order, so every scene done is recorded even when a later one fails.
+                        for fut in as_completed(futures):
+                            fut.result()
+                            bar.advance(task)
+                            yield futures[fut]
+                    except BaseException:
+                        # Leaving the pool waits for its queue: without this a failure would surface only after
+                        # every other scene of the chunk had run.
+                        pool.shutdown(cancel_futures=True)
+                        raise
 
     def _current(self, stage: Stage, scene: str, index: int, manifest: Manifest, manifests, extra: dict) -> bool:
         """The scene's recorded output was made with today's params, inputs and version."""

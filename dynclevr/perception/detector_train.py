@@ -244,11 +244,14 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
     if todo:
         echo(f"train detector: making {len(todo)} shard(s) of {per} scenes x {fpv} frames (split {split.name})")
         jobs = [(cfg.data, split, Path(data_dir), s, per, fpv) for s in todo]
-        # One fresh process per shard, even for one worker: pybullet's renderer keeps tens of MB per scene after
-        # disconnecting, so one process making dozens of shards grows until the machine runs out of memory.
-        with ProcessPoolExecutor(max(1, workers), mp_context=get_context("spawn"), max_tasks_per_child=1) as pool:
-            for k, _ in enumerate(pool.map(_shard_job, jobs)):
-                echo(f"  shard {k + 1}/{len(todo)}")
+        # Fresh processes for every round of shards, even for one worker: pybullet's renderer keeps tens of MB per
+        # scene after disconnecting, so one process making dozens of shards grows until the machine runs out of
+        # memory. (Not max_tasks_per_child: with it, Python 3.11's pool can hang once a worker retires.)
+        size = max(1, workers)
+        for i in range(0, len(jobs), size):
+            with ProcessPoolExecutor(size, mp_context=get_context("spawn")) as pool:
+                for k, _ in enumerate(pool.map(_shard_job, jobs[i:i + size]), start=i):
+                    echo(f"  shard {k + 1}/{len(todo)}")
     return [shard_path(data_dir, split, s) for s in shards]
 
 
