@@ -13,6 +13,7 @@ def parse(video_path: str, threads: int) -> int:
     import torch
 
     from dynclevr.config import Config
+    from dynclevr.perception.collisions import CollisionModel
     from dynclevr.perception.detector_train import load_detector
     from dynclevr.perception.model import ParserModel
     from dynclevr.perception.tracker import parse_video
@@ -21,7 +22,7 @@ def parse(video_path: str, threads: int) -> int:
     torch.set_num_threads(threads)
     video = Video.read(Path(video_path))
     scene = parse_video(video.frames(), video.camera, ParserModel.load(), load_detector(), Config.load(),
-                        "bench")
+                        "bench", CollisionModel.load())
     return len(scene.objects)
 
 

@@ -13,6 +13,7 @@ from dynclevr.artifacts import ArtifactError
 from dynclevr.camera import Camera
 from dynclevr.config import Config
 from dynclevr.perception.features import FeatureNet
+from dynclevr.perception.collisions import CollisionModel
 from dynclevr.perception.detector_train import load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel
 from dynclevr.perception.neural_mesh import NeuralMeshes
@@ -170,10 +171,10 @@ def test_estimates_up_to_frame_30_ignore_later_frames(tiny):
     video = Video.read(r.store.path("render", "000000", ".mcap"))
     frames = video.frames()
     model, detector = ParserModel.load(DEFAULT_DIR), load_detector()
-    est = parse_video(frames, video.camera, model, detector, cfg, "000000")
+    est = parse_video(frames, video.camera, model, detector, cfg, "000000", CollisionModel.load())
     altered = frames.copy()
     altered[31:] = altered[31:][::-1] // 2 + 60          # later frames: another story entirely
-    alt = parse_video(altered, video.camera, model, detector, cfg, "000000")
+    alt = parse_video(altered, video.camera, model, detector, cfg, "000000", CollisionModel.load())
     assert est.objects, "the parser found nothing to compare"
     early = [i for i, o in enumerate(est.objects) if est.visible[:31, i].any()]
     assert [est.objects[i].shape for i in early] == [alt.objects[i].shape for i in early]

@@ -95,3 +95,31 @@ def test_a_falling_plane_is_not_floating_at_the_start_and_a_floating_one_is(fall
     start = cfg["labels"]["start_frame"]
     assert bool(labels.floating[start, 0]) is not falls
     assert bool(est.floating[start, 0]) is not falls
+
+
+def test_a_head_on_collision_is_found_at_its_frame_and_a_near_miss_is_not():
+    """Two cars simulated by the data's physics, seen through noisy detections: the collision classifier
+    (weights/collision/) reports the crash within 3 frames of the truth's event and nothing for cars that pass."""
+    from dynclevr.perception.collisions import CollisionModel
+    from dynclevr.questions.labels import merge_events
+
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    z = ground_height("sedan")
+    for lateral, crash in ((0.3, True), (4.0, False)):
+        bodies = [Body("sedan", (-4.0, 0.0, z), yaw_quaternion(0.0), (5.0, 0.0, 0.0)),
+                  Body("suv", (4.0, lateral, ground_height("suv")), yaw_quaternion(math.pi), (-5.0, 0.0, 0.0))]
+        tr = simulate(bodies, params, T)
+        truth = merge_events(tr.collisions, cfg["labels"]["collision_merge_frames"])
+        assert bool(truth) is crash
+        rng = np.random.default_rng(3)
+        per = [_detections(tr.position[:, i], yaw, b.shape, rng) for i, (b, yaw) in enumerate(zip(bodies, (0.0, math.pi)))]
+        dets = [a + b for a, b in zip(*per)]
+        est = SceneParser(ParserModel.load(), None, CAMERA, cfg, CollisionModel.load()).parse(
+            np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+        assert len(est.objects) == 2
+        events = merge_events(est.collisions, cfg["labels"]["collision_merge_frames"])
+        if crash:
+            assert len(events) == 1 and abs(events[0].frame - truth[0].frame) <= 3
+        else:
+            assert events == []

@@ -1,4 +1,4 @@
-"""`dynclevr train parser` and `dynclevr train qparser`: reproduce the shipped weights from the train split."""
+"""`dynclevr train parser | detector | collisions | qparser`: reproduce the shipped weights from the train split."""
 
 from __future__ import annotations
 
@@ -43,6 +43,17 @@ def register(app: typer.Typer) -> None:
             generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
             return
         train_detector(cfg, data_dir, out, workers, resume, steps, minutes, echo=typer.echo)
+
+    @train.command("collisions")
+    def collisions(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
+                   data_dir: Path = DataOpt, workers: int = WorkersOpt,
+                   out: Path = typer.Option(WEIGHTS_DIR / "collision", "--out")):
+        """Collision classifier: scene-parser runs on the split's videos against the truth's events."""
+        from dynclevr.config import Config
+        from dynclevr.perception.collision_train import train_collisions
+
+        cfg = Config.load(config)
+        train_collisions(cfg, data_dir, cfg.split(split), out, workers, echo=typer.echo)
 
     @train.command("qparser")
     def qparser(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

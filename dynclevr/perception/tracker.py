@@ -38,17 +38,17 @@ from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES, get_asset
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
-from dynclevr.perception import dynamics
+from dynclevr.perception import collisions, dynamics
 from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place
 from dynclevr.perception.pose import Evidence, fit
 from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler
-from dynclevr.physics import Body, ContactEvents, PhysicsParams, World
+from dynclevr.physics import Body, PhysicsParams, World
 from dynclevr.scene import Collision, Scene4D, SceneObject
 
-POSITIVE = ("overlap_tolerance", "contact_distance", "impact_frames", "impact_speed_change", "max_velocity_change", "reacquire",
+POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_frames",
             "maneuver_speed",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
@@ -112,11 +112,14 @@ class Track:
     engine_decided: bool | None = None               # the prior's engine, once decided
     floating_decided: bool | None = None             # ... and an aeroplane's floating
     measured: list = field(default_factory=list)     # (frame, measured position) while the engine is undecided
+    z: list = field(default_factory=list)            # the measured position per frame (NaN: no detection)
     surprises: int = 0                               # consecutive measurements far outside the prediction
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
     confirmed: int | None = None
     segment: int = 0                                 # the motion fit starts here (its last impact)
+    maneuver: int = 0                                # ... and the last change of motion the engine did not predict
+    moving: int = 0                                  # frames since its reported velocity was last 0
     end: int | None = None
 
     @property
@@ -132,15 +135,21 @@ class Track:
 
 
 class SceneParser:
-    def __init__(self, model: ParserModel, detector, camera: Camera, cfg: Config):
+    def __init__(self, model: ParserModel, detector, camera: Camera, cfg: Config,
+                 collision_model: collisions.CollisionModel | None = None):
+        """`collision_model` None: no collision events (the classifier's inputs are still in `rows`)."""
         self.model, self.detector, self.camera, self.cfg = model, detector, camera, cfg
+        self.collision_model = collision_model
         self.p = parser_params(cfg)
         self.physics = PhysicsParams.from_config(cfg)
+        # a sliding vehicle's deceleration: Bullet multiplies the two friction coefficients
+        self.friction_decel = self.physics.object_friction * self.physics.floor_friction * self.physics.gravity
         self.fps = int(cfg["video"]["fps"])
         self.observed = int(cfg["video"]["observed_frames"])
         self.gcam = GridCamera(camera)
         self.world: World | None = None
-        self.near: list[tuple[int, int, int]] = []    # (frame, track a, track b): hulls within contact_distance
+        self.candidates = collisions.Candidates()
+        self.rows: list = []                          # the collision classifier's inputs (collision_train.py)
         self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
     def detect(self, frames: np.ndarray) -> list[list[Detection]]:
@@ -220,7 +229,7 @@ class SceneParser:
     def _predict(self, t: int, active: list[Track]) -> tuple[np.ndarray, np.ndarray]:
         """mu_t = PE(S_{t-1}): poses [N, 6] and velocities [N, 3]. Records the collision candidates between
         confirmed tracks: the engine's contacts in the step (an impact also restarts the tracks' motion fits) and
-        the pairs whose hulls come within contact_distance."""
+        the gaps of the pairs whose hulls come within collisions.FAR."""
         density = self.physics.density
         # No estimated spin goes in: a heading error read as a turn would make the engine turn the body further,
         # and the next estimate starts there (a feedback loop); the engine turns bodies through contacts.
@@ -232,18 +241,18 @@ class SceneParser:
             self.world.set_bodies(bodies)
         confirmed = [k.confirmed is not None for k in active]
         overlap = set()
-        for (a, b), gap in self.world.gaps(self.p["contact_distance"]).items():
+        for (a, b), gap in self.world.gaps(collisions.FAR).items():
             if confirmed[a] and confirmed[b]:
-                self.near.append((t, active[a].id, active[b].id))
+                self.candidates.add_gap(t, active[a].id, active[b].id, gap)
             if gap < -self.p["overlap_tolerance"]:
                 overlap |= {a, b}
         touched = self.world.step_frame()
         s = self.world.states()
         for (a, b), (_, impulse) in touched.items():
             if confirmed[a] and confirmed[b]:
-                self.near.append((t, active[a].id, active[b].id))
-                ma, mb = active[a].mass(density), active[b].mass(density)
-                if impulse * (1 / ma + 1 / mb) >= self.physics.min_impact_speed:
+                dv = impulse * (1 / active[a].mass(density) + 1 / active[b].mass(density))
+                self.candidates.add_contact(t, active[a].id, active[b].id, dv)
+                if dv >= self.physics.min_impact_speed:
                     for k in (active[a], active[b]):
                         k.segment = t - k.start
         # Estimated hulls can overlap (a depth error), and the engine pushes overlapping bodies apart at any speed:
@@ -339,6 +348,7 @@ class SceneParser:
             if k.surprises >= p["maneuver_frames"]:
                 k.cov[3:, 3:] += p["maneuver_speed"] ** 2 * np.eye(3)
                 k.surprises = 0
+                k.maneuver = len(k.pose)
             else:
                 R = R * d2 / p["maneuver_chi2"]
             S = k.cov[:3, :3] + R
@@ -389,6 +399,7 @@ class SceneParser:
 
     def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int) -> None:
         k.pose.append(pose)
+        k.z.append(np.full(3, np.nan) if m is None else np.asarray(m.position, float).copy())
         k.quat.append(euler_to_quat(pose[3:]))
         k.seen.append(m is not None)
         k.scores.append(0.0 if m is None else m.detection.score if m.confidence is None else m.confidence)
@@ -413,14 +424,29 @@ class SceneParser:
             # min_fit_frames (a velocity averaged across the impact beats none, which would read as static)
             first = max(0, len(pos) - p["min_fit_frames"])
         vel, acc = dynamics.motion(pos[first:], self.fps, p["min_fit_frames"], p["min_velocity_frames"])
+        coasting = False
         if p["physics_prior"]:
             k.fvels.append(k.fvel.copy())
             vel = k.fvel.copy()
+            # Friction only slows a ground vehicle without an engine: between impacts its speed never rises (the
+            # filter's speed wanders with the detections' depth errors, and a rise reads as "accelerating"), and a
+            # moving one comes to rest at friction's deceleration, not by dropping under static_speed at once.
+            if p["monotone_speed"] and category != "aeroplane" and k.engine_decided is False and k.vel \
+                    and len(pos) - max(k.segment, k.maneuver) > p["min_fit_frames"]:
+                before = k.vel[-1][:2]
+                now, was = np.linalg.norm(vel[:2]), np.linalg.norm(before)
+                if now > was:
+                    vel[:2] *= was / now
+                elif now < p["static_speed"] and was > 0 and (coasting := k.moving >= 2 * p["min_fit_frames"]):
+                    vel[:2] = before / was * max(was - self.friction_decel / self.fps, 0.0)
             # since the last impact, at most fit_window frames, and not while a new track's velocity converges
             hist = np.array(k.fvels[max(first, p["min_fit_frames"]):])
             acc = dynamics.slope(hist, self.fps) if len(hist) >= 2 * p["min_fit_frames"] else np.zeros(3)
-        if np.linalg.norm(vel) < p["static_speed"]:
+        if np.linalg.norm(vel) < p["static_speed"] and not coasting:
             vel = np.zeros(3)
+        # frames it has been moving (or coasting to rest): a vehicle that moved that long and slows down is
+        # stopping, not a parked one whose estimate wandered
+        k.moving = k.moving + 1 if np.linalg.norm(vel) > 0 else 0
         k.vel.append(vel)
         k.acc.append(acc)
         k.ang.append(dynamics.angular_velocity(quats, self.fps, p["angular_window"]))
@@ -503,42 +529,31 @@ class SceneParser:
                 speed_class=dynamics.speed_class(float(np.linalg.norm(k.vel[a][:2])), self.physics.slow_speed,
                                                  self.physics.fast_speed),
                 confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
-        events = ContactEvents(self.physics.merge_frames, masses, self.physics.min_impact_speed)
-        for t, touched in self._collisions(tracks, masses, T):
-            events.add(t, touched)
-        collisions = [Collision(c.frame, c.a, c.b, c.point, c.impulse) for c in events.done()[0]]
+        # an event's impulse: the reduced mass times the change of the pair's relative (filtered) velocity
+        dv = collisions.FEATURES.index("filter_dv")
+        events = [Collision(t, a, b, (0.0, 0.0, 0.0),
+                            round(float(x[dv]) * masses[a] * masses[b] / (masses[a] + masses[b]), 6))
+                  for t, a, b, x in self._collisions(tracks, masses, T)]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
-                       collisions=collisions, observed_frames=self.observed)
+                       collisions=events, observed_frames=self.observed)
 
-
-    def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, dict]]:
-        """Collision events from the candidates (the engine's contacts while it predicted, hulls within
-        contact_distance) that the estimated trajectories confirm: the pair's relative velocity changed by an
-        impact's worth within impact_frames on either side (overlapping hulls from a depth error, grazes and near
-        misses change nothing). The frame is the first of the approach, so an event at frame t reads frames up to
-        t + impact_frames only."""
-        w = self.p["impact_frames"]
-        vel = {}
+    def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, int, int, np.ndarray]]:
+        """Collision events of the confirmed tracks (collisions.py): the classifier over the engine's contacts and
+        gaps while it predicted and the trajectories around them. Its inputs stay in `rows` for training."""
+        motion = {}
         for k in tracks:
-            v = np.full((T, 3), np.nan)
-            v[k.start:k.start + len(k.vel)] = np.array(k.fvels if self.p["physics_prior"] else k.vel)
-            vel[k.id] = v
-        out, last = [], {}
-        for t, a, b in sorted(set(self.near)):
-            run_start = last.get((a, b))
-            last[(a, b)] = t
-            if run_start is not None and t - run_start <= self.physics.merge_frames:
-                continue           # the same approach
-            if t - w < 0 or t + w >= T:
-                continue
-            before, after = vel[a][t - w] - vel[b][t - w], vel[a][t + w] - vel[b][t + w]
-            change = float(np.linalg.norm(after - before))
-            if np.isfinite(change) and change >= self.p["impact_speed_change"]:
-                reduced = masses[a] * masses[b] / (masses[a] + masses[b])
-                out.append((t, {(min(a, b), max(a, b)): ((0.0, 0.0, 0.0), change * reduced)}))
-        return out
+            sl = slice(k.start, k.start + len(k.pose))
+            position, measured, velocity = (np.full((T, 3), np.nan) for _ in range(3))
+            position[sl], measured[sl] = np.array(k.pose)[:, :3], np.array(k.z)
+            velocity[sl] = np.array(k.fvels if self.p["physics_prior"] else k.vel)
+            motion[k.id] = collisions.TrackMotion(position, measured, velocity, masses[k.id],
+                                                  SUBTYPES[k.shape][0] == "aeroplane")
+        self.rows = collisions.pair_features(motion, self.candidates, self.fps, T - 1)
+        if self.collision_model is None:
+            return []
+        return collisions.events(self.rows, self.collision_model, self.physics.merge_frames)
 
 
-def parse_video(frames: np.ndarray, camera: Camera, model: ParserModel, detector, cfg: Config,
-                name: str) -> Scene4D:
-    return SceneParser(model, detector, camera, cfg).parse(frames, name)
+def parse_video(frames: np.ndarray, camera: Camera, model: ParserModel, detector, cfg: Config, name: str,
+                collision_model: collisions.CollisionModel | None = None) -> Scene4D:
+    return SceneParser(model, detector, camera, cfg, collision_model).parse(frames, name)

@@ -2,7 +2,8 @@
 
 Reads: `video/<scene>.mcap` through `Video.frames()` and `.camera` only (RGB frames and the calibration: never the
 masks or depth that the same file carries for training and tests), the detection head (weights/detector/), the
-scene-parser weights (weights/parser/: feature CNN and neural meshes) and the asset catalogue. Params: [parser], [physics] (the engine of the prior), [video], [labels].
+scene-parser weights (weights/parser/: feature CNN and neural meshes), the collision classifier
+(weights/collision/) and the asset catalogue. Params: [parser], [physics] (the engine of the prior), [video], [labels].
 Writes: `parsed/<scene>.mcap`, a Scene4D of kind "estimate" in the truth's schema (objects with confidence,
 per-frame 4D states, collisions), so the executor runs on it unchanged; its /tf and /scene/vehicles channels show
 the estimate beside the truth in Foxglove. With parser.physics_prior = false (`--no-physics-prior`) this is the
@@ -13,6 +14,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+from dynclevr.perception.collisions import DEFAULT_DIR as COLLISION_DIR
+from dynclevr.perception.collisions import CollisionModel, collision_digest
 from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
 from dynclevr.perception.detector_train import detector_digest, load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel, manifest_digest
@@ -21,7 +24,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 4   # 4: an aeroplane's floating decided once, from the measured heights
+VERSION = 5   # 5: collisions from the learned classifier (weights/collision/)
 
 
 @lru_cache(maxsize=1)
@@ -29,12 +32,17 @@ def _model():
     return ParserModel.load(DEFAULT_DIR), load_detector(DETECTOR_DIR)
 
 
+@lru_cache(maxsize=1)
+def _collision_model():
+    return CollisionModel.load(COLLISION_DIR)
+
+
 def run_scene(job: SceneJob) -> None:
     import torch
 
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
-    scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene)
+    scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene, _collision_model())
     scene.write(job.outputs[0], kind="estimate")
 
 
@@ -47,5 +55,5 @@ STAGE = Stage(
     run_scene=run_scene,
     # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.
     extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "detector": detector_digest(DETECTOR_DIR),
-                                     "assets": catalogue_digest(cfg)},
+                                     "collision": collision_digest(COLLISION_DIR), "assets": catalogue_digest(cfg)},
 )
