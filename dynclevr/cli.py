@@ -13,7 +13,7 @@ import typer
 
 from dynclevr import DynclevrError
 from dynclevr.config import Config
-from dynclevr.pipeline import ORDER, Runner, parse_scenes
+from dynclevr.pipeline import ORDER, Runner, model_configs, parse_scenes
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="DynSuperCLEVR data generation and the NS-4DPhysics model, as a staged, cached pipeline.")
@@ -61,17 +61,19 @@ for _name in ORDER:
 def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
         config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
         ablation: bool = typer.Option(True, "--ablation/--no-ablation",
-                                      help="also run the model without the physics prior (the report's 2nd row)")):
+                                      help="also run the model without the physics prior and with the particle "
+                                           "filter (the report's other rows)")):
     """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer."""
     r = runner(split, config, data_dir, workers)
     indices = parse_scenes(scenes, r.split)
     for name in ORDER:
         r.run(name, indices, force)
     if ablation:
-        r = runner(split, config, data_dir, workers, no_physics_prior=True)
-        typer.echo("ablation without the physics prior:")
-        for name in ORDER[3:]:
-            r.run(name, indices, force)
+        for row, cfg in model_configs(r.cfg)[1:]:
+            typer.echo(f"{row}:")
+            r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
+            for name in ORDER[3:]:
+                r.run(name, indices, force)
 
 
 @app.command()

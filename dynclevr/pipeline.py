@@ -8,6 +8,7 @@ are written by `finalize` once every scene of the split is done.
 
 from __future__ import annotations
 
+import copy
 import importlib
 import os
 import time
@@ -61,11 +62,34 @@ class Stage:
 
 
 def model_variant(cfg: Config) -> str:
-    """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior, '...refine' with the
-    render-and-compare refinement where it is not the default."""
+    """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior, 'particle' with the
+    particle filter, '...refine' with the render-and-compare refinement where it is not the default."""
     p = cfg.data.get("parser", {})
-    parts = ([] if p.get("physics_prior", True) else ["noprior"]) + (["refine"] if p.get("refine", False) else [])
+    prior = p.get("physics_prior", True)
+    parts = (([] if prior else ["noprior"]) + (["particle"] if prior and p.get("filter") == "particle" else [])
+             + (["refine"] if p.get("refine", False) else []))
     return "-".join(parts)
+
+
+# The model's rows in `dynclevr run`, `report` and `eval-parser` (issue 11's ablation): the scene parser as
+# configured, without the physics prior (the paper's ablation), and with the particle filter (its future work).
+MODEL_ROWS = (("NS-4DPhysics (ours)", {}),
+              ("ours without physics prior", {"physics_prior": False}),
+              ("ours with the particle filter", {"filter": "particle"}))
+
+
+def model_configs(cfg: Config) -> list[tuple[str, Config]]:
+    """(row name, config) of each of MODEL_ROWS, once per distinct variant (a config whose default already is
+    one of them gives fewer rows)."""
+    out, seen = [], set()
+    for name, parser in MODEL_ROWS:
+        data = copy.deepcopy(cfg.data)
+        data.setdefault("parser", {}).update(parser)
+        c = Config(data)
+        if model_variant(c) not in seen:
+            seen.add(model_variant(c))
+            out.append((name, c))
+    return out
 
 
 def get_stage(name: str) -> Stage:

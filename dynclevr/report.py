@@ -1,5 +1,5 @@
-"""The paper's Table 1 measured on our data: NS-4DPhysics, its ablation without the physics prior, the oracle
-(truth scene + gold programs), the blind baseline, and the paper's reported rows for reference."""
+"""The paper's Table 1 measured on our data: NS-4DPhysics, its ablation without the physics prior, the particle
+filter, the oracle (truth scene + gold programs), the blind baseline, and the paper's reported rows for reference."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ from pathlib import Path
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import Store, read_parquet
 from dynclevr.config import Config
+from dynclevr.pipeline import model_configs, model_variant
 from dynclevr.questions.programs import Executor
 from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
@@ -59,8 +60,8 @@ def build(store: Store, cfg: Config) -> tuple[dict[str, tuple], dict]:
     questions = read_parquet(store.split_file("questions.parquet"), QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
     rows: dict[str, tuple] = {}
     extra = {"questions": len(questions), "videos": len({q["scene"] for q in questions})}
-    for name, variant in [("NS-4DPhysics (ours)", ""), ("ours without physics prior", "noprior")]:
-        answers = _answers(store, variant)
+    for name, model_cfg in model_configs(cfg):
+        answers = _answers(store, model_variant(model_cfg))
         if answers is None:
             continue
         rows[name] = tuple(table1(answers)[c][0] for c in COLUMNS)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from pathlib import Path
 from typing import Optional
 
@@ -17,23 +18,23 @@ def register(app: typer.Typer) -> None:
     def eval_parser(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt,
                     config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt):
         """Detection, identity, position, dynamics and collision metrics of parsed/ (and parsed-noprior/,
-        parsed-refine/: the detection head with render-and-compare) against sim/; runs simulate, render and
+        parsed-particle/, parsed-refine/: the detection head with render-and-compare) against sim/; runs simulate, render and
         parse-scene first where they are not cached. Writes <split>/parser_eval.md and the sub-type confusion PNG."""
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
         from dynclevr.perception.evaluate import confusion_png, markdown, scene_stats, summarise
-        from dynclevr.pipeline import Runner, parse_scenes
+        from dynclevr.config import Config
+        from dynclevr.pipeline import Runner, model_configs, parse_scenes
         from dynclevr.scene import Scene4D
 
         results = {}
-        variants = (("NS-4DPhysics", False, False), ("without physics prior", True, False),
-                    ("with render-and-compare", False, True))
-        for name, no_prior, refine in variants:
-            cfg = load_config(config, no_prior)
-            if refine:
-                if cfg["parser"]["refine"]:
-                    continue   # the default already refines: the first row is this one
-                cfg.data["parser"]["refine"] = True
+        base = load_config(config)
+        variants = model_configs(base)
+        if not base["parser"]["refine"]:   # (the default already refines: the first row is this one)
+            refine = copy.deepcopy(base.data)
+            refine["parser"]["refine"] = True
+            variants.append(("with render-and-compare", Config(refine)))
+        for name, cfg in variants:
             r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
             indices = parse_scenes(scenes, r.split)
             for stage in ("simulate", "render", "parse-scene"):
@@ -44,7 +45,7 @@ def register(app: typer.Typer) -> None:
                 stats.append(scene_stats(Scene4D.read(r.store.path("simulate", scene, ".mcap")),
                                          Scene4D.read(r.store.path("parse-scene", scene, ".mcap")), cfg["labels"]))
             results[name] = summarise(stats)
-            if name == "NS-4DPhysics":
+            if name == variants[0][0]:
                 confusion_png(stats, r.store.split_file("parser_confusion.png"))
         table = markdown(results)
         out = r.store.split_file(REPORT)

@@ -38,7 +38,7 @@ from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES, get_asset
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
-from dynclevr.perception import collisions, dynamics
+from dynclevr.perception import collisions, dynamics, particles
 from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
@@ -53,7 +53,7 @@ POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "maneuver_speed",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
-            "confirm_frames", "confirm_window", "merge_radius", "fit_window", "min_fit_frames", "min_velocity_frames",
+            "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
             "angular_window")
 
 
@@ -63,7 +63,9 @@ def parser_params(cfg: Config) -> dict:
     for key in POSITIVE:
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
-    for key in ("detect_threshold", "new_track_score"):
+    if p["filter"] not in ("single", "particle"):
+        raise ConfigError(f"'parser.filter' = {p['filter']!r} must be \"single\" (the paper's prior) or \"particle\"")
+    for key in ("detect_threshold", "new_track_score", "jump_rate", "outlier_rate"):
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
@@ -108,6 +110,7 @@ class Track:
     fvel: np.ndarray = field(default_factory=lambda: np.zeros(3))   # the filter's velocity
     fvels: list = field(default_factory=list)        # ... per frame
     cov: np.ndarray | None = None                    # the filter's 6x6 covariance of (position, velocity)
+    cloud: particles.ParticleCloud | None = None     # ... or its particles (parser.filter = "particle")
     yaw_var: float = 0.0                             # ... and the variance of its heading
     engine_decided: bool | None = None               # the prior's engine, once decided
     floating_decided: bool | None = None             # ... and an aeroplane's floating
@@ -140,6 +143,7 @@ class SceneParser:
         """`collision_model` None: no collision events (the classifier's inputs are still in `rows`)."""
         self.model, self.detector, self.camera, self.cfg = model, detector, camera, cfg
         self.collision_model = collision_model
+        self.rng = np.random.default_rng(cfg["parser"]["seed"])   # the particle filter's draws
         self.p = parser_params(cfg)
         self.physics = PhysicsParams.from_config(cfg)
         # a sliding vehicle's deceleration: Bullet multiplies the two friction coefficients
@@ -309,6 +313,8 @@ class SceneParser:
         cov[3:, 3:] = p["initial_speed"] ** 2 * np.eye(3)
         k.cov = cov
         k.yaw_var = p["measure_yaw"] ** 2
+        if p["physics_prior"] and p["filter"] == "particle":
+            k.cloud = particles.ParticleCloud.start(m.position, cov, p["particles"])
 
     def _correct(self, k: Track, mu: np.ndarray, mu_vel: np.ndarray, m: Measurement | None, t: int) -> None:
         p = self.p
@@ -318,10 +324,15 @@ class SceneParser:
         F_[:3, 3:] = dt * np.eye(3)
         Q = np.diag([p["process_position"] ** 2] * 3 + [p["process_velocity"] ** 2] * 3)
         k.cov = F_ @ k.cov @ F_.T + Q
+        if k.cloud is not None:
+            k.cloud.predict(mu[:3] - k.pose[-1][:3], mu_vel - k.fvel, dt, p, self.rng)
         if m is None:
             k.yaw_var += p["yaw_sigma"] ** 2
             # missed: coast on the prediction (the engine's, or constant velocity without the prior)
-            if prior:
+            if k.cloud is not None:
+                mean = k.cloud.estimate()
+                pose, k.fvel = np.concatenate([mean[:3], mu[3:]]), mean[3:]
+            elif prior:
                 pose, k.fvel = mu.copy(), mu_vel.copy()
             else:
                 pose = np.concatenate([k.pose[-1][:3] + k.vel[-1] / self.fps, k.pose[-1][3:]])
@@ -337,6 +348,30 @@ class SceneParser:
             self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), m, t)
             return
         R = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying else p["measure_along"])
+        if k.cloud is not None:
+            x = self._particle_update(k, z, R)
+        else:
+            x = self._kalman_update(k, mu, mu_vel, z, R)
+        k.fvel = x[3:]
+        self._correct_heading(k, mu, m, x, t)
+
+    def _particle_update(self, k: Track, z: np.ndarray, R: np.ndarray) -> np.ndarray:
+        """The particle filter's posterior mean (particles.py); a run of measurements that no hypothesis
+        explains still marks a change of motion (the friction rule of _dynamics must not hold the speed down)."""
+        p = self.p
+        if k.cloud.update(z, R, p["outlier_rate"], self.rng) > p["maneuver_chi2"]:
+            k.surprises += 1
+            if k.surprises >= p["maneuver_frames"]:
+                k.surprises = 0
+                k.maneuver = len(k.pose)
+        else:
+            k.surprises = 0
+        return k.cloud.estimate()
+
+    def _kalman_update(self, k: Track, mu: np.ndarray, mu_vel: np.ndarray, z: np.ndarray, R: np.ndarray
+                       ) -> np.ndarray:
+        """The single-particle prior's posterior: the Gaussian product of N(mu, P) and the measurement."""
+        p = self.p
         x = np.concatenate([mu[:3], mu_vel])
         innov = z - x[:3]
         S = k.cov[:3, :3] + R
@@ -357,7 +392,10 @@ class SceneParser:
         gain = k.cov[:, :3] @ np.linalg.inv(S)
         x = x + gain @ innov
         k.cov = (np.eye(6) - gain @ np.eye(3, 6)) @ k.cov
-        k.fvel = x[3:]
+        return x
+
+    def _correct_heading(self, k: Track, mu: np.ndarray, m: Measurement, x: np.ndarray, t: int) -> None:
+        p = self.p
         # heading: a moving vehicle that has not collided yet drives forwards, so a detection facing against its
         # motion is a front/back flip of the head
         yaw_m = m.yaw
@@ -482,7 +520,10 @@ class SceneParser:
             k.vel[j] = np.array([*k.vel[j][:2], vz])
             k.fvels[j] = np.array([*k.fvels[j][:2], vz])
         k.floating[:] = [False] * len(k.floating)
-        k.fvel = np.array([*k.fvel[:2], float(fit.velocity(t)[2])])
+        vz = float(fit.velocity(t)[2])
+        if k.cloud is not None:
+            k.cloud.shift_velocity(np.array([0.0, 0.0, vz - k.fvel[2]]))
+        k.fvel = np.array([*k.fvel[:2], vz])
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
