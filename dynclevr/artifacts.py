@@ -156,7 +156,8 @@ def rerun_hint(path: Path) -> str:
         stage, split = DIR_STAGES.get(kind), path.parent.parent.name
     if not stage:
         return "regenerate it"
-    return f"rerun `dynclevr {stage} --split {split}{' --no-physics-prior' if variant == 'noprior' else ''} --force`"
+    flag = {"noprior": " --no-physics-prior", "particle": " --particle-filter"}.get(variant, "")
+    return f"rerun `dynclevr {stage} --split {split}{flag} --force`"
 
 
 # ---- Parquet ---------------------------------------------------------------------------------------------------

@@ -27,26 +27,31 @@ DataOpt = typer.Option(Path("data"), "--data-dir", help="artifact root: <data-di
 NoPriorOpt = typer.Option(False, "--no-physics-prior",
                           help="the paper's ablation: the scene parser without the physics prior; model outputs "
                                "go to parsed-noprior/, future-noprior/, answers-noprior/")
+ParticleOpt = typer.Option(False, "--particle-filter",
+                           help="the scene parser with the particle filter (parser.filter = \"particle\"); model "
+                                "outputs go to parsed-particle/, future-particle/, answers-particle/")
 
 
-def load_config(config: Path | None, no_physics_prior: bool = False) -> Config:
+def load_config(config: Path | None, no_physics_prior: bool = False, particle_filter: bool = False) -> Config:
     cfg = Config.load(config)
     if no_physics_prior:
         cfg.data.setdefault("parser", {})["physics_prior"] = False
+    if particle_filter:
+        cfg.data.setdefault("parser", {})["filter"] = "particle"
     return cfg
 
 
 def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1,
-           no_physics_prior: bool = False) -> Runner:
-    cfg = load_config(config, no_physics_prior)
+           no_physics_prior: bool = False, particle_filter: bool = False) -> Runner:
+    cfg = load_config(config, no_physics_prior, particle_filter)
     return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
 
 
 def _stage_command(name: str):
     def command(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
                 config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
-                no_physics_prior: bool = NoPriorOpt):
-        r = runner(split, config, data_dir, workers, no_physics_prior)
+                no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt):
+        r = runner(split, config, data_dir, workers, no_physics_prior, particle_filter)
         r.run(name, parse_scenes(scenes, r.split), force)
 
     command.__doc__ = f"Run the {name} stage over a split (cached per scene)."
@@ -78,9 +83,9 @@ def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, forc
 
 @app.command()
 def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt,
-           no_physics_prior: bool = NoPriorOpt):
+           no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt):
     """Per stage: how many scenes are done (fresh), stale (inputs or params changed) or missing."""
-    r = runner(split, config, data_dir, no_physics_prior=no_physics_prior)
+    r = runner(split, config, data_dir, no_physics_prior=no_physics_prior, particle_filter=particle_filter)
     typer.echo(f"split {r.split.name}: {r.split.scenes} scenes under {r.store.root}")
     for name in ORDER:
         try:

@@ -34,7 +34,8 @@ def test_report_has_every_row_and_the_oracle_is_exact(run):
     data, _, cli = run
     text = cli("report")
     rows = {line.split("|")[1].strip(): line for line in text.splitlines() if line.startswith("| ")}
-    for name in ("NS-4DPhysics (ours)", "ours without physics prior", "oracle (truth scene, gold programs)",
+    for name in ("NS-4DPhysics (ours)", "ours without physics prior", "ours with the particle filter",
+                 "oracle (truth scene, gold programs)",
                  "blind (train-split majority per family)", "paper: NS-4DPhysics"):
         assert name in rows, text
     oracle = [c.strip() for c in rows["oracle (truth scene, gold programs)"].split("|")[2:-1]]
