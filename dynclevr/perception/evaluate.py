@@ -22,6 +22,7 @@ DUPLICATE_RADIUS = 1.5  # metres: an unmatched estimate this close to a matched 
 FLIP = np.deg2rad(135)  # a heading further off than this is a front/back flip
 MIN_VISIBLE = 5         # frames a true object must be in view to count as one to detect
 EVENT_TOLERANCE = 6     # frames between an estimated and a true collision of the same pair
+STRICT_EVENT_TOLERANCE = 3   # ... and issue 11's stricter bar
 
 
 def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
@@ -80,15 +81,17 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
     merge = labels_cfg["collision_merge_frames"]
     true_events = merge_events(truth.collisions, merge)
     est_events = [e for e in merge_events(est.collisions, merge) if e.a in to_truth and e.b in to_truth]
-    used, tp = set(), 0
-    for e in est_events:
-        pair = frozenset((to_truth[e.a], to_truth[e.b]))
-        for k, g in enumerate(true_events):
-            if k not in used and g.pair() == pair and abs(g.frame - e.frame) <= EVENT_TOLERANCE:
-                used.add(k)
-                tp += 1
-                break
-    s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)), events_tp=tp)
+    for key, tolerance in (("events_tp", EVENT_TOLERANCE), ("events_tp_strict", STRICT_EVENT_TOLERANCE)):
+        used, tp = set(), 0
+        for e in est_events:
+            pair = frozenset((to_truth[e.a], to_truth[e.b]))
+            for k, g in enumerate(true_events):
+                if k not in used and g.pair() == pair and abs(g.frame - e.frame) <= tolerance:
+                    used.add(k)
+                    tp += 1
+                    break
+        s[key] = tp
+    s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)))
     return s
 
 
@@ -111,6 +114,8 @@ def summarise(stats: list[dict]) -> dict:
     r = total("matched") / max(total("true_objects"), 1)
     ep = total("events_tp") / max(total("events_est"), 1)
     er = total("events_tp") / max(total("events_true"), 1)
+    sp = total("events_tp_strict") / max(total("events_est"), 1)
+    sr = total("events_tp_strict") / max(total("events_true"), 1)
     return {
         "scenes": len(stats),
         "detection_precision": p, "detection_recall": r, **per_cat,
@@ -125,6 +130,7 @@ def summarise(stats: list[dict]) -> dict:
         "floating_acc": mean("floating"),
         "collision_precision": ep, "collision_recall": er,
         "collision_f1": 2 * ep * er / (ep + er) if ep + er else 0.0,
+        "collision_f1_strict": 2 * sp * sr / (sp + sr) if sp + sr else 0.0,
     }
 
 
@@ -135,8 +141,10 @@ ROWS = [("detection_precision", "detection precision"), ("detection_recall", "de
         ("depth_bias_m", "depth bias along the ray (m)"), ("yaw_err_median_deg", "yaw error, median (deg)"),
         ("yaw_flip_rate", "yaw flips (> 135 deg)"),
         ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
-        ("floating_acc", "floating accuracy"), ("collision_precision", "collision-event precision"),
-        ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1")]
+        ("floating_acc", "floating accuracy"),
+        ("collision_precision", f"collision-event precision (frame within {EVENT_TOLERANCE})"),
+        ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1"),
+        ("collision_f1_strict", f"collision-event F1, frame within {STRICT_EVENT_TOLERANCE}")]
 
 
 def markdown(results: dict[str, dict]) -> str:
