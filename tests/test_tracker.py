@@ -150,3 +150,22 @@ def test_particle_filter_keeps_the_hypothesis_of_an_unseen_impact():
             assert abs(cloud.estimate()[3] - 4.0) < 0.5
     assert abs(cloud.estimate()[3]) < 0.5 and np.linalg.norm(cloud.estimate()[:3] - x) < 0.1
     assert math.isclose(cloud.weight.sum(), 1.0)
+
+
+def test_collision_classifier_trains_from_a_split_and_loads(tmp_path):
+    """`dynclevr train collisions` end to end on the tiny split: rows cached per video, weights and manifest that
+    load, held-out metrics at both tolerances; a second run reuses the rows and gives the same weights."""
+    from dynclevr.perception.collision_train import train_collisions
+    from dynclevr.perception.collisions import CollisionModel
+
+    cfg = Config.load()
+    out = tmp_path / "weights"
+    manifest = train_collisions(cfg, tmp_path / "data", cfg.split("tiny"), out, workers=1, echo=lambda *a: None)
+    assert sorted(p.name for p in (tmp_path / "data" / "tiny" / "collision_rows").iterdir()) == \
+        ["000000.npz", "000001.npz", "000002.npz"]
+    assert set(manifest["metrics_heldout"]) == {"within_3_frames", "within_6_frames"}
+    model = CollisionModel.load(out)
+    assert 0 < model.threshold < 1
+    first = (out / "collision.json").read_bytes()
+    train_collisions(cfg, tmp_path / "data", cfg.split("tiny"), out, workers=1, echo=lambda *a: None)
+    assert (out / "collision.json").read_bytes() == first

@@ -168,6 +168,9 @@ def train_collisions(cfg: Config, data_dir: Path, split: Split, out_dir: Path, w
     train, val = scenes[:-n_val], scenes[-n_val:]
     merge = cfg["labels"]["collision_merge_frames"]
     labelled = [labelled_contacts(s, merge) for s in train]
+    if not any(lab.any() for _, lab in labelled) or all(lab.all() for _, lab in labelled):
+        raise ConfigError(f"split {split.name!r} gives no collisions or nothing but collisions to learn from: "
+                          "train on a bigger split (`--split train`)")
     x = np.concatenate([np.stack([c[2] for c in cands]) for cands, _ in labelled if cands])
     y = np.concatenate([lab for _, lab in labelled])
     echo(f"train collisions: {len(x)} candidate contacts ({int(y.sum())} collisions) of {len(train)} videos")
