@@ -6,8 +6,9 @@ same whatever follows):
 1. detect: the detection head's peaks (detector.py);
 2. predict: the physics engine steps every track's last state one frame: mu_t = PE(S_{t-1}) (paper, eq. 4), the
    mean of the prior; its covariance grows by the process noise (what the engine does not know: a collision it
-   missed, an engine it does not model). The engine's contacts during the step are the collision events (also in
-   the ablation, whose estimate does not use mu_t);
+   missed, an engine it does not model). The engine's contacts and hull gaps during the step are the collision
+   candidates that collisions.py's classifier decides on (also in the ablation, whose estimate does not use mu_t);
+   with parser.filter = "particle" the prior is particles.py's particle filter instead of one Gaussian;
 3. associate: detections to tracks by Hungarian assignment on the image distance between a detection and the
    track's predicted centre, plus appearance (sub-type and colour evidence); a missed track coasts on its
    prediction and ends after `lost_frames` misses; a confident detection on no track's image starts one;
