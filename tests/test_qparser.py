@@ -1,21 +1,27 @@
 """The question parser: tokenizer and vocabulary, training on synthetic template questions, robustness to bad
-text, and the shipped weights' program exact match on questions of scenes they never saw."""
+text, held-out phrasings that training never sees, the reasons a question is unparsed, and the shipped weights on
+questions of scenes and wordings they never saw."""
 
 import dataclasses
 import json
 import random
+import re
 
 import pytest
 
 from dynclevr import WEIGHTS_DIR
 from dynclevr.artifacts import ArtifactError
 from dynclevr.config import Config, ConfigError
+from dynclevr.language.corpus import synthesize
+from dynclevr.language.evaluate import out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import QuestionParser, program_shape, well_formed
+from dynclevr.language.parse import QuestionParser, mentions, program_shape, well_formed
 from dynclevr.language.tokenize import tokenize
-from dynclevr.language.train import blind_baseline, fit, split_scenes, train_qparser
+from dynclevr.language.train import blind_baseline, fit, train_qparser
 from dynclevr.language.vocab import UNK_ID, Vocab
 from dynclevr.pipeline import Runner
+from dynclevr.questions.generate import templates
+from dynclevr.questions.phrasing import grammar
 from dynclevr.questions.tables import read_questions, write_questions
 
 COLORS = ["gray", "red", "blue", "green", "brown", "purple", "cyan", "yellow"]
@@ -52,13 +58,17 @@ def synthetic(n: int, seed: int, scenes: int = 20) -> tuple[list[str], list[list
 def small_params(**changes):
     p = qparser_params(Config.load())
     return dataclasses.replace(p, **{"embedding": 32, "hidden": 64, "lr": 0.01, "batch_size": 32, "epochs_max": 8,
-                                       "patience": 2, **changes})
+                                       "patience": 2, "max_unknown_words": 0, "min_confidence": 0.0, **changes})
+
+
+def pairs(n: int, seed: int):
+    texts, programs, _ = synthetic(n, seed)
+    return list(zip(texts, programs))
 
 
 @pytest.fixture(scope="module")
 def synthetic_fit():
-    texts, programs, scenes = synthetic(1500, seed=0)
-    return fit(texts, programs, scenes, small_params(), echo=lambda *_: None)
+    return fit(lambda k: pairs(1500, seed=10 + k), pairs(150, seed=0), small_params(), echo=lambda *_: None)
 
 
 def test_tokenize_splits_words_and_punctuation_and_unifies_spellings():
@@ -89,11 +99,41 @@ def test_bad_config_is_one_clear_error(tmp_path):
         qparser_params(Config.load(bad))
 
 
-def test_held_out_scenes_are_deterministic():
-    scenes = [f"{i:06d}" for i in range(200)]
-    held = split_scenes(scenes * 3, 0.1, seed=0)
-    assert len(held) == 20 and held == split_scenes(list(reversed(scenes)), 0.1, seed=0)
-    assert held != split_scenes(scenes, 0.1, seed=1)
+def _templates_of(text: str, program: str) -> str:
+    """A generated question with its object descriptions put back as <X>, <Y> (the phrasing it was drawn from)."""
+    chains = re.findall(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique", program)
+    text = text.lower()
+    for name, chain in zip(("<X>", "<Y>"), dict.fromkeys(chains)):
+        words = " ".join(w.replace("_", " ") for w in re.findall(r"\[([a-z_]+)\]", chain))
+        for noun in ("", " object", " vehicle"):
+            text = re.sub(rf"\bthe {words}{noun}\b(?! (object|vehicle)\b)", name.lower(), text)
+    return text
+
+
+def test_held_out_phrasings_never_reach_training():
+    """The pools are disjoint phrase for phrase, and every training question is a phrasing of the seen pool."""
+    g = grammar()
+    fams = {f["name"]: f for f in templates()["families"]}
+    lower, lower_held = {}, {}
+    for name, fam in fams.items():
+        lower[name] = {t.lower() for c in g.slot_combinations(fam) for t in g.phrasings(name, "seen", c)}
+        lower_held[name] = {t.lower() for c in g.slot_combinations(fam) for t in g.phrasings(name, "heldout", c)}
+        assert lower[name] and lower_held[name] and not lower[name] & lower_held[name], name
+        assert len(lower[name] | lower_held[name]) >= 20, name        # many phrasings per family
+    training = synthesize(600, seed=3, pool="seen")
+    found = 0
+    for e in training:
+        t = _templates_of(e.text, e.program)
+        assert t not in lower_held[e.family], (e.text, t)
+        found += t in lower[e.family]
+    assert found >= 0.95 * len(training)      # (the rest: a description that is also a word of the sentence)
+    assert all(_templates_of(e.text, e.program) not in lower[e.family]
+               for e in synthesize(300, seed=4, pool="heldout"))
+
+
+def test_mentions_read_multiword_subtypes_first():
+    assert mentions(tokenize("Does the school bus hit the red bus?")) == {"school_bus": 1, "red": 1, "bus": 1}
+    assert mentions(tokenize("Is the gray mountain bike static?")) == {"gray": 1, "mountain_bike": 1}
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):
@@ -120,6 +160,17 @@ def test_one_unknown_word(synthetic_fit):
     assert p.parse("Is the green sedan floating at the start?") == good
     assert p.parse("Is the gren sedan floating at the start?") == good
     assert p.parse("Is the magenta sedan floating at the start?") is None
+    assert p.analyse_batch(["Is the magenta sedan floating at the start?"])[0].reason == "unknown words: 'magenta'"
+
+
+def test_unparsed_questions_say_why(synthetic_fit):
+    p = dataclasses.replace(synthetic_fit.parser.params, max_unknown_words=1)
+    parser = QuestionParser(synthetic_fit.parser.model, synthetic_fit.parser.words, synthetic_fit.parser.programs,
+                            p, synthetic_fit.parser.shapes)
+    empty, tractor = parser.analyse_batch(["  ", "Is the green tractor floating at the start?"])
+    assert empty.program is None and empty.reason == "empty question"
+    # One unknown word is allowed, but then the program must not name an object the question does not.
+    assert tractor.program is None and "does not name" in tractor.reason
 
 
 def test_blind_baseline_majority_per_family():
@@ -145,10 +196,10 @@ def test_missing_or_broken_weights_are_one_clear_error(synthetic_fit, tmp_path):
 
 
 def test_training_is_deterministic(tmp_path):
-    texts, programs, scenes = synthetic(200, seed=3)
     params = small_params(epochs_max=2)
     for run in ("a", "b"):
-        fit(texts, programs, scenes, params, echo=lambda *_: None).parser.save(tmp_path / run)
+        fit(lambda k: pairs(200, seed=3 + k), pairs(20, seed=9), params, echo=lambda *_: None).parser.save(
+            tmp_path / run)
     for name in ("model.pt", "question_vocab.json", "program_vocab.json", "parser.json"):
         assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
 
@@ -164,7 +215,8 @@ def test_well_formed_checks_arguments_and_stack():
 def test_train_command_writes_loadable_weights_and_manifest(tmp_path):
     config = tmp_path / "qp.toml"
     config.write_text("[splits.qp-synthetic]\nseed = 5\nscenes = 10\n"
-                      "[qparser]\nembedding = 16\nhidden = 32\nepochs_max = 2\n")
+                      "[qparser]\nembedding = 16\nhidden = 32\nepochs_max = 1\nexamples_per_epoch = 300\n"
+                      "val_examples = 40\n")
     cfg = Config.load(config)
     texts, programs, scenes = synthetic(300, seed=4, scenes=10)
     families = [p[-1] for p in programs]
@@ -175,9 +227,10 @@ def test_train_command_writes_loadable_weights_and_manifest(tmp_path):
     manifest = train_qparser(cfg, tmp_path / "data", cfg.split("qp-synthetic"), tmp_path / "out",
                              echo=lambda *_: None)
     on_disk = json.loads((tmp_path / "out" / "manifest.json").read_text())
-    assert on_disk == manifest and manifest["questions"] == 300 and len(manifest["val_scenes"]) == 1
-    assert manifest["split"] == "qp-synthetic" and manifest["params"]["hidden"] == 32
-    assert {"questions_digest", "val_exact_match", "train_seconds", "torch"} <= set(manifest)
+    assert on_disk == manifest and manifest["blind_questions"] == 300 and manifest["examples_per_epoch"] == 300
+    assert manifest["blind_split"] == "qp-synthetic" and manifest["params"]["hidden"] == 32
+    assert {"questions_digest", "templates_digest", "val_exact_match", "heldout_phrasings_exact_match", "curve",
+            "train_seconds", "torch"} <= set(manifest)
     blind = json.loads((tmp_path / "out" / "blind.json").read_text())
     assert blind["overall"] == "true" and set(blind["majority"]) == set(families)
     loaded = QuestionParser.load(tmp_path / "out")
@@ -203,12 +256,37 @@ def heldout_questions(tmp_path_factory) -> list[dict]:
 
 
 def test_shipped_weights_parse_held_out_questions(heldout_questions):
+    """The dataset's texts draw from every phrasing, held-out ones included."""
     manifest = json.loads((WEIGHTS_DIR / "qparser" / "manifest.json").read_text())
     cfg = Config.load()
-    assert cfg.split(manifest["split"]).seed != 987654            # really scenes the parser never saw
+    assert cfg.split(manifest["blind_split"]).seed != 987654            # really scenes the parser never saw
     parser = QuestionParser.load()
     got = parser.parse_batch([q["text"] for q in heldout_questions])
     right = sum(g == q["program"].split() for g, q in zip(got, heldout_questions))
-    assert len(heldout_questions) >= 200 and right / len(heldout_questions) >= 0.99
-    assert manifest["val_exact_match"] >= 0.99
+    assert len(heldout_questions) >= 200 and right / len(heldout_questions) >= 0.97
+    assert manifest["val_exact_match"] >= 0.995 and manifest["heldout_phrasings_exact_match"] >= 0.95
     assert parser.parse("florp zzk blarg?") is None and parser.parse("") is None
+
+
+def test_shipped_weights_read_the_papers_and_peoples_wordings():
+    """The wordings issue 13 found broken: the authors' own and a casual one."""
+    parser = QuestionParser.load()
+    red, blue = "Objects filter_attributes[red] filter_attributes[sedan] unique", \
+        "Objects filter_attributes[blue] filter_attributes[bus] unique"
+    cases = {
+        "Is the red sedan's engine on at the beginning?": f"{red} start is_accelerating",
+        "Does the red sedan collide with the blue bus in the given frames?":
+            f"Events {red} filter_collision {blue} filter_collision exist",
+        "Did the red sedan crash into the blue bus?": f"Events {red} filter_collision {blue} filter_collision exist",
+        "is the red sedan moving fast at the beginning": f"{red} start is_moving_velocity[fast]",
+        "Is the red sedan moving faster than the blue bus when they collide?":
+            f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame faster_velocity",
+    }
+    for text, program in cases.items():
+        assert parser.parse(text) == program.split(), text
+
+
+def test_shipped_weights_leave_most_out_of_scope_questions_unparsed():
+    parses = QuestionParser.load().analyse_batch(out_of_scope())
+    assert all(p.reason for p in parses if p.program is None)
+    assert sum(p.program is None for p in parses) >= 0.8 * len(parses)

@@ -20,8 +20,10 @@ class QParserParams:
     batch_size: int
     seed: int
     max_decode_len: int
-    val_fraction: float
+    examples_per_epoch: int
+    val_examples: int
     max_unknown_words: int
+    min_confidence: float
 
     def to_dict(self) -> dict:
         return asdict(self)
@@ -34,13 +36,14 @@ class QParserParams:
             raise ConfigError(f"[qparser]: missing keys {sorted(missing)}, unknown keys {sorted(unknown)}: "
                               "compare with pipeline.toml")
         ints = {"embedding": 1, "hidden": 1, "layers": 1, "epochs_max": 1, "patience": 1, "batch_size": 1,
-                "seed": 0, "max_decode_len": 1, "max_unknown_words": 0}
+                "seed": 0, "max_decode_len": 1, "max_unknown_words": 0, "examples_per_epoch": 1,
+                "val_examples": 1}
         for key, low in ints.items():
             v = d[key]
             if not isinstance(v, int) or isinstance(v, bool) or v < low:
                 raise ConfigError(f"'qparser.{key}' = {v!r} must be an integer >= {low}")
         for key, lo, hi in [("dropout", 0, 0.9), ("word_dropout", 0, 0.5), ("lr", 1e-6, 1.0),
-                            ("val_fraction", 0.01, 0.5)]:
+                            ("min_confidence", 0, 1)]:
             v = d[key]
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not lo <= v <= hi:
                 raise ConfigError(f"'qparser.{key}' = {v!r} must be a number in [{lo}, {hi}]")

@@ -1,9 +1,14 @@
-"""`QuestionParser`: question text -> program tokens (postfix), or None ("unparsed", counted wrong), never a crash.
+"""`QuestionParser`: question text -> program tokens (postfix), or unparsed with a one-line reason, never a crash.
 
-A question is unparsed when it has more unknown words than `max_unknown_words` (a word one typo away from exactly
-one vocabulary word counts as that word, so a misspelt colour such as 'gren' reads as 'green'), or when decoding
-gives no well-formed program: no <eos> within `max_decode_len`, a special token, an operation sequence no training
-program has, or one that is not a valid postfix program of dynclevr/questions/programs.py's operations.
+A question is unparsed (counted wrong) rather than given a confident wrong program when
+- it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one vocabulary
+  word counts as that word, so a misspelt colour such as 'gren' reads as 'green');
+- decoding gives no well-formed program: no <eos> within `max_decode_len`, a special token, an operation sequence no
+  training program has, or not a valid postfix program of dynclevr/questions/programs.py's operations;
+- the decoding's probability is below `min_confidence` (a wording unlike any the parser learnt);
+- the program's object words disagree with the question's: every colour, sub-type and category the question names
+  must be a `filter_attributes` argument of the program and the reverse (a pointer check: the sequence model may
+  generalise a sentence, never invent or drop an object).
 """
 
 from __future__ import annotations
@@ -11,6 +16,8 @@ from __future__ import annotations
 import io
 import json
 import pickle
+from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 
 import torch
@@ -21,7 +28,7 @@ from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
-from dynclevr.questions.programs import OPS, ProgramError
+from dynclevr.questions.programs import ATTRIBUTE_VALUES, OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
 QUESTION_VOCAB = "question_vocab.json"
@@ -39,6 +46,36 @@ def operation(token: str) -> str:
 
 def program_shape(tokens: list[str]) -> str:
     return " ".join(operation(t) for t in tokens)
+
+
+# Attribute values as words: 'school_bus' is said 'school bus'; longest first, so 'school bus' is not read as 'bus'.
+_NAMES = sorted(((tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES), key=lambda kv: -len(kv[0]))
+
+
+def mentions(words: list[str]) -> Counter:
+    """The attribute values a question names: ['the', 'school', 'bus', ...] -> Counter({'school_bus': 1})."""
+    out, i = Counter(), 0
+    while i < len(words):
+        for name, value in _NAMES:
+            if tuple(words[i:i + len(name)]) == name:
+                out[value] += 1
+                i += len(name)
+                break
+        else:
+            i += 1
+    return out
+
+
+def program_mentions(tokens: list[str]) -> Counter:
+    return Counter(t[len("filter_attributes["):-1] for t in tokens if t.startswith("filter_attributes["))
+
+
+@dataclass(frozen=True)
+class Parse:
+    """A question's program (None: unparsed), why it is unparsed, and the decoding's probability."""
+    program: list[str] | None
+    reason: str = ""
+    confidence: float = 0.0
 
 
 class QuestionParser:
@@ -86,34 +123,59 @@ class QuestionParser:
         return self.parse_batch([text])[0]
 
     def parse_batch(self, texts: list[str]) -> list[list[str] | None]:
-        out: list[list[str] | None] = [None] * len(texts)
-        todo = [(i, ids) for i, t in enumerate(texts) if (ids := self._encode(t)) is not None]
+        return [p.program for p in self.analyse_batch(texts)]
+
+    def analyse_batch(self, texts: list[str]) -> list[Parse]:
+        out: list[Parse | None] = [None] * len(texts)
+        todo = []
+        for i, t in enumerate(texts):
+            words, why = self._words(t)
+            if why:
+                out[i] = Parse(None, why)
+            else:
+                todo.append((i, words))
         for start in range(0, len(todo), BATCH):
             chunk = todo[start:start + BATCH]
-            src, lens = pad_batch([ids for _, ids in chunk])
+            src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in words] for _, words in chunk])
             with torch.inference_mode(), one_thread():
                 decoded = self.model.greedy(src, lens, self.params.max_decode_len)
-            for (i, _), ids in zip(chunk, decoded):
-                out[i] = self._program(ids)
+            for (i, words), (ids, p) in zip(chunk, decoded):
+                out[i] = self._check(words, ids, p)
         return out
 
-    def _encode(self, text) -> list[int] | None:
-        if not isinstance(text, str):
-            return None
+    def _words(self, text) -> tuple[list[str], str]:
+        """The question's words, typos fixed; or a reason it cannot be parsed."""
+        if not isinstance(text, str) or not text.strip():
+            return [], "empty question"
         words = tokenize(text)
-        if not words or len(words) > MAX_WORDS:
-            return None
-        ids = [self.words.stoi[w] if w in self.words else self.words.stoi.get(self.words.closest(w), UNK_ID)
-               for w in words]
-        return ids if ids.count(UNK_ID) <= self.params.max_unknown_words else None
+        if not words:
+            return [], "empty question"
+        if len(words) > MAX_WORDS:
+            return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
+        words = [w if w in self.words else (self.words.closest(w) or w) for w in words]
+        unknown = [w for w in words if w not in self.words]
+        if len(unknown) > self.params.max_unknown_words:
+            return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
+        return words, ""
 
-    def _program(self, ids: list[int] | None) -> list[str] | None:
+    def _check(self, words: list[str], ids: list[int] | None, p: float) -> Parse:
         if not ids:
-            return None
+            return Parse(None, "no program came out of the decoder", p)
         tokens = self.programs.decode(ids)
-        if any(t in SPECIALS for t in tokens) or program_shape(tokens) not in self.shapes:
-            return None
-        return tokens if well_formed(tokens) else None
+        if any(t in SPECIALS for t in tokens) or program_shape(tokens) not in self.shapes or not well_formed(tokens):
+            return Parse(None, "the question matches no known question family", p)
+        if p < self.params.min_confidence:
+            return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
+        # As sets: a program names an object once per use ('when X collides with Y' uses X twice), a question once
+        # per mention ('when X and Y collide, is X ...').
+        said, used = set(mentions(words)), set(program_mentions(tokens))
+        if said != used:
+            extra, missing = sorted(used - said), sorted(said - used)
+            why = (f"the program would refer to {', '.join(extra)}, which the question does not name" if extra else
+                   f"the question names {', '.join(w.replace('_', ' ') for w in missing)}, which no question family "
+                   "here can use")
+            return Parse(None, why, p)
+        return Parse(tokens, "", p)
 
 
 def well_formed(tokens: list[str]) -> bool:

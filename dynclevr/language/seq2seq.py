@@ -74,22 +74,27 @@ class Seq2Seq(nn.Module):
         return self._readout(dec, memory, keys, mask)
 
     @torch.no_grad()
-    def greedy(self, src: torch.Tensor, src_len: torch.Tensor, max_len: int) -> list[list[int] | None]:
-        """Greedy decoding; per question the token ids before <eos>, or None when no <eos> came within max_len."""
+    def greedy(self, src: torch.Tensor, src_len: torch.Tensor, max_len: int) -> list[tuple[list[int] | None, float]]:
+        """Greedy decoding; per question (the token ids before <eos>, or None when no <eos> came within max_len;
+        the decoding's probability, the product of each chosen token's probability)."""
         memory, keys, mask, state = self.encode(src, src_len)
         B = src.shape[0]
         tok = torch.full((B, 1), SOS_ID, dtype=torch.long)
         steps = []
+        logp = torch.zeros(B)
         finished = torch.zeros(B, dtype=torch.bool)
         for _ in range(max_len + 1):   # + 1: room for the <eos> after a program of max_len tokens
             dec, state = self.decoder(self.tgt_embed(tok), state)
-            tok = self._readout(dec, memory, keys, mask).argmax(-1)          # (B, 1)
+            best = torch.log_softmax(self._readout(dec, memory, keys, mask)[:, 0], -1).max(-1)
+            tok = best.indices[:, None]
+            logp += torch.where(finished, torch.zeros(B), best.values)
             steps.append(tok[:, 0])
             finished |= tok[:, 0] == EOS_ID
             if bool(finished.all()):
                 break
         ids = torch.stack(steps, 1).tolist()
-        return [row[:row.index(EOS_ID)] if EOS_ID in row else None for row in ids]
+        return [(row[:row.index(EOS_ID)] if EOS_ID in row else None, float(torch.exp(lp)))
+                for row, lp in zip(ids, logp)]
 
 
 @contextlib.contextmanager

@@ -1,9 +1,12 @@
-"""`dynclevr train qparser`: the question parser (and the blind baseline) from a split's questions.parquet.
+"""`dynclevr train qparser`: the question parser from the phrasing grammar, and the blind baseline from a split.
 
-Questions of a deterministic 10% of the scenes are held out; training (teacher forcing, Adam) stops early on their
-program exact match, measured with the same `QuestionParser` the answer stage uses. Outputs, in `out_dir`:
-model.pt (state dict), question_vocab.json, program_vocab.json, parser.json (dims, params, program shapes),
-blind.json (the blind baseline) and manifest.json (data, digest, validation exact match, training time).
+The parser trains on questions drawn afresh every epoch from the grammar's *seen* phrasings with random objects
+(language/corpus.py; teacher forcing, Adam, word dropout); training stops early on the program exact match of more
+seen-phrasing questions drawn apart. Held-out phrasings never reach training or the choice of weights: their exact
+match is measured once, at the end, for the manifest (and by `dynclevr eval-qparser` on a split's truth).
+The blind baseline (the majority answer per family) comes from the split's questions.parquet.
+Outputs, in `out_dir`: model.pt (state dict), question_vocab.json, program_vocab.json, parser.json (dims, params,
+program shapes), blind.json and manifest.json (data, curve, exact match seen and held out, training time).
 """
 
 from __future__ import annotations
@@ -11,48 +14,38 @@ from __future__ import annotations
 import copy
 import time
 from collections import Counter, defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
-import numpy as np
 import torch
 from torch import nn
 
 from dynclevr import DynclevrError
 from dynclevr.artifacts import Store, file_digest, read_parquet, write_json_atomic
 from dynclevr.config import Config, Split
+from dynclevr.language.corpus import synthesize
 from dynclevr.language.params import QParserParams, qparser_params
 from dynclevr.language.parse import QuestionParser, program_shape
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import EOS_ID, PAD_ID, SOS_ID, UNK_ID, Vocab
+from dynclevr.questions.generate import TEMPLATES_PATH
 from dynclevr.questions.tables import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.annotate import QUESTIONS_FILE
 
 BLIND = "blind.json"
 MANIFEST = "manifest.json"
+Pairs = list[tuple[str, list[str]]]
 
 
 @dataclass
 class Fit:
     parser: QuestionParser
-    val_scenes: list[str]
-    train_questions: int
-    val_questions: int
     val_exact_match: float
     epochs: int
     seconds: float
-
-
-def split_scenes(scenes: list[str], fraction: float, seed: int) -> set[str]:
-    """The held-out scenes: a seeded draw of round(fraction x scenes), at least one, never all."""
-    names = sorted(set(scenes))
-    if len(names) < 2:
-        raise DynclevrError(f"the question parser needs questions from at least 2 scenes (got {len(names)}): "
-                            "annotate a larger split")
-    n = min(len(names) - 1, max(1, round(fraction * len(names))))
-    pick = np.random.default_rng(seed).permutation(len(names))[:n]
-    return {names[i] for i in pick}
+    curve: list[dict] = field(default_factory=list)
 
 
 def exact_match(parser: QuestionParser, texts: list[str], programs: list[list[str]]) -> float:
@@ -75,20 +68,16 @@ def token_accuracy(model: Seq2Seq, src: list[list[int]], tgt: list[list[int]], b
     return right / max(1, total)
 
 
-def fit(texts: list[str], programs: list[list[str]], scenes: list[str], params: QParserParams,
-        echo=print) -> Fit:
-    """Train on the questions of the scenes not held out; keep the weights of the best validation exact match."""
+def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=print) -> Fit:
+    """Train on `sample(k)` in epoch k + 1 (the vocabularies come from epoch 1's questions); keep the weights of the
+    best exact match on `val`."""
     start = time.perf_counter()
-    held = split_scenes(scenes, params.val_fraction, params.seed)
-    tr = [i for i, s in enumerate(scenes) if s not in held]
-    va = [i for i, s in enumerate(scenes) if s in held]
-    words = Vocab.build(tokenize(texts[i]) for i in tr)
-    prog_vocab = Vocab.build(programs[i] for i in tr)
-    shapes = {program_shape(programs[i]) for i in tr}
-    src = [words.encode(tokenize(texts[i])) for i in tr]
-    tgt = [prog_vocab.encode(programs[i]) for i in tr]
-    if any(not s for s in src) or any(not t for t in tgt):
-        raise DynclevrError("a training question or program is empty: check questions.parquet")
+    first = sample(0)
+    if not first or any(not tokenize(t) or not p for t, p in first):
+        raise DynclevrError("a training question or program is empty: check templates.json")
+    words = Vocab.build(tokenize(t) for t, _ in first)
+    prog_vocab = Vocab.build(p for _, p in first)
+    shapes = {program_shape(p) for _, p in first}
 
     with one_thread():
         torch.manual_seed(params.seed)
@@ -98,11 +87,14 @@ def fit(texts: list[str], programs: list[list[str]], scenes: list[str], params: 
         parser = QuestionParser(model, words, prog_vocab, params, shapes)
         opt = torch.optim.Adam(model.parameters(), lr=params.lr)
         loss_fn = nn.CrossEntropyLoss(ignore_index=PAD_ID)
-        best, best_state, stale, epoch = (-1.0, -1.0), None, 0, 0
-        val_texts, val_programs = [texts[i] for i in va], [programs[i] for i in va]
+        best, best_state, stale, epoch, curve = (-1.0, -1.0), None, 0, 0, []
+        val_texts, val_programs = [t for t, _ in val], [p for _, p in val]
         val_src = [words.encode(tokenize(t)) or [UNK_ID] for t in val_texts]
         val_tgt = [prog_vocab.encode(p) for p in val_programs]
         for epoch in range(1, params.epochs_max + 1):
+            data = first if epoch == 1 else sample(epoch - 1)
+            src = [words.encode(tokenize(t)) for t, _ in data]
+            tgt = [prog_vocab.encode(p) for _, p in data]
             model.train()
             total, count = 0.0, 0
             for b in torch.randperm(len(src), generator=gen).split(params.batch_size):
@@ -120,6 +112,8 @@ def fit(texts: list[str], programs: list[list[str]], scenes: list[str], params: 
             model.eval()
             em = exact_match(parser, val_texts, val_programs)
             acc = token_accuracy(model, val_src, val_tgt)
+            curve.append({"epoch": epoch, "loss": round(total / count, 5), "val_exact_match": round(em, 5),
+                          "val_token_accuracy": round(acc, 5)})
             echo(f"qparser epoch {epoch}: loss {total / count:.4f}, validation exact match {em:.4f}, "
                  f"token accuracy {acc:.4f}")
             # Exact match decides; teacher-forced token accuracy breaks its ties, so that early epochs, where no
@@ -133,7 +127,11 @@ def fit(texts: list[str], programs: list[list[str]], scenes: list[str], params: 
                 break
         model.load_state_dict(best_state)
         model.eval()
-    return Fit(parser, sorted(held), len(tr), len(va), best[0], epoch, time.perf_counter() - start)
+    return Fit(parser, best[0], epoch, time.perf_counter() - start, curve)
+
+
+def grammar_pairs(n: int, seed: int, pool: str, augmented: bool = False) -> Pairs:
+    return [(e.text, e.program.split()) for e in synthesize(n, seed, pool, augmented)]
 
 
 def blind_baseline(families: list[str], answers: list[str]) -> dict:
@@ -162,19 +160,28 @@ def load_questions(store: Store) -> tuple[Path, dict[str, list]]:
 def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo=print) -> dict:
     params = qparser_params(cfg)
     path, q = load_questions(Store(Path(data_dir), split.name))
-    programs = [p.split() for p in q["program"]]
-    echo(f"qparser: {len(q['text'])} questions of split '{split.name}' from {path}")
-    result = fit(q["text"], programs, q["scene"], params, echo)
+    n = params.examples_per_epoch
+    echo(f"qparser: {n} fresh questions per epoch from the phrasing grammar's seen phrasings; blind baseline from "
+         f"{len(q['text'])} questions of split '{split.name}' ({path})")
+    # Seeds 1000 s + k: epoch k's questions; 1000 s + 999: validation; 1000 s + 998: held-out phrasings.
+    base = 1000 * params.seed
+    result = fit(lambda k: grammar_pairs(n, base + k, "seen", augmented=True),
+                 grammar_pairs(params.val_examples, base + 999, "seen"), params, echo)
+    heldout = grammar_pairs(params.val_examples, base + 998, "heldout")
+    heldout_em = exact_match(result.parser, [t for t, _ in heldout], [p for _, p in heldout])
     out_dir = Path(out_dir)
     result.parser.save(out_dir)
     write_json_atomic(out_dir / BLIND, {"split": split.name, "questions": len(q["answer"]),
                                         **blind_baseline(q["family"], q["answer"])})
-    manifest = {"split": split.name, "questions": len(q["text"]), "questions_digest": file_digest(path),
+    manifest = {"command": "dynclevr train qparser", "training_data": "phrasing grammar, seen phrasings",
+                "templates_digest": file_digest(TEMPLATES_PATH), "examples_per_epoch": n,
+                "blind_split": split.name, "blind_questions": len(q["text"]), "questions_digest": file_digest(path),
                 "params": params.to_dict(), "model": result.parser.model.dims.to_dict(),
-                "train_questions": result.train_questions, "val_questions": result.val_questions,
-                "val_scenes": result.val_scenes, "val_exact_match": result.val_exact_match,
-                "epochs": result.epochs, "train_seconds": round(result.seconds, 1), "torch": torch.__version__}
+                "val_exact_match": result.val_exact_match, "heldout_phrasings_exact_match": heldout_em,
+                "curve": result.curve, "epochs": result.epochs, "train_seconds": round(result.seconds, 1),
+                "torch": torch.__version__}
     write_json_atomic(out_dir / MANIFEST, manifest)
-    echo(f"qparser: validation exact match {result.val_exact_match:.4f} on {result.val_questions} questions of "
-         f"{len(result.val_scenes)} held-out scenes, {result.epochs} epochs, {result.seconds:.0f} s; wrote {out_dir}")
+    echo(f"qparser: exact match {result.val_exact_match:.4f} on seen phrasings, {heldout_em:.4f} on held-out "
+         f"phrasings ({params.val_examples} questions each), {result.epochs} epochs, {result.seconds:.0f} s; "
+         f"wrote {out_dir}")
     return manifest

@@ -25,7 +25,9 @@ from pathlib import Path
 
 import numpy as np
 
+from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import ConfigError
+from dynclevr.questions.phrasing import grammar
 from dynclevr.questions.programs import AmbiguousLabel, Executor, ProgramError
 from dynclevr.scene import INTERVENTIONS, Scene4D, SceneObject
 
@@ -73,18 +75,32 @@ def references(scene: Scene4D, obj: SceneObject) -> list[tuple[tuple[str, ...], 
 
 def describe(obj: SceneObject, attrs: tuple[str, ...], rng: np.random.Generator) -> tuple[str, str]:
     """-> (text, program fragment) for one object reference."""
-    program = "Objects " + " ".join(f"filter_attributes[{getattr(obj, a)}]" for a in attrs) + " unique"
-    named = [words(getattr(obj, a)) for a in attrs]
-    if attrs == ("color",):
+    return reference(tuple(getattr(obj, a) for a in attrs), rng)
+
+
+def reference(values: tuple[str, ...], rng: np.random.Generator) -> tuple[str, str]:
+    """Attribute values ('red', 'sedan') -> ('the red sedan', 'Objects filter_attributes[red] ... unique'). A
+    colour alone gets a noun ('the red vehicle')."""
+    program = "Objects " + " ".join(f"filter_attributes[{v}]" for v in values) + " unique"
+    named = [words(v) for v in values]
+    if len(values) == 1 and values[0] in COLOR_NAMES:
         named.append(COLOR_NOUNS[rng.integers(len(COLOR_NOUNS))])
     return "the " + " ".join(named), program
 
 
+def phrase(fam: dict, values: dict[str, dict], slot_keys: dict[str, str], rng: np.random.Generator,
+           pool: str = "all") -> tuple[str, str]:
+    """One question of a family -> (text, program): `values` the objects' {text, program}, `slot_keys` the slots'
+    value keys; the wording drawn from the phrasing grammar's pool (phrasing.py)."""
+    slots = {name: templates()["slots"][name][key] for name, key in slot_keys.items()}
+    objects = {name: v for name, v in values.items() if name not in slots}
+    text = _fill(grammar().sample(fam["name"], rng, pool, slots), objects, "text")
+    program = _fill(fam["program"], {**objects, **slots}, "program")
+    return _sentence(text), program
+
+
 def _fill(template: str, values: dict[str, dict], field: str) -> str:
     for name, v in values.items():
-        for key, text in v.items():
-            if key != "program":
-                template = template.replace(f"<{name}:{key}>", text)
         template = template.replace(f"<{name}>", v[field])
     return template
 
@@ -166,10 +182,7 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarr
                 w = np.array([wt for _, wt in options])
                 text, program = describe(o, options[rng.choice(len(options), p=w / w.sum())][0], rng)
                 values[name] = {"text": text, "program": program}
-            for name, key in slot_keys.items():
-                values[name] = {"text": key, **slots[name][key]}
-            text = _sentence(_fill(fam["texts"][rng.integers(len(fam["texts"]))], values, "text"))
-            program = _fill(fam["program"], values, "program")
+            text, program = phrase(fam, values, slot_keys, rng)
             try:
                 answer = ex.run(program)
             except AmbiguousLabel as e:

@@ -15,7 +15,10 @@ The operations keep the paper's names. Added (and only these):
 - `unique` and `exist` also take a CollisionEventSet (-> CollisionEvent / Bool), so that "when X collides with Y"
   is `... filter_collision unique get_frame`.
 - `filter_moving_velocity[slow|fast]` keeps objects of that velocity class; without an argument, every moving
-  (not static) object.
+  (not static) object. `is_moving_velocity[slow|fast]`: Object, FrameID -> Bool, the yes/no form the paper asks
+  ("Is the red mountain bike moving fast at the beginning?") beside its `is_static`.
+- `come_in_frame` is the object's first frame in view plus the same offset as `start`, for the same reason: the
+  state "when X comes into view" is read once it has moved in view.
 
 A program that cannot run (a reference that matches no object or several, an input of the wrong type, a missing
 counterfactual run, a frame outside the scene) raises ProgramError: the answer stage counts these, never crashes.
@@ -288,10 +291,10 @@ def get_frame(w: World, event: Collision) -> FrameID:
 
 @op("come_in_frame", Object, returns=FrameID)
 def come_in_frame(w: World, obj: Object) -> FrameID:
-    seen = w.scene.visible[:, w._index[obj]].nonzero()[0]
+    seen = w.seen[:, w._index[obj]].nonzero()[0]
     if len(seen) == 0:
         raise ProgramError(f"object {obj} never comes into view")
-    return FrameID(int(seen[0]))
+    return FrameID(min(int(seen[0]) + w.start_frame, w.scene.num_frames - 1))
 
 
 # ---- object filters ---------------------------------------------------------------------------------------------
@@ -350,6 +353,11 @@ def query_attributes(w: World, obj: Object, attribute: str) -> str:
 @op("is_static", Object, FrameID, returns=bool)
 def is_static(w: World, obj: Object, t: FrameID) -> bool:
     return w.velocity(obj, t) == "static"
+
+
+@op("is_moving_velocity", Object, FrameID, returns=bool, args=MOVING)
+def is_moving_velocity(w: World, obj: Object, t: FrameID, velocity: str) -> bool:
+    return w.velocity(obj, t) == velocity
 
 
 @op("query_moving_velocity", Object, FrameID, returns=str)
@@ -483,7 +491,8 @@ class Executor:
                  copy_factual: bool = False):
         self.world = World(scene, labels_cfg, strict, seen, copy_factual)
 
-    def run(self, program: str | list[str]) -> str:
+    def run(self, program: str | list[str], trace: list | None = None) -> str:
+        """The program's answer word; `trace` (a list) receives (token, inputs, output) of every step."""
         stack: list = []
         for name, arg in parse(program):
             o = OPS[name]
@@ -497,6 +506,8 @@ class Executor:
                     raise ProgramError(f"{name}: input {i + 1} must be a {_type_name(t)}, got "
                                        f"{TYPE_NAMES.get(type(v), type(v).__name__)}")
             stack.append(o.fn(self.world, *args, arg) if arg is not None else o.fn(self.world, *args))
+            if trace is not None:
+                trace.append((f"{name}[{arg}]" if arg is not None else name, args, stack[-1]))
         if len(stack) != 1:
             raise ProgramError(f"the program leaves {len(stack)} values, expected one answer")
         return answer_word(stack[0])

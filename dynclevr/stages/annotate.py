@@ -34,7 +34,8 @@ from dynclevr.questions.tables import (DROPPED, DROPPED_SCHEMA, DROPPED_VERSION,
 from dynclevr.scene import Scene4D
 from dynclevr.video import Video
 
-VERSION = 2   # 2: visibility from the masks, grazes, the predictive margin, counterfactual balance
+VERSION = 3   # 2: visibility from the masks, grazes, the predictive margin, counterfactual balance; 3: the phrasing
+#   grammar and the paper's missing families
 QUESTIONS_FILE = "questions.parquet"
 # questions.parquet's schema, for its readers (answer, report, the question parser's training)
 __all__ = ["STAGE", "QUESTIONS_FILE", "QUESTIONS_SCHEMA", "QUESTIONS_VERSION", "stats"]

@@ -1,0 +1,129 @@
+"""`dynclevr eval-qparser`: how the question parser does on a split's questions, in wordings it saw in training and
+in wordings it never saw, scored by program exact match and by the answer its program gives on the truth scene.
+
+Every question of the split is said again from its program: its family's objects and slot values are read back out of
+the program (`bindings`), then put into one phrasing from the grammar's seen pool and one from its held-out pool
+(phrasing.py). The split's own texts (drawn from every phrasing) are scored as they are. Questions outside what the
+parser can answer (OUT_OF_SCOPE_FILE: gibberish, objects no catalogue has, questions of no family) must come back
+unparsed; their share is reported too.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter, defaultdict
+from pathlib import Path
+
+import numpy as np
+
+from dynclevr import DynclevrError
+from dynclevr.language.parse import QuestionParser
+from dynclevr.questions.generate import phrase, reference, templates
+from dynclevr.questions.programs import Executor
+
+OUT_OF_SCOPE_FILE = Path(__file__).with_name("out_of_scope.txt")
+_CHAIN = r"Objects(?: filter_attributes\[[a-z_]+\])+ unique"
+
+
+def out_of_scope() -> list[str]:
+    return [line for line in OUT_OF_SCOPE_FILE.read_text().splitlines() if line and not line.startswith("#")]
+
+
+def _pattern(fam: dict) -> re.Pattern:
+    """The family's program template as a regex whose groups are its objects and slots."""
+    seen: set[str] = set()
+    out = []
+    for tok in fam["program"].split():
+        m = re.fullmatch(r"<([A-Z]+)>", tok)
+        if m and m.group(1) in fam["objects"]:
+            name = m.group(1)
+            out.append(f"(?P={name})" if name in seen else f"(?P<{name}>{_CHAIN})")
+            seen.add(name)
+        else:
+            def slot(m):
+                name = m.group(1)
+                options = "|".join(re.escape(v["program"]) for v in templates()["slots"][name].values())
+                if name in seen:
+                    return f"(?P={name})"
+                seen.add(name)
+                return f"(?P<{name}>{options})"
+            out.append(re.sub(r"<([A-Z]+)>", slot, re.escape(tok).replace(r"\<", "<").replace(r"\>", ">")))
+    return re.compile(" ".join(out))
+
+
+def bindings(fam: dict, program: str, rng: np.random.Generator) -> tuple[dict, dict] | None:
+    """A family's program -> (objects {name: {text, program}}, slot keys {name: key}); None if it is not one."""
+    m = _pattern(fam).fullmatch(program)
+    if not m:
+        return None
+    values, slot_keys = {}, {}
+    for name in fam["objects"]:
+        attrs = tuple(re.findall(r"filter_attributes\[([a-z_]+)\]", m.group(name)))
+        text, chain = reference(attrs, rng)
+        values[name] = {"text": text, "program": chain}
+    for name in fam.get("slots", []):
+        slot_keys[name] = next(k for k, v in templates()["slots"][name].items() if v["program"] == m.group(name))
+    return values, slot_keys
+
+
+def rephrase(question: dict, pool: str, rng: np.random.Generator) -> str:
+    fam = next(f for f in templates()["families"] if f["name"] == question["family"])
+    bound = bindings(fam, question["program"], rng)
+    if bound is None:
+        raise DynclevrError(f"question {question['id']}: its program is not one of family {fam['name']}'s: "
+                            "annotate the split again (`dynclevr annotate --split S --force`)")
+    text, program = phrase(fam, *bound, rng, pool)
+    assert program == question["program"], (program, question["program"])
+    return text
+
+
+def score(parser: QuestionParser, questions: list[dict], texts: list[str], executors: dict[str, Executor]) -> dict:
+    parses = parser.analyse_batch(texts)
+    exact = answered = unparsed = 0
+    by_family: dict[str, list[bool]] = defaultdict(list)
+    for q, p in zip(questions, parses):
+        ok = p.program is not None and " ".join(p.program) == q["program"]
+        exact += ok
+        by_family[q["family"]].append(ok)
+        unparsed += p.program is None
+        if p.program is not None:
+            try:
+                answered += executors[q["scene"]].run(p.program) == q["answer"]
+            except DynclevrError:
+                pass
+    n = max(1, len(questions))
+    return {"questions": len(questions), "exact_match": exact / n, "answer_accuracy": answered / n,
+            "unparsed": unparsed / n, "by_family": {f: float(np.mean(v)) for f, v in sorted(by_family.items())}}
+
+
+def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_cfg: dict, seed: int = 0) -> dict:
+    """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'out_of_scope': ...}; `truth` maps scene name -> Scene4D."""
+    executors = {name: Executor(scene, labels_cfg) for name, scene in truth.items()}
+    rng = np.random.default_rng(np.random.SeedSequence([seed, 0xE7A1]))
+    out = {pool: score(parser, questions, [rephrase(q, pool, rng) for q in questions], executors)
+           for pool in ("seen", "heldout")}
+    out["dataset"] = score(parser, questions, [q["text"] for q in questions], executors)
+    oos = out_of_scope()
+    parses = parser.analyse_batch(oos)
+    out["out_of_scope"] = {"questions": len(oos), "unparsed": sum(p.program is None for p in parses) / len(oos),
+                           "answered": [t for t, p in zip(oos, parses) if p.program is not None],
+                           "reasons": dict(Counter(p.reason.split(":")[0].split(" (")[0] for p in parses))}
+    return out
+
+
+def markdown(result: dict) -> str:
+    rows = [("phrasings seen in training", "seen"), ("held-out phrasings (never in training)", "heldout"),
+            ("the split's own texts (all phrasings)", "dataset")]
+    lines = ["| questions | n | program exact match | answer accuracy (truth) | unparsed |", "|---|---|---|---|---|"]
+    for label, key in rows:
+        r = result[key]
+        lines.append(f"| {label} | {r['questions']} | {100 * r['exact_match']:.2f}% | "
+                     f"{100 * r['answer_accuracy']:.2f}% | {100 * r['unparsed']:.2f}% |")
+    o = result["out_of_scope"]
+    lines.append(f"| out of scope (must be unparsed) | {o['questions']} | - | - | {100 * o['unparsed']:.2f}% |")
+    worst = sorted(result["heldout"]["by_family"].items(), key=lambda kv: kv[1])[:5]
+    lines += ["", "Held-out phrasings, lowest exact match by family: "
+              + ", ".join(f"{f} {100 * v:.1f}%" for f, v in worst)]
+    if o["answered"]:
+        lines += ["", "Out-of-scope questions given a program: " + "; ".join(f"'{t}'" for t in o["answered"])]
+    return "\n".join(lines) + "\n"
