@@ -18,6 +18,7 @@ import numpy as np
 
 from dynclevr import DynclevrError
 from dynclevr.language.parse import QuestionParser
+from dynclevr.language.tokenize import tokenize
 from dynclevr.questions.generate import phrase, reference, templates
 from dynclevr.questions.programs import Executor
 
@@ -100,8 +101,14 @@ def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_
     """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'out_of_scope': ...}; `truth` maps scene name -> Scene4D."""
     executors = {name: Executor(scene, labels_cfg) for name, scene in truth.items()}
     rng = np.random.default_rng(np.random.SeedSequence([seed, 0xE7A1]))
-    out = {pool: score(parser, questions, [rephrase(q, pool, rng) for q in questions], executors)
-           for pool in ("seen", "heldout")}
+    texts = {pool: [rephrase(q, pool, rng) for q in questions] for pool in ("seen", "heldout")}
+    out = {pool: score(parser, questions, texts[pool], executors) for pool in ("seen", "heldout")}
+    # Held-out phrasings split by whether every word was in training: a new combination or sentence structure of
+    # known words (generalisation a sequence model can learn) or a synonym never seen (a guess from the context).
+    known = [all(w in parser.known for w in tokenize(t)) for t in texts["heldout"]]
+    for key, keep in (("heldout_known_words", True), ("heldout_new_words", False)):
+        pick = [i for i, k in enumerate(known) if k == keep]
+        out[key] = score(parser, [questions[i] for i in pick], [texts["heldout"][i] for i in pick], executors)
     out["dataset"] = score(parser, questions, [q["text"] for q in questions], executors)
     oos = out_of_scope()
     parses = parser.analyse_batch(oos)
@@ -113,6 +120,8 @@ def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_
 
 def markdown(result: dict) -> str:
     rows = [("phrasings seen in training", "seen"), ("held-out phrasings (never in training)", "heldout"),
+            ("- of them, all words known (new combinations and sentences)", "heldout_known_words"),
+            ("- of them, with a word never seen in training", "heldout_new_words"),
             ("the split's own texts (all phrasings)", "dataset")]
     lines = ["| questions | n | program exact match | answer accuracy (truth) | unparsed |", "|---|---|---|---|---|"]
     for label, key in rows:

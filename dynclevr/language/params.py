@@ -23,6 +23,7 @@ class QParserParams:
     examples_per_epoch: int
     val_examples: int
     max_unknown_words: int
+    max_unknown_attention: float
     min_confidence: float
 
     def to_dict(self) -> dict:
@@ -43,7 +44,7 @@ class QParserParams:
             if not isinstance(v, int) or isinstance(v, bool) or v < low:
                 raise ConfigError(f"'qparser.{key}' = {v!r} must be an integer >= {low}")
         for key, lo, hi in [("dropout", 0, 0.9), ("word_dropout", 0, 0.5), ("lr", 1e-6, 1.0),
-                            ("min_confidence", 0, 1)]:
+                            ("min_confidence", 0, 1), ("max_unknown_attention", 0, 1)]:
             v = d[key]
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not lo <= v <= hi:
                 raise ConfigError(f"'qparser.{key}' = {v!r} must be a number in [{lo}, {hi}]")

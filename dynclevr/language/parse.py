@@ -3,12 +3,16 @@
 A question is unparsed (counted wrong) rather than given a confident wrong program when
 - it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one vocabulary
   word counts as that word, so a misspelt colour such as 'gren' reads as 'green');
+- a word it does not know carries the question: some step of the decoding attends to it more than
+  `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
+  the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
 - decoding gives no well-formed program: no <eos> within `max_decode_len`, a special token, an operation sequence no
   training program has, or not a valid postfix program of dynclevr/questions/programs.py's operations;
 - the decoding's probability is below `min_confidence` (a wording unlike any the parser learnt);
-- the program's object words disagree with the question's: every colour, sub-type and category the question names
-  must be a `filter_attributes` argument of the program and the reverse (a pointer check: the sequence model may
-  generalise a sentence, never invent or drop an object).
+- it names an object the catalogue lacks ('the green *tractor*': object words followed by an unknown word);
+- the program leaves out an object the question names ("Is the red sedan bigger than the blue bus?" read as a
+  question about one of them), or refers to one it does not name. Object words reach the program only through the
+  copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
 """
 
 from __future__ import annotations
@@ -16,7 +20,6 @@ from __future__ import annotations
 import io
 import json
 import pickle
-from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -28,7 +31,8 @@ from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
-from dynclevr.questions.programs import ATTRIBUTE_VALUES, OPS, ProgramError
+from dynclevr.language.references import OBJECT_WORDS, concrete_program, delexicalise, placeholders
+from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
 QUESTION_VOCAB = "question_vocab.json"
@@ -48,28 +52,6 @@ def program_shape(tokens: list[str]) -> str:
     return " ".join(operation(t) for t in tokens)
 
 
-# Attribute values as words: 'school_bus' is said 'school bus'; longest first, so 'school bus' is not read as 'bus'.
-_NAMES = sorted(((tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES), key=lambda kv: -len(kv[0]))
-
-
-def mentions(words: list[str]) -> Counter:
-    """The attribute values a question names: ['the', 'school', 'bus', ...] -> Counter({'school_bus': 1})."""
-    out, i = Counter(), 0
-    while i < len(words):
-        for name, value in _NAMES:
-            if tuple(words[i:i + len(name)]) == name:
-                out[value] += 1
-                i += len(name)
-                break
-        else:
-            i += 1
-    return out
-
-
-def program_mentions(tokens: list[str]) -> Counter:
-    return Counter(t[len("filter_attributes["):-1] for t in tokens if t.startswith("filter_attributes["))
-
-
 @dataclass(frozen=True)
 class Parse:
     """A question's program (None: unparsed), why it is unparsed, and the decoding's probability."""
@@ -82,6 +64,8 @@ class QuestionParser:
     def __init__(self, model: Seq2Seq, words: Vocab, programs: Vocab, params: QParserParams, shapes: set[str]):
         self.model = model.eval()
         self.words, self.programs, self.params = words, programs, params
+        # Every word the parser knows: the model's, and the object words that the copy path carries past it.
+        self.known = Vocab(list(dict.fromkeys(words.itos[len(SPECIALS):] + sorted(OBJECT_WORDS))))
         # The operation sequences of the training programs: a decoded program must have one of them (as well as
         # pass `well_formed`), so a decoding that wanders off every template is unparsed, not executed.
         self.shapes = shapes
@@ -133,14 +117,14 @@ class QuestionParser:
             if why:
                 out[i] = Parse(None, why)
             else:
-                todo.append((i, words))
+                todo.append((i, *delexicalise(words)))
         for start in range(0, len(todo), BATCH):
             chunk = todo[start:start + BATCH]
-            src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in words] for _, words in chunk])
+            src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in words] for _, words, _ in chunk])
             with torch.inference_mode(), one_thread():
                 decoded = self.model.greedy(src, lens, self.params.max_decode_len)
-            for (i, words), (ids, p) in zip(chunk, decoded):
-                out[i] = self._check(words, ids, p)
+            for (i, words, refs), (ids, p, attended) in zip(chunk, decoded):
+                out[i] = self._check(words, refs, ids, p, attended)
         return out
 
     def _words(self, text) -> tuple[list[str], str]:
@@ -152,29 +136,35 @@ class QuestionParser:
             return [], "empty question"
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
-        words = [w if w in self.words else (self.words.closest(w) or w) for w in words]
-        unknown = [w for w in words if w not in self.words]
+        words = [w if w in self.known else (self.known.closest(w) or w) for w in words]
+        unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         return words, ""
 
-    def _check(self, words: list[str], ids: list[int] | None, p: float) -> Parse:
+    def _check(self, words: list[str], refs: list, ids: list[int] | None, p: float, attended: list[float]) -> Parse:
         if not ids:
             return Parse(None, "no program came out of the decoder", p)
-        tokens = self.programs.decode(ids)
-        if any(t in SPECIALS for t in tokens) or program_shape(tokens) not in self.shapes or not well_formed(tokens):
+        for k, (w, after) in enumerate(zip(words, words[1:])):
+            if w.startswith("<obj") and after not in self.known:   # 'the green tractor': an object no one has
+                named = " ".join(refs[int(w[4:-1]) - 1]).replace("_", " ")
+                return Parse(None, f"the question names the {named} {after}: no vehicle here is called '{after}'", p)
+        hinges = [w for w, a in zip(words, attended) if w not in self.words and a > self.params.max_unknown_attention]
+        if hinges:
+            return Parse(None, "the question turns on " + ", ".join(f"'{w}'" for w in dict.fromkeys(hinges))
+                         + ", a word the parser does not know", p)
+        abstract = self.programs.decode(ids)
+        tokens = concrete_program(abstract, refs)
+        if (any(t in SPECIALS for t in abstract) or program_shape(abstract) not in self.shapes or tokens is None
+                or not well_formed(tokens)):
             return Parse(None, "the question matches no known question family", p)
         if p < self.params.min_confidence:
             return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
-        # As sets: a program names an object once per use ('when X collides with Y' uses X twice), a question once
-        # per mention ('when X and Y collide, is X ...').
-        said, used = set(mentions(words)), set(program_mentions(tokens))
-        if said != used:
-            extra, missing = sorted(used - said), sorted(said - used)
-            why = (f"the program would refer to {', '.join(extra)}, which the question does not name" if extra else
-                   f"the question names {', '.join(w.replace('_', ' ') for w in missing)}, which no question family "
-                   "here can use")
-            return Parse(None, why, p)
+        unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
+                  if k not in placeholders(abstract)]
+        if unused:
+            return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
+                               "reads it that way", p)
         return Parse(tokens, "", p)
 
 

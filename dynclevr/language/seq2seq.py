@@ -59,33 +59,39 @@ class Seq2Seq(nn.Module):
         state = (torch.tanh(self.bridge_h(h)).contiguous(), self.bridge_c(c).contiguous())
         return memory, self.attn(memory), src != PAD_ID, state
 
-    def _readout(self, dec: torch.Tensor, memory, keys, mask) -> torch.Tensor:
-        """Decoder outputs (B, T, H) -> token logits (B, T, V)."""
+    def _readout(self, dec: torch.Tensor, memory, keys, mask) -> tuple[torch.Tensor, torch.Tensor]:
+        """Decoder outputs (B, T, H) -> token logits (B, T, V) and the attention over the question (B, T, S)."""
         scores = torch.bmm(dec, keys.transpose(1, 2))                     # (B, T, S)
         scores = scores.masked_fill(~mask[:, None, :], float("-inf"))
-        context = torch.bmm(torch.softmax(scores, dim=-1), memory)        # (B, T, 2H)
+        weights = torch.softmax(scores, dim=-1)
+        context = torch.bmm(weights, memory)                              # (B, T, 2H)
         att = torch.tanh(self.combine(torch.cat([dec, context], dim=-1)))
-        return self.out(self.drop(att))
+        return self.out(self.drop(att)), weights
 
     def forward(self, src: torch.Tensor, src_len: torch.Tensor, tgt_in: torch.Tensor) -> torch.Tensor:
         """Teacher forcing: tgt_in (B, T) starts with <sos>; returns logits (B, T, V) for the next tokens."""
         memory, keys, mask, state = self.encode(src, src_len)
         dec, _ = self.decoder(self.drop(self.tgt_embed(tgt_in)), state)
-        return self._readout(dec, memory, keys, mask)
+        return self._readout(dec, memory, keys, mask)[0]
 
     @torch.no_grad()
-    def greedy(self, src: torch.Tensor, src_len: torch.Tensor, max_len: int) -> list[tuple[list[int] | None, float]]:
+    def greedy(self, src: torch.Tensor, src_len: torch.Tensor, max_len: int
+               ) -> list[tuple[list[int] | None, float, list[float]]]:
         """Greedy decoding; per question (the token ids before <eos>, or None when no <eos> came within max_len;
-        the decoding's probability, the product of each chosen token's probability)."""
+        the decoding's probability, the product of each chosen token's probability; per question word, the most
+        attention any decoding step paid it)."""
         memory, keys, mask, state = self.encode(src, src_len)
         B = src.shape[0]
         tok = torch.full((B, 1), SOS_ID, dtype=torch.long)
         steps = []
         logp = torch.zeros(B)
+        attended = torch.zeros(src.shape)
         finished = torch.zeros(B, dtype=torch.bool)
         for _ in range(max_len + 1):   # + 1: room for the <eos> after a program of max_len tokens
             dec, state = self.decoder(self.tgt_embed(tok), state)
-            best = torch.log_softmax(self._readout(dec, memory, keys, mask)[:, 0], -1).max(-1)
+            logits, weights = self._readout(dec, memory, keys, mask)
+            best = torch.log_softmax(logits[:, 0], -1).max(-1)
+            attended = torch.where(finished[:, None], attended, torch.maximum(attended, weights[:, 0]))
             tok = best.indices[:, None]
             logp += torch.where(finished, torch.zeros(B), best.values)
             steps.append(tok[:, 0])
@@ -93,8 +99,8 @@ class Seq2Seq(nn.Module):
             if bool(finished.all()):
                 break
         ids = torch.stack(steps, 1).tolist()
-        return [(row[:row.index(EOS_ID)] if EOS_ID in row else None, float(torch.exp(lp)))
-                for row, lp in zip(ids, logp)]
+        return [(row[:row.index(EOS_ID)] if EOS_ID in row else None, float(torch.exp(lp)), att[:n].tolist())
+                for row, lp, att, n in zip(ids, logp, attended, src_len.tolist())]
 
 
 @contextlib.contextmanager

@@ -28,6 +28,7 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language.params import QParserParams, qparser_params
 from dynclevr.language.parse import QuestionParser, program_shape
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
+from dynclevr.language.references import abstract_program, delexicalise
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import EOS_ID, PAD_ID, SOS_ID, UNK_ID, Vocab
 from dynclevr.questions.generate import TEMPLATES_PATH
@@ -72,10 +73,10 @@ def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=
     """Train on `sample(k)` in epoch k + 1 (the vocabularies come from epoch 1's questions); keep the weights of the
     best exact match on `val`."""
     start = time.perf_counter()
-    first = sample(0)
-    if not first or any(not tokenize(t) or not p for t, p in first):
+    first = [encoded(t, p) for t, p in sample(0)]
+    if not first or any(not w or not p for w, p in first):
         raise DynclevrError("a training question or program is empty: check templates.json")
-    words = Vocab.build(tokenize(t) for t, _ in first)
+    words = Vocab.build(w for w, _ in first)
     prog_vocab = Vocab.build(p for _, p in first)
     shapes = {program_shape(p) for _, p in first}
 
@@ -89,11 +90,12 @@ def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=
         loss_fn = nn.CrossEntropyLoss(ignore_index=PAD_ID)
         best, best_state, stale, epoch, curve = (-1.0, -1.0), None, 0, 0, []
         val_texts, val_programs = [t for t, _ in val], [p for _, p in val]
-        val_src = [words.encode(tokenize(t)) or [UNK_ID] for t in val_texts]
-        val_tgt = [prog_vocab.encode(p) for p in val_programs]
+        val_enc = [encoded(t, p) for t, p in val]
+        val_src = [words.encode(w) or [UNK_ID] for w, _ in val_enc]
+        val_tgt = [prog_vocab.encode(p) for _, p in val_enc]
         for epoch in range(1, params.epochs_max + 1):
-            data = first if epoch == 1 else sample(epoch - 1)
-            src = [words.encode(tokenize(t)) for t, _ in data]
+            data = first if epoch == 1 else [encoded(t, p) for t, p in sample(epoch - 1)]
+            src = [words.encode(w) for w, _ in data]
             tgt = [prog_vocab.encode(p) for _, p in data]
             model.train()
             total, count = 0.0, 0
@@ -128,6 +130,15 @@ def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=
         model.load_state_dict(best_state)
         model.eval()
     return Fit(parser, best[0], epoch, time.perf_counter() - start, curve)
+
+
+def encoded(text: str, program: list[str]) -> tuple[list[str], list[str]]:
+    """A question and its program as the sequence model sees them: object words as placeholders (references.py)."""
+    words, refs = delexicalise(tokenize(text))
+    try:
+        return words, abstract_program(program, refs)
+    except ValueError:
+        raise DynclevrError(f"the program of {text!r} names an object the text does not: check templates.json") from None
 
 
 def grammar_pairs(n: int, seed: int, pool: str, augmented: bool = False) -> Pairs:
@@ -169,6 +180,8 @@ def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo
                  grammar_pairs(params.val_examples, base + 999, "seen"), params, echo)
     heldout = grammar_pairs(params.val_examples, base + 998, "heldout")
     heldout_em = exact_match(result.parser, [t for t, _ in heldout], [p for _, p in heldout])
+    known = [(t, p) for t, p in heldout if all(w in result.parser.known for w in tokenize(t))]
+    known_em = exact_match(result.parser, [t for t, _ in known], [p for _, p in known])
     out_dir = Path(out_dir)
     result.parser.save(out_dir)
     write_json_atomic(out_dir / BLIND, {"split": split.name, "questions": len(q["answer"]),
@@ -178,10 +191,11 @@ def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo
                 "blind_split": split.name, "blind_questions": len(q["text"]), "questions_digest": file_digest(path),
                 "params": params.to_dict(), "model": result.parser.model.dims.to_dict(),
                 "val_exact_match": result.val_exact_match, "heldout_phrasings_exact_match": heldout_em,
+                "heldout_known_words_exact_match": known_em, "heldout_known_words_share": len(known) / len(heldout),
                 "curve": result.curve, "epochs": result.epochs, "train_seconds": round(result.seconds, 1),
                 "torch": torch.__version__}
     write_json_atomic(out_dir / MANIFEST, manifest)
     echo(f"qparser: exact match {result.val_exact_match:.4f} on seen phrasings, {heldout_em:.4f} on held-out "
-         f"phrasings ({params.val_examples} questions each), {result.epochs} epochs, {result.seconds:.0f} s; "
-         f"wrote {out_dir}")
+         f"phrasings ({params.val_examples} questions each; {known_em:.4f} on the {len(known)} of them whose words "
+         f"all occur in training), {result.epochs} epochs, {result.seconds:.0f} s; wrote {out_dir}")
     return manifest

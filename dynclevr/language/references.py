@@ -1,0 +1,73 @@
+"""The copy path for object words. The sequence model never reads or writes a colour or a sub-type: each run of
+attribute words in the question ('red sedan', 'school bus', 'purple') becomes a placeholder (<obj1>, <obj2>, in
+order of first mention; the same words twice, the same placeholder), the model writes the placeholder where the
+program refers to that object, and the placeholder is copied back as the object's filter chain. So an object
+description the parser never saw with a sentence, or in a sentence it never saw, is carried over exactly, and the
+model's capacity goes to the sentence.
+"""
+
+from __future__ import annotations
+
+import re
+
+from dynclevr.questions.programs import ATTRIBUTE_VALUES
+
+# Attribute values as words: 'school_bus' is said 'school bus'; longest first, so 'school bus' is not read as 'bus'.
+_NAMES = sorted(((tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES), key=lambda kv: -len(kv[0]))
+OBJECT_WORDS = frozenset(w for name, _ in _NAMES for w in name)
+_CHAIN = re.compile(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique")
+_PLACEHOLDER = re.compile(r"<obj(\d+)>")
+_VALUE = re.compile(r"\[([a-z_]+)\]")
+Ref = tuple[str, ...]
+
+
+def _value_at(words: list[str], i: int) -> tuple[str, int] | None:
+    for name, value in _NAMES:
+        if tuple(words[i:i + len(name)]) == name:
+            return value, len(name)
+    return None
+
+
+def delexicalise(words: list[str]) -> tuple[list[str], list[Ref]]:
+    """['is', 'the', 'red', 'sedan', 'static', '?'] -> (['is', 'the', '<obj1>', 'static', '?'], [('red', 'sedan')])."""
+    out, refs, i = [], [], 0
+    while i < len(words):
+        run = []
+        while i < len(words) and (hit := _value_at(words, i)):
+            run.append(hit[0])
+            i += hit[1]
+        if run:
+            if tuple(run) not in refs:
+                refs.append(tuple(run))
+            out.append(f"<obj{refs.index(tuple(run)) + 1}>")
+        else:
+            out.append(words[i])
+            i += 1
+    return out, refs
+
+
+def abstract_program(tokens: list[str], refs: list[Ref]) -> list[str]:
+    """A program's filter chains -> the question's placeholders; ValueError if a chain names no run of the question."""
+    def sub(m: re.Match) -> str:
+        values = tuple(_VALUE.findall(m.group(1)))
+        return f"<obj{refs.index(values) + 1}>"
+
+    return _CHAIN.sub(sub, " ".join(tokens)).split()
+
+
+def concrete_program(tokens: list[str], refs: list[Ref]) -> list[str] | None:
+    """Placeholders -> filter chains; None if a placeholder names no object of the question."""
+    out = []
+    for t in tokens:
+        m = _PLACEHOLDER.fullmatch(t)
+        if not m:
+            out.append(t)
+        elif 1 <= int(m.group(1)) <= len(refs):
+            out += ["Objects", *[f"filter_attributes[{v}]" for v in refs[int(m.group(1)) - 1]], "unique"]
+        else:
+            return None
+    return out
+
+
+def placeholders(tokens: list[str]) -> set[int]:
+    return {int(m.group(1)) for t in tokens if (m := _PLACEHOLDER.fullmatch(t))}
