@@ -122,7 +122,7 @@ def markdown(result: dict) -> str:
     rows = [("phrasings seen in training", "seen"), ("held-out phrasings (never in training)", "heldout"),
             ("- of them, all words known (new combinations and sentences)", "heldout_known_words"),
             ("- of them, with a word never seen in training", "heldout_new_words"),
-            ("the split's own texts (all phrasings)", "dataset")]
+            ("the split's own texts", "dataset")]
     lines = ["| questions | n | program exact match | answer accuracy (truth) | unparsed |", "|---|---|---|---|---|"]
     for label, key in rows:
         r = result[key]

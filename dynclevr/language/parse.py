@@ -1,15 +1,16 @@
 """`QuestionParser`: question text -> program tokens (postfix), or unparsed with a one-line reason, never a crash.
 
 A question is unparsed (counted wrong) rather than given a confident wrong program when
-- it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one vocabulary
-  word counts as that word, so a misspelt colour such as 'gren' reads as 'green');
+- it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
+  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green');
 - a word it does not know carries the question: some step of the decoding attends to it more than
   `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
   the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
 - decoding gives no well-formed program: no <eos> within `max_decode_len`, a special token, an operation sequence no
   training program has, or not a valid postfix program of dynclevr/questions/programs.py's operations;
 - the decoding's probability is below `min_confidence` (a wording unlike any the parser learnt);
-- it names an object the catalogue lacks ('the green *tractor*': object words followed by an unknown word);
+- it names an object the catalogue lacks ('the green *tractor*', 'the *pink* suv': object words next to an unknown
+  word), or runs object words together that describe no one object ('red blue green');
 - the program leaves out an object the question names ("Is the red sedan bigger than the blue bus?" read as a
   question about one of them), or refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -31,7 +32,8 @@ from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
-from dynclevr.language.references import OBJECT_WORDS, concrete_program, delexicalise, placeholders
+from dynclevr.language.references import (OBJECT_WORDS, concrete_program, delexicalise, is_description,
+                                          placeholders)
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -39,6 +41,7 @@ QUESTION_VOCAB = "question_vocab.json"
 PROGRAM_VOCAB = "program_vocab.json"
 SETTINGS = "parser.json"   # model dims, params and the training programs' shapes: what `load` rebuilds from
 MODEL = "model.pt"
+OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
 BATCH = 256
 
@@ -65,7 +68,7 @@ class QuestionParser:
         self.model = model.eval()
         self.words, self.programs, self.params = words, programs, params
         # Every word the parser knows: the model's, and the object words that the copy path carries past it.
-        self.known = Vocab(list(dict.fromkeys(words.itos[len(SPECIALS):] + sorted(OBJECT_WORDS))))
+        self.known = set(words.itos[len(SPECIALS):]) | OBJECT_WORDS
         # The operation sequences of the training programs: a decoded program must have one of them (as well as
         # pass `well_formed`), so a decoding that wanders off every template is unparsed, not executed.
         self.shapes = shapes
@@ -117,7 +120,12 @@ class QuestionParser:
             if why:
                 out[i] = Parse(None, why)
             else:
-                todo.append((i, *delexicalise(words)))
+                words, refs = delexicalise(words)
+                bad = [r for r in refs if not is_description(r)]
+                if bad:
+                    out[i] = Parse(None, f"'{' '.join(bad[0]).replace('_', ' ')}' does not describe one object")
+                else:
+                    todo.append((i, words, refs))
         for start in range(0, len(todo), BATCH):
             chunk = todo[start:start + BATCH]
             src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in words] for _, words, _ in chunk])
@@ -136,7 +144,9 @@ class QuestionParser:
             return [], "empty question"
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
-        words = [w if w in self.known else (self.known.closest(w) or w) for w in words]
+        # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
+        # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
+        words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
@@ -145,10 +155,15 @@ class QuestionParser:
     def _check(self, words: list[str], refs: list, ids: list[int] | None, p: float, attended: list[float]) -> Parse:
         if not ids:
             return Parse(None, "no program came out of the decoder", p)
-        for k, (w, after) in enumerate(zip(words, words[1:])):
-            if w.startswith("<obj") and after not in self.known:   # 'the green tractor': an object no one has
-                named = " ".join(refs[int(w[4:-1]) - 1]).replace("_", " ")
+        for k, w in enumerate(words):
+            if not w.startswith("<obj"):
+                continue
+            named = " ".join(refs[int(w[4:-1]) - 1]).replace("_", " ")
+            before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
+            if after and after not in self.known:     # 'the green tractor': an object the catalogue lacks
                 return Parse(None, f"the question names the {named} {after}: no vehicle here is called '{after}'", p)
+            if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
+                return Parse(None, f"the question names the {before} {named}: no object here is '{before}'", p)
         hinges = [w for w, a in zip(words, attended) if w not in self.words and a > self.params.max_unknown_attention]
         if hinges:
             return Parse(None, "the question turns on " + ", ".join(f"'{w}'" for w in dict.fromkeys(hinges))

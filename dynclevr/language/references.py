@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 
+from dynclevr.colors import COLOR_NAMES
 from dynclevr.questions.programs import ATTRIBUTE_VALUES
 
 # Attribute values as words: 'school_bus' is said 'school bus'; longest first, so 'school bus' is not read as 'bus'.
@@ -26,6 +27,12 @@ def _value_at(words: list[str], i: int) -> tuple[str, int] | None:
         if tuple(words[i:i + len(name)]) == name:
             return value, len(name)
     return None
+
+
+def is_description(ref: Ref) -> bool:
+    """One object's words: at most a colour, then at most a sub-type or category ('red sedan', 'bus', 'cyan')."""
+    colors = [v for v in ref if v in COLOR_NAMES]
+    return len(ref) <= 2 and len(colors) <= 1 and (not colors or ref[0] in COLOR_NAMES) and len(ref) - len(colors) <= 1
 
 
 def delexicalise(words: list[str]) -> tuple[list[str], list[Ref]]:

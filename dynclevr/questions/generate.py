@@ -11,7 +11,8 @@ reason.
 
 Across the split (`select`): per scene and family a few questions with the answers taken in turn, then per family
 no answer above `max_answer_share` and, for counterfactuals, at most `max_copy_share` answered by copying the
-video's own outcome, where the data allows. Every draw comes from a seeded generator.
+video's own outcome, where the data allows. Every draw comes from a seeded generator. The wording of each
+question is drawn from the phrasing grammar (phrasing.py): only its seen phrasings, or all (`annotate.phrasings`).
 """
 
 from __future__ import annotations
@@ -152,8 +153,8 @@ def _bindings(fam: dict, scene: Scene4D):
             yield dict(zip(names, objs)), dict(slots)
 
 
-def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarray | None = None
-                     ) -> tuple[list[dict], Counter]:
+def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarray | None = None,
+                     phrasings: str = "seen") -> tuple[list[dict], Counter]:
     """Every answerable question of one scene, its answer from the truth by the executor in strict mode, and the
     bindings dropped per (family, reason). `seen` [T, N]: the objects a viewer sees (default: centres in view).
 
@@ -182,7 +183,7 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarr
                 w = np.array([wt for _, wt in options])
                 text, program = describe(o, options[rng.choice(len(options), p=w / w.sum())][0], rng)
                 values[name] = {"text": text, "program": program}
-            text, program = phrase(fam, values, slot_keys, rng)
+            text, program = phrase(fam, values, slot_keys, rng, phrasings)
             try:
                 answer = ex.run(program)
             except AmbiguousLabel as e:
@@ -207,6 +208,8 @@ def check_annotate_cfg(cfg: dict) -> dict:
     for k in ("max_answer_share", "max_copy_share"):
         if not 0.5 <= cfg.get(k, 0) <= 1:
             raise ConfigError(f"'annotate.{k}' = {cfg.get(k)!r} must lie in [0.5, 1]")
+    if cfg.get("phrasings") not in ("seen", "all"):
+        raise ConfigError(f"'annotate.phrasings' = {cfg.get('phrasings')!r} must be \"seen\" or \"all\"")
     return cfg
 
 

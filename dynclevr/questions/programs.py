@@ -291,7 +291,10 @@ def get_frame(w: World, event: Collision) -> FrameID:
 
 @op("come_in_frame", Object, returns=FrameID)
 def come_in_frame(w: World, obj: Object) -> FrameID:
-    seen = w.seen[:, w._index[obj]].nonzero()[0]
+    # The scene's own visibility (truth: the centre in the image; estimate: the track), in strict mode too, so that
+    # the truth gives the same frame to the generator and to the oracle; strict mode then refuses a frame where
+    # the rendered masks do not show the object.
+    seen = w.scene.visible[:, w._index[obj]].nonzero()[0]
     if len(seen) == 0:
         raise ProgramError(f"object {obj} never comes into view")
     return FrameID(min(int(seen[0]) + w.start_frame, w.scene.num_frames - 1))

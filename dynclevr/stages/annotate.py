@@ -26,7 +26,7 @@ from dynclevr.artifacts import Store, file_digest, read_parquet, write_parquet
 from dynclevr.config import Config
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.questions.evidence import mask_gap, mesh_gap, pixel_counts
-from dynclevr.questions.generate import TEMPLATES_PATH, family_names, scene_candidates, select
+from dynclevr.questions.generate import TEMPLATES_PATH, check_annotate_cfg, family_names, scene_candidates, select
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
 from dynclevr.questions.tables import (DROPPED, DROPPED_SCHEMA, DROPPED_VERSION, EVENTS, EVENTS_SCHEMA, EVENTS_VERSION,
                                        LABELS, LABELS_SCHEMA, LABELS_VERSION, QUESTIONS_SCHEMA, QUESTIONS_VERSION,
@@ -69,7 +69,8 @@ def run_scene(job: SceneJob) -> None:
     write_parquet(_events_table(scene, cfg["labels"]["collision_merge_frames"], masks), events_path, EVENTS_SCHEMA,
                   EVENTS_VERSION)
     seen = (pixels >= cfg["labels"]["min_visible_pixels"]) & scene.visible
-    candidates, dropped = scene_candidates(scene, cfg["labels"], job.seed, seen)
+    candidates, dropped = scene_candidates(scene, cfg["labels"], job.seed, seen,
+                                           check_annotate_cfg(cfg["annotate"])["phrasings"])
     write_questions(candidates, questions_path)
     write_parquet(pa.Table.from_pylist([{"family": f, "reason": r, "count": n} for (f, r), n in sorted(dropped.items())],
                                        schema=DROPPED), dropped_path, DROPPED_SCHEMA, DROPPED_VERSION)
