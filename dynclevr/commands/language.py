@@ -123,7 +123,7 @@ def _scene(runner, cfg, name: str, index: int, on: str, variant: str, opts: str)
                                 f"`dynclevr simulate --split {split} --scenes {index}{opts}`")
         return Scene4D.read(path)
     store = Store(runner.store.data_dir, split, variant)
-    parsed, future = store.path("parse-scene", name, ".mcap"), store.path("simulate-future", name, ".mcap")
+    parsed, future = store.path("parse-scene", name, ".mcap"), store.path("simulate-future", name, ".parquet")
     if not parsed.exists() or not future.exists():
         raise DynclevrError(f"scene {name} of split {split} has no estimate yet: run `dynclevr run --split {split} "
                             f"--scenes {index}{opts}` (or ask with --on truth)")
@@ -183,7 +183,7 @@ def _evidence(trace: list, scene) -> list[str]:
         elif token in ("exist",) and isinstance(inputs[0], CollisionEventSet):
             events = ", ".join(f"{e.a}-{e.b} at frame {e.frame}" for e in inputs[0]) or "none"
             lines.append(f"collisions considered: {events}")
-    return lines
+    return list(dict.fromkeys(lines))   # a reference used twice ('when X hits Y, is X ...') is said once
 
 
 def _ask_file(file: Path, parser, world, labels_cfg: dict) -> None:

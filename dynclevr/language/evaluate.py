@@ -1,11 +1,11 @@
 """`dynclevr eval-qparser`: how the question parser does on a split's questions, in wordings it saw in training and
 in wordings it never saw, scored by program exact match and by the answer its program gives on the truth scene.
 
-Every question of the split is said again from its program: its family's objects and slot values are read back out of
-the program (`bindings`), then put into one phrasing from the grammar's seen pool and one from its held-out pool
-(phrasing.py). The split's own texts (drawn from every phrasing) are scored as they are. Questions outside what the
-parser can answer (OUT_OF_SCOPE_FILE: gibberish, objects no catalogue has, questions of no family) must come back
-unparsed; their share is reported too.
+Every question of the split is said again from its program: its family's objects and slot values are read back out
+of the program (`bindings`), then put into one phrasing from the grammar's seen pool and one from its held-out pool
+(phrasing.py). The split's own texts (drawn as `annotate.phrasings` says) are scored as they are. Questions outside
+what the parser can answer (OUT_OF_SCOPE_FILE: gibberish, objects no catalogue has, questions of no family) must
+come back unparsed; their share is reported too.
 """
 
 from __future__ import annotations

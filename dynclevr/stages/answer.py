@@ -108,9 +108,10 @@ def finalize(store, cfg, scenes: list[str]) -> list[Path]:
 
 
 def _extra(store, cfg) -> dict[str, str]:
-    # The weights themselves, not their manifest: a retrain that gives the same bytes reruns nothing.
+    # The parser's weights themselves, not their manifest nor the blind baseline beside them (the report's): a
+    # retrain that gives the same bytes reruns nothing.
     q = store.split_file("questions.parquet")
-    weights = sorted(p for p in (WEIGHTS_DIR / "qparser").glob("*") if p.name != "manifest.json")
+    weights = sorted(p for p in (WEIGHTS_DIR / "qparser").glob("*") if p.name not in ("manifest.json", "blind.json"))
     return {"questions": file_digest(q) if q.exists() else "missing",
             **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
