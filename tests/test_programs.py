@@ -94,6 +94,9 @@ CASES = [
     (f"{BUS} start query_moving_velocity", "slow"),
     (f"{JET} start query_moving_velocity", "fast"),
     (f"{FIGHTER} start query_moving_velocity", "static"),
+    (f"{BUS} start is_moving_velocity[slow]", "true"),
+    (f"{JET} start is_moving_velocity[slow]", "false"),
+    (f"{JET} start is_moving_velocity[fast]", "true"),
     (f"{FIGHTER} Events {RED_SEDAN} filter_collision unique get_frame query_moving_velocity", "slow"),  # frame 20
     ("Objects start filter_static filter_attributes[car] unique query_attributes[color]", "red"),
     ("Objects start filter_moving_velocity[fast] unique query_attributes[shape]", "jet"),
