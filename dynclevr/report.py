@@ -32,6 +32,20 @@ def _answers(store: Store, variant: str) -> list[dict] | None:
     return read_parquet(path, ANSWERS_SCHEMA, ANSWERS_VERSION).to_pylist() if path.exists() else None
 
 
+def stale_answers(cfg: Config, store: Store, answers: list[dict], questions: list[dict]) -> str | None:
+    """Why a model row's answers are not those of the current questions and parses (None: they are). The answer
+    stage's cache keys know: a scene is stale when its questions, its parse or its future changed since it ran."""
+    from dynclevr.pipeline import Runner
+
+    status = Runner(cfg, cfg.split(store.split), store.data_dir, echo=lambda *a: None).status("answer")
+    if status["stale"] or status["missing"]:
+        return (f"answer is stale for {len(status['stale'])} and has not run for {len(status['missing'])} of "
+                f"{len(cfg.split(store.split).scene_names())} scenes")
+    if {a["id"] for a in answers} != {q["id"] for q in questions}:
+        return "answers.parquet does not cover the current questions.parquet"
+    return None
+
+
 def oracle_rows(store: Store, cfg: Config, questions: list[dict]) -> list[dict]:
     """Gold programs on the truth scenes: checks the executor and the generator agree (must be 100%)."""
     executors: dict[str, Executor] = {}
@@ -56,14 +70,23 @@ def blind_rows(questions: list[dict]) -> list[dict] | None:
     return [{**q, "correct": majority.get(q["family"]) == q["answer"]} for q in questions]
 
 
-def build(store: Store, cfg: Config) -> tuple[dict[str, tuple], dict]:
+def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple], dict]:
+    """The table's rows and notes. A model row is computed only from answers of the current questions and parses:
+    otherwise one error naming what is stale and `rerun`, the command that fixes it. A model variant never run
+    (`run --no-ablation`) is left out with a note; the main model must have run."""
     questions = read_parquet(store.split_file("questions.parquet"), QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
     rows: dict[str, tuple] = {}
     extra = {"questions": len(questions), "videos": len({q["scene"] for q in questions})}
-    for name, model_cfg in model_configs(cfg):
+    for k, (name, model_cfg) in enumerate(model_configs(cfg)):
         answers = _answers(store, model_variant(model_cfg))
+        if answers is None and k == 0:
+            raise DynclevrError(f"no answers of split {store.split} yet: run `{rerun}`")
         if answers is None:
+            extra[f"{name}"] = "not run"
             continue
+        why = stale_answers(model_cfg, store, answers, questions)
+        if why:
+            raise DynclevrError(f"the row '{name}' would show stale numbers ({why}): run `{rerun}`")
         rows[name] = tuple(table1(answers)[c][0] for c in COLUMNS)
         extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / max(len(answers), 1)
         extra[f"{name}: unparsed"] = sum(a["status"] == "unparsed" for a in answers)

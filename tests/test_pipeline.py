@@ -88,3 +88,29 @@ def test_workers_are_replaced_in_rounds_and_the_bytes_do_not_change(tmp_path, mo
     for scene in ("000000", "000001", "000002"):
         assert (pooled.store.path("simulate", scene, ".mcap").read_bytes()
                 == alone.store.path("simulate", scene, ".mcap").read_bytes())
+
+
+def test_report_refuses_stale_or_missing_answers(run, tmp_path):
+    """Issue 14: after the questions change (annotate rerun with another config) the report must not show the old
+    answers beside the new questions, and a missing answers table must not silently drop our row."""
+    import shutil
+
+    data, _, _ = run
+    shutil.copytree(data, tmp_path / "data")
+    config = tmp_path / "fewer.toml"
+    config.write_text("[splits.ci]\nseed = 7\nscenes = 2\n[annotate]\nmax_per_family = 1\n")
+
+    def cli(*args):
+        return subprocess.run([sys.executable, "-m", "dynclevr.cli", *args, "--split", "ci", "--config", str(config),
+                               "--data-dir", str(tmp_path / "data")], capture_output=True, text=True)
+
+    assert cli("annotate").returncode == 0
+    out = cli("report")
+    fix = f"run `dynclevr run --split ci --data-dir {tmp_path / 'data'} --config {config}`"
+    assert out.returncode == 2 and out.stderr.strip().splitlines() == [
+        f"error: the row 'NS-4DPhysics (ours)' would show stale numbers (answer is stale for 2 and has not run for 0 "
+        f"of 2 scenes): {fix}"]
+    assert cli("run").returncode == 0 and cli("report").returncode == 0
+    (tmp_path / "data" / "ci" / "answers" / "answers.parquet").unlink()
+    out = cli("report")
+    assert out.returncode == 2 and out.stderr.strip() == f"error: no answers of split ci yet: {fix}"

@@ -20,7 +20,9 @@ def register(app: typer.Typer) -> None:
 
         cfg = Config.load(config)
         store = Store(data_dir, cfg.split(split).name)
-        rows, extra = build(store, cfg)
+        rerun = (f"dynclevr run --split {store.split}" + (f" --data-dir {data_dir}" if Path(data_dir) != Path("data")
+                                                          else "") + (f" --config {config}" if config else ""))
+        rows, extra = build(store, cfg, rerun)
         text = markdown(store.split, rows, extra)
         typer.echo(text)
         with atomic_path(store.root / "report.md") as tmp:
