@@ -147,17 +147,35 @@ def digest_outputs(outputs: list[Path]) -> str:
 SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate"}
 
 
+VARIANT_FLAGS = {"noprior": " --no-physics-prior", "particle": " --particle-filter"}   # store variant -> CLI flag
+
+# The user's --config, set by the CLI, so that a printed command acts on the same data and settings as the one that
+# failed (the data dir comes from the artifact's own path).
+HINT_OPTIONS: dict[str, Path | None] = {"config": None}
+
+
+def command_options(data_dir: Path) -> str:
+    """' --data-dir D --config C' where they differ from the defaults: what a printed command must repeat."""
+    opts = "" if Path(data_dir).resolve() == Path("data").resolve() else f" --data-dir {data_dir}"
+    return opts + (f" --config {HINT_OPTIONS['config']}" if HINT_OPTIONS["config"] else "")
+
+
 def rerun_hint(path: Path) -> str:
+    """The command that rewrites a missing or damaged artifact: the stage on that scene only (the cache sees the
+    damage, so no --force), or the stage for a split-level table."""
     path = Path(path)
     if path.name in SPLIT_FILES:
-        stage, split, variant = SPLIT_FILES[path.name], path.parent.name, ""
-    else:   # <data-dir>/<split>/<stage dir>[-<variant>]/<file>
+        stage, split, variant, scenes = SPLIT_FILES[path.name], path.parent.name, "", ""
+        data_dir = path.parent.parent
+    else:   # <data-dir>/<split>/<stage dir>[-<variant>]/<scene><suffix>
         kind, _, variant = path.parent.name.partition("-")
-        stage, split = DIR_STAGES.get(kind), path.parent.parent.name
+        stage, split, data_dir = DIR_STAGES.get(kind), path.parent.parent.name, path.parent.parent.parent
+        scene = path.name.split(".", 1)[0]
+        scenes = f" --scenes {int(scene)}" if scene.isdigit() else ""
     if not stage:
         return "regenerate it"
-    flag = {"noprior": " --no-physics-prior", "particle": " --particle-filter"}.get(variant, "")
-    return f"rerun `dynclevr {stage} --split {split}{flag} --force`"
+    flag = VARIANT_FLAGS.get(variant, "")
+    return f"rerun `dynclevr {stage} --split {split}{scenes}{flag}{command_options(data_dir)}`"
 
 
 # ---- Parquet ---------------------------------------------------------------------------------------------------

@@ -105,8 +105,20 @@ def _register_commands() -> None:
         importlib.import_module(f"dynclevr.commands.{info.name}").register(app)
 
 
+def _remember_config(argv: list[str]) -> None:
+    """Error hints print commands; they must carry the user's --config (artifacts.HINT_OPTIONS)."""
+    from dynclevr.artifacts import HINT_OPTIONS
+
+    for k, arg in enumerate(argv):
+        if arg == "--config" and k + 1 < len(argv):
+            HINT_OPTIONS["config"] = Path(argv[k + 1])
+        elif arg.startswith("--config="):
+            HINT_OPTIONS["config"] = Path(arg.split("=", 1)[1])
+
+
 def main() -> None:
     _register_commands()
+    _remember_config(sys.argv[1:])
     try:
         app()  # standalone: typer reports usage errors itself and exits
     except DynclevrError as e:

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Callable
 
 from dynclevr import DynclevrError
-from dynclevr.artifacts import STAGE_DIRS, Manifest, Store
+from dynclevr.artifacts import MODEL_STAGES, STAGE_DIRS, VARIANT_FLAGS, Manifest, Store, command_options
 from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
@@ -114,7 +114,7 @@ def parse_scenes(spec: str | None, split: Split) -> list[int]:
             lo, _, hi = part.partition("-")
             lo, hi = int(lo), int(hi or lo)
             if hi < lo:
-                raise ValueError
+                raise DynclevrError(f"--scenes '{spec}': the range {part} is reversed (did you mean {hi}-{lo}?)")
             out.extend(range(lo, hi + 1))
     except ValueError:
         raise DynclevrError(f"--scenes '{spec}' is not a list of indices or ranges such as 3-5 or 0,2,7-9") from None
@@ -139,7 +139,9 @@ class Runner:
             if d is None:
                 what = (f"{manifests[up].path} is corrupt" if manifests[up].corrupt
                         else f"{STAGE_DIRS[up]}/{scene} is missing")
-                raise DynclevrError(f"{what} for {stage.name}: run `dynclevr {up} --split {self.split.name}` first")
+                flag = VARIANT_FLAGS.get(self.store.variant, "") if up in MODEL_STAGES else ""
+                raise DynclevrError(f"{what} for {stage.name}: run `dynclevr {up} --split {self.split.name}{flag}"
+                                    f"{command_options(self.store.data_dir)}` first")
             digests[up] = d
         return digests
 

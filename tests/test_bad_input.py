@@ -63,7 +63,9 @@ def test_deleted_input_names_the_stage_to_rerun_and_keeps_the_rest(data):
     store.path("simulate", "000001", ".mcap").unlink()
     before = checksums(data)
     line = error_line(cli(data, "annotate", "--force"))
-    assert "sim/000001.mcap is missing" in line and "`dynclevr simulate --split x --force`" in line
+    # the exact command: that scene only (no --force: the cache sees the damage), on this data dir and config
+    assert "sim/000001.mcap is missing" in line and (
+        f"`dynclevr simulate --split x --scenes 1 --data-dir {data} --config {data.parent / 'x.toml'}`") in line
     assert checksums(data) == before
     assert cli(data, "simulate").returncode == 0   # the same seed gives the same bytes: annotate stays cached
     out = cli(data, "annotate")
@@ -80,7 +82,7 @@ def test_damaged_video_is_one_clear_error(data, damage):
         raw[len(raw) // 2:len(raw) // 2 + 200] = bytes(200)
     path.write_bytes(bytes(raw))
     with pytest.raises(ArtifactError, match=r"000000.mcap is (not a readable MCAP file|corrupt).*"
-                                            r"rerun `dynclevr render --split x --force`") as e:
+                                            r"rerun `dynclevr render --split x --scenes 0 --data-dir ") as e:
         Video.read(path).frames()
     assert "\n" not in str(e.value)
     line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent / "x.mp4")))
@@ -92,7 +94,8 @@ def test_garbage_manifest_costs_a_rerun_not_the_data(data):
     (sim / "manifest.json").write_text("garbage{")
     before = {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")}
     line = error_line(cli(data, "annotate"))
-    assert "sim/manifest.json is corrupt for annotate: run `dynclevr simulate --split x` first" in line
+    assert (f"sim/manifest.json is corrupt for annotate: run `dynclevr simulate --split x --data-dir {data} "
+            f"--config {data.parent / 'x.toml'}` first") in line
     assert cli(data, "simulate").returncode == 0
     assert {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")} == before
     out = cli(data, "annotate")
@@ -115,7 +118,7 @@ def test_wrong_version_questions_table(data):
     line = error_line(cli(data, "report"))
     assert (f"has schema dynclevr.questions v{QUESTIONS_VERSION + 1}, expected dynclevr.questions "
             f"v{QUESTIONS_VERSION}") in line
-    assert "`dynclevr annotate --split x --force`" in line
+    assert f"`dynclevr annotate --split x --data-dir {data} --config {data.parent / 'x.toml'}`" in line
     # annotate sees the split-level table changed and writes it again, without --force
     out = cli(data, "annotate")
     assert out.returncode == 0 and "wrote questions.parquet" in out.stdout, out.stdout
@@ -124,10 +127,10 @@ def test_wrong_version_questions_table(data):
 
 def test_answer_before_its_inputs(data, tmp_path):
     line = error_line(cli(data, "answer"))
-    assert "parsed/000000 is missing for answer: run `dynclevr parse-scene --split x` first" in line
+    assert "parsed/000000 is missing for answer: run `dynclevr parse-scene --split x --data-dir" in line
     # questions.parquet is read before anything else of the model's
     job = SceneJob(SPLIT, "000000", 0, 0, Config.load().data, tmp_path / "empty", {}, [tmp_path / "a.parquet"])
-    with pytest.raises(ArtifactError, match=r"questions.parquet is missing: rerun `dynclevr annotate --split x"):
+    with pytest.raises(ArtifactError, match=r"questions.parquet is missing: rerun `dynclevr annotate --split x --data-dir"):
         answer.run_scene(job)
 
 
@@ -189,3 +192,22 @@ def test_split_table_waits_for_stale_scenes(data, tmp_path):
     assert path.read_bytes() == before and any("wait for 1 scenes" in s for s in said), said
     runner.run("annotate", [1])
     assert "annotate: wrote questions.parquet" in said
+
+
+def test_hints_are_commands_that_fix_it(data):
+    """Issue 14: a printed fix is the exact command (typed as printed, it repairs the damaged scene only)."""
+    path = Store(data, SPLIT).path("render", "000001", ".mcap")
+    other = Store(data, SPLIT).path("render", "000000", ".mcap").read_bytes()
+    path.write_bytes(path.read_bytes()[:1000])
+    line = error_line(cli(data, "annotate", "--force"))
+    command = line.split("`")[1]
+    out = subprocess.run([sys.executable, "-m", "dynclevr.cli", *command.split()[1:]], capture_output=True, text=True)
+    assert out.returncode == 0 and "render: 1 to run, 0 cached" in out.stdout, (command, out.stdout, out.stderr)
+    assert Store(data, SPLIT).path("render", "000000", ".mcap").read_bytes() == other   # only the damaged scene
+    assert cli(data, "annotate", "--force").returncode == 0
+
+
+def test_reversed_range_and_missing_data_dir_say_so(data, tmp_path):
+    assert "the range 5-2 is reversed (did you mean 2-5?)" in error_line(cli(data, "render", "--scenes", "5-2"))
+    line = error_line(cli(tmp_path / "nowhere", "stats"))
+    assert "no simulated scenes under" in line and f"--data-dir {tmp_path / 'nowhere'}" in line

@@ -175,14 +175,14 @@ def test_corrupt_and_wrong_version_files_give_clear_errors(simulated, tmp_path):
     path = store.path("simulate", "000001", ".mcap")
     path.write_bytes(path.read_bytes()[:5000])
     with pytest.raises(ArtifactError, match=r"000001.mcap is (not a readable MCAP file|corrupt).*"
-                                            r"rerun `dynclevr simulate --split t --force`") as e:
+                                            r"rerun `dynclevr simulate --split t --scenes 1 --data-dir ") as e:
         simulate.stats(store, cfg)
     assert "\n" not in str(e.value)
     with McapOut(path, SCENE_SCHEMA, SCENE_VERSION + 1):
         pass
     with pytest.raises(ArtifactError,
                        match=rf"v{SCENE_VERSION + 1}, expected dynclevr.scene4d v{SCENE_VERSION}: rerun `dynclevr "
-                             r"simulate --split t --force`"):
+                             r"simulate --split t --scenes 1 --data-dir "):
         simulate.stats(store, cfg)
 
 

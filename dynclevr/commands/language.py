@@ -36,7 +36,7 @@ def register(app: typer.Typer) -> None:
         path = r.store.split_file("questions.parquet")
         if not path.exists():
             raise DynclevrError(f"{path} is missing: run `dynclevr annotate --split {r.split.name}"
-                                f"{_opts(data_dir, config)}` first")
+                                f"{_opts(data_dir)}` first")
         questions = read_parquet(path, QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
         truth = {s: Scene4D.read(r.store.path("simulate", s, ".mcap")) for s in sorted({q["scene"] for q in questions})}
         result = evaluate(QuestionParser.load(), questions, truth, cfg["labels"], seed)
@@ -69,7 +69,7 @@ def register(app: typer.Typer) -> None:
         cfg = load_config(config, no_physics_prior, particle_filter)
         runner = Runner(cfg, cfg.split(split), data_dir, echo=typer.echo)
         names = runner.split.scene_names()
-        opts = _opts(data_dir, config, " --no-physics-prior" * no_physics_prior + " --particle-filter" * particle_filter)
+        opts = _opts(data_dir, " --no-physics-prior" * no_physics_prior + " --particle-filter" * particle_filter)
         parser = QuestionParser.load()
         scenes: dict[str, object] = {}
 
@@ -103,10 +103,11 @@ def register(app: typer.Typer) -> None:
             raise typer.Exit(1)
 
 
-def _opts(data_dir: Path, config: Optional[Path], extra: str = "") -> str:
+def _opts(data_dir: Path, extra: str = "") -> str:
     """The options a printed command must repeat to act on the same data."""
-    return (f" --data-dir {data_dir}" if Path(data_dir) != Path("data") else "") + (
-        f" --config {config}" if config else "") + extra
+    from dynclevr.artifacts import command_options
+
+    return command_options(data_dir) + extra
 
 
 def _scene(runner, cfg, name: str, index: int, on: str, variant: str, opts: str):

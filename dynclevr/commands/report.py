@@ -14,14 +14,13 @@ def register(app: typer.Typer) -> None:
     @app.command()
     def report(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt):
         """Accuracy table: ours, ours without the physics prior, oracle, blind, and the paper's rows."""
-        from dynclevr.artifacts import Store, atomic_path
+        from dynclevr.artifacts import Store, atomic_path, command_options
         from dynclevr.config import Config
         from dynclevr.report import bar_chart, build, markdown
 
         cfg = Config.load(config)
         store = Store(data_dir, cfg.split(split).name)
-        rerun = (f"dynclevr run --split {store.split}" + (f" --data-dir {data_dir}" if Path(data_dir) != Path("data")
-                                                          else "") + (f" --config {config}" if config else ""))
+        rerun = f"dynclevr run --split {store.split}{command_options(data_dir)}"
         rows, extra = build(store, cfg, rerun)
         text = markdown(store.split, rows, extra)
         typer.echo(text)

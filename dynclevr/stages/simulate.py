@@ -26,7 +26,8 @@ from pathlib import Path
 import numpy as np
 import pyarrow as pa
 
-from dynclevr.artifacts import Store, write_parquet
+from dynclevr import DynclevrError
+from dynclevr.artifacts import Store, command_options, write_parquet
 from dynclevr.assets.catalogue import SUBTYPES, get_asset
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
@@ -253,7 +254,8 @@ def stats(store: Store, cfg: Config) -> str:
     paths = [store.path("simulate", s, ".mcap") for s in split.scene_names()]
     paths = [p for p in paths if p.exists()]
     if not paths:
-        return f"no simulated scenes under {store.stage_dir('simulate')}: run `dynclevr simulate --split {split.name}`"
+        raise DynclevrError(f"no simulated scenes under {store.stage_dir('simulate')}: run `dynclevr simulate --split "
+                            f"{split.name}{command_options(store.data_dir)}`")
     per_scene, classes, cats = [], Counter(), Counter()
     engine = floating = falling = 0
     n_col, with_col, with_future, cf_runs, cf_changed, cf_any = [], 0, 0, 0, 0, 0
