@@ -60,7 +60,12 @@ def atomic_path(path: Path):
     os.close(fd)
     os.chmod(tmp, 0o644)  # mkstemp's 0600 would make artifacts unreadable to the rest of a team
     try:
-        yield Path(tmp)
+        try:
+            yield Path(tmp)
+        except OSError as e:   # a full disk while writing: name the file (the error itself often names none)
+            if e.filename:
+                raise
+            raise ArtifactError(f"cannot write {path} ({e.strerror}): check the free space on its disk") from None
         try:
             os.replace(tmp, path)
         except OSError as e:

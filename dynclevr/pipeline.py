@@ -8,9 +8,12 @@ are written by `finalize` once every scene of the split is done.
 
 from __future__ import annotations
 
+import contextlib
 import copy
+import fcntl
 import importlib
 import os
+import sys
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
@@ -156,6 +159,10 @@ class Runner:
     # ---- running -------------------------------------------------------------------------------------------------
 
     def run(self, name: str, indices: list[int], force: bool = False) -> dict[str, float]:
+        with split_lock(self.store.root, self.echo):
+            return self._run(name, indices, force)
+
+    def _run(self, name: str, indices: list[int], force: bool) -> dict[str, float]:
         start = time.perf_counter()
         stage = get_stage(name)
         manifests = {up: self.store.manifest(up) for up in stage.inputs}
@@ -268,6 +275,48 @@ class Runner:
                 continue
             out["done" if manifest.fresh(scene, key, self._outputs(stage, scene)) else "stale"].append(scene)
         return out
+
+
+# ---- one writer per split -------------------------------------------------------------------------------------------
+
+_HELD: dict[Path, int] = {}   # lock file -> nesting depth in this process (`run` takes it once per stage)
+LEFTOVER_AGE = 60.0            # seconds: a temporary file this old, found under the lock, is a killed write's
+
+
+@contextlib.contextmanager
+def split_lock(root: Path, echo=print):
+    """Hold <data-dir>/<split>/.lock while a stage runs: a second dynclevr process on the split says what it waits
+    for and waits, so that two runs never interleave their manifests or both do the same work. Under the lock,
+    temporary files that a killed write left behind are removed."""
+    path = (Path(root) / ".lock").resolve()
+    if path in _HELD:
+        _HELD[path] += 1
+        try:
+            yield
+        finally:
+            _HELD[path] -= 1
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "a+") as f:
+        try:
+            fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            f.seek(0)
+            echo(f"waiting for {path}: held by {f.read().strip() or 'another dynclevr process'}")
+            fcntl.flock(f, fcntl.LOCK_EX)
+        f.seek(0)
+        f.truncate()
+        f.write(f"pid {os.getpid()} (dynclevr {' '.join(sys.argv[1:])})")
+        f.flush()
+        now = time.time()
+        for tmp in path.parent.rglob(".*.tmp"):
+            if now - tmp.stat().st_mtime > LEFTOVER_AGE:
+                tmp.unlink(missing_ok=True)
+        _HELD[path] = 1
+        try:
+            yield
+        finally:
+            del _HELD[path]   # closing the file releases the lock
 
 
 def _worker_init() -> None:

@@ -211,3 +211,33 @@ def test_reversed_range_and_missing_data_dir_say_so(data, tmp_path):
     assert "the range 5-2 is reversed (did you mean 2-5?)" in error_line(cli(data, "render", "--scenes", "5-2"))
     line = error_line(cli(tmp_path / "nowhere", "stats"))
     assert "no simulated scenes under" in line and f"--data-dir {tmp_path / 'nowhere'}" in line
+
+
+def test_two_runs_on_one_split_take_turns(data):
+    """Issue 14: two stage runs at once on one data dir: the second says what it waits for; both manifest entries
+    survive; a killed write's leftover temporary file is removed."""
+    import os
+    import time
+
+    store = Store(data, SPLIT)
+    leftover = store.stage_dir("render") / ".000000.mcap.abcd.tmp"
+    leftover.write_bytes(b"half a file")
+    os.utime(leftover, (time.time() - 3600, time.time() - 3600))
+    config = data.parent / "x.toml"
+    args = [sys.executable, "-m", "dynclevr.cli", "render", "--force", "--split", SPLIT, "--config", str(config),
+            "--data-dir", str(data), "--scenes"]
+    first = subprocess.Popen(args + ["0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    lock = store.root / ".lock"
+    deadline = time.time() + 60
+    while not (lock.exists() and f"pid {first.pid}" in lock.read_text()) and time.time() < deadline:
+        time.sleep(0.05)
+    second = subprocess.run(args + ["1"], capture_output=True, text=True)
+    assert first.wait(60) == 0 and second.returncode == 0, second.stderr
+    assert f"held by pid {first.pid} (dynclevr render --force" in second.stdout
+    manifest = Manifest(store.stage_dir("render") / "manifest.json")
+    assert set(manifest.entries) >= {"000000", "000001"}
+    assert not leftover.exists()
+    status = subprocess.run([sys.executable, "-m", "dynclevr.cli", "status", "--split", SPLIT, "--config",
+                             str(config), "--data-dir", str(data)], capture_output=True, text=True)
+    render = next(line for line in status.stdout.splitlines() if line.split()[:1] == ["render"])
+    assert render.split() == ["render", "done", "2", "stale", "0", "missing", "0"], status.stdout
