@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Callable
 
 from dynclevr import DynclevrError
-from dynclevr.artifacts import MODEL_STAGES, STAGE_DIRS, VARIANT_FLAGS, Manifest, Store, command_options
+from dynclevr.artifacts import MODEL_STAGES, ArtifactError, STAGE_DIRS, VARIANT_FLAGS, Manifest, Store, command_options
 from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
@@ -296,8 +296,12 @@ def split_lock(root: Path, echo=print):
         finally:
             _HELD[path] -= 1
         return
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "a+") as f:
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        f = open(path, "a+")
+    except OSError as e:   # --data-dir names a file, or a folder without write permission
+        raise ArtifactError(f"cannot write {path} ({e.strerror}): choose a writable folder") from None
+    with f:
         try:
             fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
