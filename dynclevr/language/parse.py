@@ -11,8 +11,8 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
 - the decoding's probability is below `min_confidence` (a wording unlike any the parser learnt);
 - it names an object the catalogue lacks ('the green *tractor*', 'the *pink* suv': object words next to an unknown
   word), or runs object words together that describe no one object ('red blue green');
-- the program leaves out an object the question names ("Is the red sedan bigger than the blue bus?" read as a
-  question about one of them), or refers to one it does not name. Object words reach the program only through the
+- the program leaves out an object the question names (a sentence read as a question about fewer objects), or
+  refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
 """
 
@@ -30,10 +30,10 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.tokenize import tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
 from dynclevr.language.references import (OBJECT_WORDS, concrete_program, delexicalise, is_description,
                                           placeholders)
+from dynclevr.language.tokenize import tokenize
+from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -121,9 +121,9 @@ class QuestionParser:
                 out[i] = Parse(None, why)
             else:
                 words, refs = delexicalise(words)
-                bad = [r for r in refs if not is_description(r)]
-                if bad:
-                    out[i] = Parse(None, f"'{' '.join(bad[0]).replace('_', ' ')}' does not describe one object")
+                why = self._objects(words, refs)
+                if why:
+                    out[i] = Parse(None, why)
                 else:
                     todo.append((i, words, refs))
         for start in range(0, len(todo), BATCH):
@@ -152,18 +152,25 @@ class QuestionParser:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         return words, ""
 
-    def _check(self, words: list[str], refs: list, ids: list[int] | None, p: float, attended: list[float]) -> Parse:
-        if not ids:
-            return Parse(None, "no program came out of the decoder", p)
+    def _objects(self, words: list[str], refs: list) -> str:
+        """Why the question's object words name no object of the catalogue ('' when they all do)."""
+        bad = [r for r in refs if not is_description(r)]
+        if bad:
+            return f"'{' '.join(bad[0]).replace('_', ' ')}' does not describe one object"
         for k, w in enumerate(words):
             if not w.startswith("<obj"):
                 continue
             named = " ".join(refs[int(w[4:-1]) - 1]).replace("_", " ")
             before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
             if after and after not in self.known:     # 'the green tractor': an object the catalogue lacks
-                return Parse(None, f"the question names the {named} {after}: no vehicle here is called '{after}'", p)
+                return f"the question names the {named} {after}: no vehicle here is called '{after}'"
             if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
-                return Parse(None, f"the question names the {before} {named}: no object here is '{before}'", p)
+                return f"the question names the {before} {named}: no object here is '{before}'"
+        return ""
+
+    def _check(self, words: list[str], refs: list, ids: list[int] | None, p: float, attended: list[float]) -> Parse:
+        if not ids:
+            return Parse(None, "no program came out of the decoder", p)
         hinges = [w for w, a in zip(words, attended) if w not in self.words and a > self.params.max_unknown_attention]
         if hinges:
             return Parse(None, "the question turns on " + ", ".join(f"'{w}'" for w in dict.fromkeys(hinges))
