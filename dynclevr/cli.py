@@ -119,8 +119,13 @@ def _remember_config(argv: list[str]) -> None:
 def main() -> None:
     _register_commands()
     _remember_config(sys.argv[1:])
+    from dynclevr.pipeline import Interrupted
+
     try:
         app()  # standalone: typer reports usage errors itself and exits
+    except (Interrupted, KeyboardInterrupt) as e:
+        typer.secho(f"interrupted: {e}" if str(e) else "interrupted", err=True, fg="yellow")
+        sys.exit(130)
     except DynclevrError as e:
         typer.secho(f"error: {e}", err=True, fg="red")
         sys.exit(2)

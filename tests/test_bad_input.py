@@ -242,3 +242,62 @@ def test_two_runs_on_one_split_take_turns(data):
                              str(config), "--data-dir", str(data)], capture_output=True, text=True)
     render = next(line for line in status.stdout.splitlines() if line.split()[:1] == ["render"])
     assert render.split() == ["render", "done", "2", "stale", "0", "missing", "0"], status.stdout
+
+
+def _children(pid: int) -> list[int]:
+    out = subprocess.run(["pgrep", "-P", str(pid)], capture_output=True, text=True).stdout
+    return [int(p) for p in out.split()]
+
+
+def _alive(pid: int) -> bool:
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return state not in ("Z", "X")   # a zombie has exited: only its parent (init here) has yet to reap it
+
+
+def _render_with_workers(data):
+    import time
+
+    args = [sys.executable, "-m", "dynclevr.cli", "render", "--force", "--workers", "2", "--scenes", "0-1",
+            "--split", SPLIT, "--config", str(data.parent / "x.toml"), "--data-dir", str(data)]
+    main = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    deadline = time.time() + 60
+    while len(_children(main.pid)) < 2 and time.time() < deadline:
+        time.sleep(0.1)
+    workers = _children(main.pid)
+    assert len(workers) >= 2, "the pool never started"
+    return main, workers
+
+
+def test_workers_die_with_their_parent(data):
+    """Issue 14: kill -9 of the main process leaves no worker running; a rerun gives the same bytes."""
+    import os
+    import signal
+    import time
+
+    before = checksums(data)
+    main, workers = _render_with_workers(data)
+    os.kill(main.pid, signal.SIGKILL)
+    main.wait()
+    time.sleep(5)
+    assert not [w for w in workers if _alive(w)]
+    assert cli(data, "render").returncode == 0
+    assert checksums(data) == before
+
+
+def test_ctrl_c_stops_cleanly_and_says_how_to_go_on(data):
+    import os
+    import signal
+    import time
+
+    main, workers = _render_with_workers(data)
+    os.killpg(main.pid, signal.SIGINT)   # what a terminal sends: the whole process group
+    _, err = main.communicate(timeout=120)
+    assert main.returncode == 130
+    assert err.strip().splitlines()[-1].startswith("interrupted: render stopped after ") and \
+        err.strip().endswith("run the same command again to go on"), err
+    time.sleep(5)   # (multiprocessing's resource tracker leaves when it notices its parent is gone)
+    assert not [w for w in workers if _alive(w)]
+    assert cli(data, "render").returncode == 0
