@@ -178,6 +178,10 @@ def test_unusable_paths(data):
     line = error_line(cli(blocker, "simulate"))
     assert "cannot write" in line and "choose a writable folder" in line
     line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent)))
+    assert "name the file .mp4" in line
+    folder = data.parent / "a-folder.mp4"
+    folder.mkdir()
+    line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(folder)))
     assert "name a file, not a folder" in line
 
 
@@ -301,3 +305,17 @@ def test_ctrl_c_stops_cleanly_and_says_how_to_go_on(data):
     time.sleep(5)   # (multiprocessing's resource tracker leaves when it notices its parent is gone)
     assert not [w for w in workers if _alive(w)]
     assert cli(data, "render").returncode == 0
+
+
+def test_export_video_is_h264_and_refuses_other_extensions(data):
+    """Issue 14: browsers play the export (probe the codec); a name it cannot write is refused up front."""
+    import imageio_ffmpeg
+
+    out = data.parent / "scene.mp4"
+    done = cli(data, "export-video", "--scene", "0", "--out", str(out), "--overlay", "boxes")
+    assert done.returncode == 0, done.stderr
+    probe = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-i", str(out)], capture_output=True,
+                           text=True).stderr
+    assert "Video: h264" in probe and "yuv420p" in probe and "320x240" in probe, probe
+    line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent / "scene.avi")))
+    assert "writes H.264 in MP4; name the file .mp4" in line and not (data.parent / "scene.avi").exists()
