@@ -165,7 +165,6 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarr
     ex = Executor(scene, labels_cfg, strict=True, seen=seen)
     copy = Executor(scene, labels_cfg, copy_factual=True)
     refs = {o.id: references(scene, o) for o in scene.objects}
-    slots = templates()["slots"]
     out, dropped = [], Counter()
     start = labels_cfg["start_frame"]
     for fam in templates()["families"]:
