@@ -67,6 +67,9 @@ class Scene4D:
     # since a viewer sees them touch. Per video and per counterfactual run.
     grazes: list[Collision] = field(default_factory=list)
     counterfactual_grazes: dict[tuple[int, str], list[Collision]] = field(default_factory=dict)
+    # An estimate's state at the last observed frame from those frames alone (its arrays may use later frames):
+    # arrays per object of CUT_FIELDS; None: the arrays' row is that state (the truth, a causal estimate).
+    cut_state: dict[str, np.ndarray] | None = None
 
     @property
     def num_frames(self) -> int:
@@ -97,6 +100,11 @@ class Scene4D:
                     for i, o in enumerate(self.objects)]})
                 out.proto("/tf", tn, foxglove.frame_transforms(self, t))
                 out.proto("/scene/vehicles", tn, foxglove.scene_update(self, t))
+            if self.cut_state is not None:
+                out.json("/scene/cut_state", "dynclevr.FrameStates", frame_time_ns(self.observed_frames - 1, self.fps),
+                         {"frame": self.observed_frames - 1, "objects": [
+                             {"id": o.id, **{k: _plain(self.cut_state[k][i]) for k in CUT_FIELDS}}
+                             for i, o in enumerate(self.objects)]})
             out.json("/scene/collisions", "dynclevr.CollisionEvents", 0,
                      {"events": [asdict(c) for c in self.collisions]})
             out.json("/scene/future_collisions", "dynclevr.CollisionEvents", 0,
@@ -124,6 +132,7 @@ class Scene4D:
             return [Collision(e["frame"], e["a"], e["b"], tuple(e["point"]), e["impulse"]) for e in msg]
 
         cf = src.first("/scene/counterfactuals")["runs"]
+        cut = next((m["objects"] for _, _, m in src.messages("/scene/cut_state")), None)   # optional
         return cls(
             name=src.meta.get("scene", Path(path).stem), fps=cat["fps"], camera=camera, objects=objects,
             position=stack("position", 3), orientation=stack("orientation", 4), velocity=stack("velocity", 3),
@@ -133,4 +142,20 @@ class Scene4D:
             future_collisions=events(src.first("/scene/future_collisions")["events"]),
             counterfactuals={(r["object"], r["intervention"]): events(r["events"]) for r in cf},
             observed_frames=cat["observed_frames"], grazes=events(src.first("/scene/grazes")["events"]),
-            counterfactual_grazes={(r["object"], r["intervention"]): events(r["grazes"]) for r in cf if r["grazes"]})
+            counterfactual_grazes={(r["object"], r["intervention"]): events(r["grazes"]) for r in cf if r["grazes"]},
+            cut_state=None if cut is None else {k: np.array([o[k] for o in cut]) for k in CUT_FIELDS})
+
+    def state_at(self, frame: int) -> dict[str, np.ndarray]:
+        """Per-object arrays of CUT_FIELDS at `frame`: the cut state there, where the estimate has one."""
+        if self.cut_state is not None and frame == self.observed_frames - 1:
+            return self.cut_state
+        return {"position": self.position[frame], "orientation": self.orientation[frame],
+                "velocity": self.velocity[frame], "angular_velocity": self.angular_velocity[frame],
+                "engine": self.engine[frame], "floating": self.floating[frame]}
+
+
+CUT_FIELDS = ("position", "orientation", "velocity", "angular_velocity", "engine", "floating")
+
+
+def _plain(x):
+    return bool(x) if np.ndim(x) == 0 else np.asarray(x, float).tolist()

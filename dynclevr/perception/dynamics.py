@@ -99,3 +99,25 @@ def floating(category: str, z: float, half_height: float, acc: np.ndarray, gravi
 def speed_class(speed: float, slow: float, fast: float) -> str:
     centres = {"static": 0.0, "slow": slow, "fast": fast}
     return min(centres, key=lambda k: abs(centres[k] - speed))
+
+
+def smoothed_velocity(z: np.ndarray, breaks: list[int], fps: int, half_window: int, min_samples: int) -> np.ndarray:
+    """Non-causal velocity [n, 3] at each frame of a track from its measured positions z [n, 3] (NaN: no detection):
+    the derivative at the frame of a least-squares fit to the measurements within +-half_window frames, not across a
+    break (an impact, or a change of motion the engine missed; indices into z). Quadratic where the window holds
+    at least 2 x min_samples measurements, linear from min_samples; NaN with fewer.
+
+    The factual questions are about a video seen whole, so frame t may use frames after it: at the start of a
+    track a causal estimate has a few frames of evidence, a centred one a whole window."""
+    n = len(z)
+    out = np.full((n, 3), np.nan)
+    seen = np.isfinite(z).all(1)
+    edges = [0] + sorted({b for b in breaks if 0 < b < n}) + [n]
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        for t in range(lo, hi):
+            a, b = max(lo, t - half_window), min(hi, t + half_window + 1)
+            idx = np.nonzero(seen[a:b])[0] + a
+            if len(idx) < min_samples:
+                continue
+            out[t] = _fit((idx - t) / fps, z[idx], len(idx) >= 2 * min_samples)[1]
+    return out

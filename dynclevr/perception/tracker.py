@@ -123,6 +123,7 @@ class Track:
     confirmed: int | None = None
     segment: int = 0                                 # the motion fit starts here (its last impact)
     maneuver: int = 0                                # ... and the last change of motion the engine did not predict
+    breaks: list = field(default_factory=list)       # frames (from start) of every impact and unpredicted change
     moving: int = 0                                  # frames since its reported velocity was last 0
     end: int | None = None
 
@@ -260,6 +261,7 @@ class SceneParser:
                 if dv >= self.physics.min_impact_speed:
                     for k in (active[a], active[b]):
                         k.segment = t - k.start
+                        k.breaks.append(k.segment)
         # Estimated hulls can overlap (a depth error), and the engine pushes overlapping bodies apart at any speed:
         # a change of velocity above what an impact of these vehicles gives is such an artefact, not a prediction.
         prev = np.array([k.fvel for k in active])
@@ -365,6 +367,7 @@ class SceneParser:
             if k.surprises >= p["maneuver_frames"]:
                 k.surprises = 0
                 k.maneuver = len(k.pose)
+                k.breaks.append(k.maneuver)
         else:
             k.surprises = 0
         return k.cloud.estimate()
@@ -385,6 +388,7 @@ class SceneParser:
                 k.cov[3:, 3:] += p["maneuver_speed"] ** 2 * np.eye(3)
                 k.surprises = 0
                 k.maneuver = len(k.pose)
+                k.breaks.append(k.maneuver)
             else:
                 R = R * d2 / p["maneuver_chi2"]
             S = k.cov[:3, :3] + R
@@ -537,6 +541,10 @@ class SceneParser:
         vel, ang, acc = np.zeros((T, N, 3)), np.zeros((T, N, 3)), np.zeros((T, N, 3))
         eng, flo, vis = np.zeros((T, N), bool), np.zeros((T, N), bool), np.zeros((T, N), bool)
         objects = []
+        # The predictive questions start from the state at the last observed frame, estimated from the frames up to
+        # it alone; the factual arrays may use the whole video (parser.smooth_window).
+        cut = self.observed - 1
+        causal_cut = {}
         for i, k in enumerate(tracks):
             n = len(k.pose)
             sl = slice(k.start, k.start + n)
@@ -557,8 +565,11 @@ class SceneParser:
             settle = min(self.p["min_fit_frames"], n - 1)
             if k.start + settle < self.observed or k.start >= self.observed:
                 vel[k.start:k.start + settle, i] = vel[k.start + settle, i]
-            back = (np.arange(k.start) - k.start)[:, None] / self.fps
             v0 = np.array([*k.vel[a][:2], 0.0])
+            if self.p["smooth_window"]:
+                causal_cut[i] = vel[min(cut, T - 1), i].copy(), bool(eng[min(cut, T - 1), i])
+                v0 = self._smooth(k, vel[sl, i], eng[sl, i], v0)
+            back = (np.arange(k.start) - k.start)[:, None] / self.fps
             pos[:k.start, i], quat[:k.start, i] = pos[k.start, i] + back * v0, quat[k.start, i]
             vel[:k.start, i] = v0
             pos[k.start + n:, i], quat[k.start + n:, i] = pos[k.start + n - 1, i], quat[k.start + n - 1, i]
@@ -571,13 +582,40 @@ class SceneParser:
                 speed_class=dynamics.speed_class(float(np.linalg.norm(k.vel[a][:2])), self.physics.slow_speed,
                                                  self.physics.fast_speed),
                 confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
+        cut_state = None if cut >= T or not N else {
+            "position": pos[cut].copy(), "orientation": quat[cut].copy(),
+            "velocity": np.array([causal_cut.get(i, (vel[cut, i],))[0] for i in range(N)]),
+            "angular_velocity": ang[cut].copy(), "engine": np.array([causal_cut.get(i, (0, eng[cut, i]))[1]
+                                                                     for i in range(N)]),
+            "floating": flo[cut].copy()}
         # an event's impulse: the reduced mass times the change of the pair's relative (filtered) velocity
         dv = collisions.FEATURES.index("filter_dv")
         events = [Collision(t, a, b, (0.0, 0.0, 0.0),
                             round(float(x[dv]) * masses[a] * masses[b] / (masses[a] + masses[b]), 6))
                   for t, a, b, x in self._collisions(tracks, masses, T)]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
-                       collisions=events, observed_frames=self.observed)
+                       collisions=events, observed_frames=self.observed, cut_state=cut_state)
+
+    def _smooth(self, k: Track, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
+        """Replace the track's causal velocities `vel` [n, 3] (in place) by the non-causal ones of its measurements
+        where a window holds enough of them, and decide its engine `engine` [n] (in place) from all its measurements
+        before its first impact; -> its velocity on the way in (before it was found)."""
+        p = self.p
+        z = np.array(k.z)
+        smooth = dynamics.smoothed_velocity(z, k.breaks, self.fps, p["smooth_window"], p["min_fit_frames"])
+        ok = np.isfinite(smooth).all(1)
+        if not ok.any():
+            return v0
+        smooth[np.linalg.norm(smooth, axis=1) < p["static_speed"]] = 0.0
+        vel[ok] = smooth[ok]
+        # The engine holds until the first impact (the generator's rule): its evidence is the whole stretch before it.
+        first = min([b for b in k.breaks if b > 0] + [len(z)])
+        samples = [(f, z[f]) for f in range(first) if np.isfinite(z[f]).all()]
+        fit = dynamics.QuadraticFit(samples, self.fps, 2 * p["min_fit_frames"])
+        if fit.ok:
+            mid = samples[len(samples) // 2][0]
+            engine[:first] = dynamics.engine_on(fit.velocity(mid), fit.acceleration, k.quat[mid], p)
+        return np.array([*smooth[int(np.argmax(ok))][:2], 0.0])
 
     def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, int, int, np.ndarray]]:
         """Collision events of the confirmed tracks (collisions.py): the classifier over the engine's contacts and

@@ -24,7 +24,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 5   # 5: collisions from the learned classifier (weights/collision/)
+VERSION = 6   # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state
 
 
 @lru_cache(maxsize=1)

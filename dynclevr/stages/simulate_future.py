@@ -1,8 +1,8 @@
 """simulate-future: the model's imagination (REFERENCE section 2, item 5).
 
 The estimated state is put into the same physics engine that made the data and simulated forward:
-- predictive: from the state estimated at the last observed frame (the parser is causal, so it used frames up to
-  there only), simulated to the end of the video; the collisions after the observed frames are the prediction;
+- predictive: from the state estimated at the last observed frame from the frames up to there only (the
+  estimate's cut state), simulated to the end of the video; the collisions after the observed frames are the prediction;
 - counterfactual: from the estimated initial state with one intervention on one object, over the whole video.
 Reads only parsed/ (the model's estimate); never the truth.
 """
@@ -31,10 +31,9 @@ def _bodies(scene: Scene4D, t: np.ndarray, ids: list[int]) -> list[Body]:
     out = []
     for k, oid in enumerate(ids):
         i, f = scene.index(oid), int(t[k])
-        o = scene.objects[i]
-        out.append(Body(o.shape, tuple(scene.position[f, i]), tuple(scene.orientation[f, i]),
-                        tuple(scene.velocity[f, i]), tuple(scene.angular_velocity[f, i]),
-                        bool(scene.engine[f, i]), bool(scene.floating[f, i]), o.mass))
+        o, s = scene.objects[i], scene.state_at(f)
+        out.append(Body(o.shape, tuple(s["position"][i]), tuple(s["orientation"][i]), tuple(s["velocity"][i]),
+                        tuple(s["angular_velocity"][i]), bool(s["engine"][i]), bool(s["floating"][i]), o.mass))
     return out
 
 
@@ -113,7 +112,7 @@ def _row_event(r: dict) -> Collision:
     return Collision(r["frame"], r["a"], r["b"], (r["x"], r["y"], r["z"]), r["impulse"])
 
 
-STAGE = Stage("simulate-future", 1, inputs=("parse-scene",),
+STAGE = Stage("simulate-future", 2, inputs=("parse-scene",),
               params=lambda cfg: cfg.digest("physics", "video", "labels"), outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
