@@ -152,7 +152,8 @@ def digest_outputs(outputs: list[Path]) -> str:
 SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate"}
 
 
-VARIANT_FLAGS = {"noprior": " --no-physics-prior", "particle": " --particle-filter"}   # store variant -> CLI flag
+# store variant -> CLI flag
+VARIANT_FLAGS = {"noprior": " --no-physics-prior", "particle": " --particle-filter", "perframe": " --per-frame"}
 
 # The user's --config, set by the CLI, so that a printed command acts on the same data and settings as the one that
 # failed (the data dir comes from the artifact's own path).

@@ -30,28 +30,36 @@ NoPriorOpt = typer.Option(False, "--no-physics-prior",
 ParticleOpt = typer.Option(False, "--particle-filter",
                            help="the scene parser with the particle filter (parser.filter = \"particle\"); model "
                                 "outputs go to parsed-particle/, future-particle/, answers-particle/")
+PerFrameOpt = typer.Option(False, "--per-frame",
+                           help="the per-frame 3D baseline (PO3D-VQA style, parser.filter = \"none\": no prior, no "
+                                "temporal filter, constant-velocity future); outputs go to parsed-perframe/, "
+                                "future-perframe/, answers-perframe/")
 
 
-def load_config(config: Path | None, no_physics_prior: bool = False, particle_filter: bool = False) -> Config:
+def load_config(config: Path | None, no_physics_prior: bool = False, particle_filter: bool = False,
+                per_frame: bool = False) -> Config:
     cfg = Config.load(config)
     if no_physics_prior:
         cfg.data.setdefault("parser", {})["physics_prior"] = False
     if particle_filter:
         cfg.data.setdefault("parser", {})["filter"] = "particle"
+    if per_frame:
+        cfg.data.setdefault("parser", {}).update(filter="none", physics_prior=False)
     return cfg
 
 
 def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1,
-           no_physics_prior: bool = False, particle_filter: bool = False) -> Runner:
-    cfg = load_config(config, no_physics_prior, particle_filter)
+           no_physics_prior: bool = False, particle_filter: bool = False, per_frame: bool = False) -> Runner:
+    cfg = load_config(config, no_physics_prior, particle_filter, per_frame)
     return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
 
 
 def _stage_command(name: str):
     def command(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
                 config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
-                no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt):
-        r = runner(split, config, data_dir, workers, no_physics_prior, particle_filter)
+                no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt,
+                per_frame: bool = PerFrameOpt):
+        r = runner(split, config, data_dir, workers, no_physics_prior, particle_filter, per_frame)
         r.run(name, parse_scenes(scenes, r.split), force)
 
     command.__doc__ = f"Run the {name} stage over a split (cached per scene)."
@@ -66,8 +74,8 @@ for _name in ORDER:
 def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
         config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
         ablation: bool = typer.Option(True, "--ablation/--no-ablation",
-                                      help="also run the model without the physics prior and with the particle "
-                                           "filter (the report's other rows)")):
+                                      help="also the report's other rows: the model without the physics prior and "
+                                           "with the particle filter, and the per-frame 3D baseline")):
     """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer."""
     r = runner(split, config, data_dir, workers)
     indices = parse_scenes(scenes, r.split)
@@ -83,9 +91,10 @@ def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, forc
 
 @app.command()
 def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt,
-           no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt):
+           no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt, per_frame: bool = PerFrameOpt):
     """Per stage: how many scenes are done (fresh), stale (inputs or params changed) or missing."""
-    r = runner(split, config, data_dir, no_physics_prior=no_physics_prior, particle_filter=particle_filter)
+    r = runner(split, config, data_dir, no_physics_prior=no_physics_prior, particle_filter=particle_filter,
+               per_frame=per_frame)
     typer.echo(f"split {r.split.name}: {r.split.scenes} scenes under {r.store.root}")
     for name in ORDER:
         try:

@@ -66,8 +66,11 @@ class Stage:
 
 def model_variant(cfg: Config) -> str:
     """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior, 'particle' with the
-    particle filter, '...refine' with the render-and-compare refinement where it is not the default."""
+    particle filter, '...refine' with the render-and-compare refinement where it is not the default; 'perframe' for
+    the per-frame 3D baseline (parser.filter = "none": no prior, no temporal filter; baselines/perframe.py)."""
     p = cfg.data.get("parser", {})
+    if p.get("filter") == "none":
+        return "perframe"
     prior = p.get("physics_prior", True)
     parts = (([] if prior else ["noprior"]) + (["particle"] if prior and p.get("filter") == "particle" else [])
              + (["refine"] if p.get("refine", False) else []))
@@ -75,10 +78,12 @@ def model_variant(cfg: Config) -> str:
 
 
 # The model's rows in `dynclevr run`, `report` and `eval-parser` (issue 11's ablation): the scene parser as
-# configured, without the physics prior (the paper's ablation), and with the particle filter (its future work).
+# configured, without the physics prior (the paper's ablation), with the particle filter (its future work), and its
+# per-frame part alone with no dynamics model (the PO3D-VQA row of Table 1, issue 15).
 MODEL_ROWS = (("NS-4DPhysics (ours)", {}),
               ("ours without physics prior", {"physics_prior": False}),
-              ("ours with the particle filter", {"filter": "particle"}))
+              ("ours with the particle filter", {"filter": "particle"}),
+              ("per-frame 3D, PO3D-VQA style", {"filter": "none", "physics_prior": False}))
 
 
 def model_configs(cfg: Config) -> list[tuple[str, Config]]:

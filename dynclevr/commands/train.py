@@ -1,4 +1,4 @@
-"""`dynclevr train parser | detector | collisions | qparser`: reproduce the shipped weights from the train split."""
+"""`dynclevr train parser | detector | collisions | qparser | cnnlstm`: reproduce the shipped weights from the train split."""
 
 from __future__ import annotations
 
@@ -64,3 +64,17 @@ def register(app: typer.Typer) -> None:
 
         cfg = Config.load(config)
         train_qparser(cfg, data_dir, cfg.split(split), out, echo=typer.echo)
+
+    @train.command("cnnlstm")
+    def cnnlstm(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
+                data_dir: Path = DataOpt, out: Path = typer.Option(WEIGHTS_DIR / "cnnlstm", "--out"),
+                resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint in --out"),
+                epochs: Optional[int] = typer.Option(None, "--epochs", help="total epochs (default cnnlstm.epochs)"),
+                minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long")):
+        """The CNN+LSTM baseline of Table 1: frame CNN averaged over time, question LSTM, answer classifier
+        (resumable; the split's last cnnlstm.heldout_scenes scenes held out)."""
+        from dynclevr.baselines.cnnlstm import train_cnnlstm
+        from dynclevr.config import Config
+
+        cfg = Config.load(config)
+        train_cnnlstm(cfg, data_dir, split, out, resume, minutes, epochs, echo=typer.echo)

@@ -7,13 +7,15 @@ scene-parser weights (weights/parser/: feature CNN and neural meshes), the colli
 Writes: `parsed/<scene>.mcap`, a Scene4D of kind "estimate" in the truth's schema (objects with confidence,
 per-frame 4D states, collisions), so the executor runs on it unchanged; its /tf and /scene/vehicles channels show
 the estimate beside the truth in Foxglove. With parser.physics_prior = false (`--no-physics-prior`) this is the
-paper's ablation, written to parsed-noprior/.
+paper's ablation, written to parsed-noprior/; with parser.filter = "none" (`--per-frame`) the per-frame 3D baseline
+(baselines/perframe.py: the detection head and the placement only, frame by frame), written to parsed-perframe/.
 """
 
 from __future__ import annotations
 
 from functools import lru_cache
 
+from dynclevr.baselines import perframe
 from dynclevr.perception.collisions import DEFAULT_DIR as COLLISION_DIR
 from dynclevr.perception.collisions import CollisionModel, collision_digest
 from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
@@ -42,15 +44,29 @@ def run_scene(job: SceneJob) -> None:
 
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
-    scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene, _collision_model())
+    if perframe.enabled(job.cfg):   # the per-frame 3D baseline (`--per-frame`): the detection head alone
+        scene = perframe.parse(video.frames(), video.camera, _detector(), job.cfg, job.scene)
+    else:
+        scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene, _collision_model())
     scene.write(job.outputs[0], kind="estimate")
+
+
+@lru_cache(maxsize=1)
+def _detector():
+    return load_detector(DETECTOR_DIR)
+
+
+def _params(cfg) -> dict:
+    # (the per-frame baseline's own section only where it runs: the other variants' caches stay as they are)
+    return {**cfg.digest("parser", "physics", "video", "labels"),
+            **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
 
 
 STAGE = Stage(
     name="parse-scene",
     version=VERSION,
     inputs=("render",),
-    params=lambda cfg: cfg.digest("parser", "physics", "video", "labels"),
+    params=_params,
     outputs=(".mcap",),
     run_scene=run_scene,
     # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.

@@ -4,7 +4,9 @@ The estimated state is put into the same physics engine that made the data and s
 - predictive: from the state estimated at the last observed frame from the frames up to there only (the
   estimate's cut state), simulated to the end of the video; the collisions after the observed frames are the prediction;
 - counterfactual: from the estimated initial state with one intervention on one object, over the whole video.
-Reads only parsed/ (the model's estimate); never the truth.
+Reads only parsed/ (the model's estimate); never the truth. The per-frame baseline (`--per-frame`) has no physics
+engine: its future and counterfactuals are its contact rule on positions extrapolated at constant velocity
+(baselines/perframe.py, `imagine`).
 """
 
 from __future__ import annotations
@@ -81,8 +83,13 @@ def predict(scene: Scene4D, params: PhysicsParams) -> tuple[list[Collision], dic
 
 
 def run_scene(job: SceneJob) -> None:
+    from dynclevr.baselines import perframe
+
     scene = Scene4D.read(job.inputs["parse-scene"][0])
-    future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg))
+    if perframe.enabled(job.cfg):   # the per-frame baseline: constant velocity, no physics engine
+        future, outcomes = perframe.imagine(scene, job.cfg)
+    else:
+        future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg))
     rows = [("future", -1, "", e) for e in future]
     rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
     # A run with no collision still needs a row, so that "no collision" differs from "not simulated".
@@ -112,7 +119,14 @@ def _row_event(r: dict) -> Collision:
     return Collision(r["frame"], r["a"], r["b"], (r["x"], r["y"], r["z"]), r["impulse"])
 
 
+def _params(cfg) -> dict:
+    from dynclevr.baselines import perframe
+
+    # (the per-frame baseline's own section only where it runs: the other variants' caches stay as they are)
+    return {**cfg.digest("physics", "video", "labels"), **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
+
+
 STAGE = Stage("simulate-future", 2, inputs=("parse-scene",),
-              params=lambda cfg: cfg.digest("physics", "video", "labels"), outputs=(".parquet",), run_scene=run_scene,
+              params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
