@@ -139,6 +139,9 @@ class Config:
             raise ConfigError("'scene.min_objects' must be at least 3 (one static, one slow, one fast object)")
         if self.data["video"]["observed_frames"] >= self.data["video"]["frames"]:
             raise ConfigError("'video.observed_frames' must be less than 'video.frames'")
+        if self.data["imagine"]["counterfactuals"] not in ("replay", "resimulate"):
+            raise ConfigError(f"'imagine.counterfactuals' = {self.data['imagine']['counterfactuals']!r}: use 'replay' "
+                              "or 'resimulate'")
         if self.data["render"]["backend"] not in ("tiny", "mitsuba"):
             raise ConfigError(f"'render.backend' = {self.data['render']['backend']!r}: use 'tiny' or 'mitsuba'")
 

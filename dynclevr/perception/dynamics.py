@@ -101,16 +101,17 @@ def speed_class(speed: float, slow: float, fast: float) -> str:
     return min(centres, key=lambda k: abs(centres[k] - speed))
 
 
-def smoothed_velocity(z: np.ndarray, breaks: list[int], fps: int, half_window: int, min_samples: int) -> np.ndarray:
-    """Non-causal velocity [n, 3] at each frame of a track from its measured positions z [n, 3] (NaN: no detection):
-    the derivative at the frame of a least-squares fit to the measurements within +-half_window frames, not across a
-    break (an impact, or a change of motion the engine missed; indices into z). Quadratic where the window holds
-    at least 2 x min_samples measurements, linear from min_samples; NaN with fewer.
+def smoothed_motion(z: np.ndarray, breaks: list[int], fps: int, half_window: int, min_samples: int
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """Non-causal (position, velocity) [n, 3] at each frame of a track from its measured positions z [n, 3] (NaN:
+    no detection): the value and derivative at the frame of a least-squares fit to the measurements within
+    +-half_window frames, not across a break (an impact, or a change of motion the engine missed; indices into z).
+    Quadratic where the window holds at least 2 x min_samples measurements, linear from min_samples; NaN with fewer.
 
     The factual questions are about a video seen whole, so frame t may use frames after it: at the start of a
     track a causal estimate has a few frames of evidence, a centred one a whole window."""
     n = len(z)
-    out = np.full((n, 3), np.nan)
+    pos, vel = np.full((n, 3), np.nan), np.full((n, 3), np.nan)
     seen = np.isfinite(z).all(1)
     edges = [0] + sorted({b for b in breaks if 0 < b < n}) + [n]
     for lo, hi in zip(edges[:-1], edges[1:]):
@@ -119,5 +120,5 @@ def smoothed_velocity(z: np.ndarray, breaks: list[int], fps: int, half_window: i
             idx = np.nonzero(seen[a:b])[0] + a
             if len(idx) < min_samples:
                 continue
-            out[t] = _fit((idx - t) / fps, z[idx], len(idx) >= 2 * min_samples)[1]
-    return out
+            pos[t], vel[t] = _fit((idx - t) / fps, z[idx], len(idx) >= 2 * min_samples)[:2]
+    return pos, vel

@@ -69,6 +69,9 @@ def parser_params(cfg: Config) -> dict:
     for key in ("detect_threshold", "new_track_score", "jump_rate", "outlier_rate"):
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
+    if not isinstance(p["smooth_window"], int) or isinstance(p["smooth_window"], bool) or p["smooth_window"] < 0:
+        raise ConfigError(f"'parser.smooth_window' = {p['smooth_window']!r} must be a non-negative integer (frames; "
+                          "0: the causal filter's velocities)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
@@ -567,8 +570,9 @@ class SceneParser:
                 vel[k.start:k.start + settle, i] = vel[k.start + settle, i]
             v0 = np.array([*k.vel[a][:2], 0.0])
             if self.p["smooth_window"]:
-                causal_cut[i] = vel[min(cut, T - 1), i].copy(), bool(eng[min(cut, T - 1), i])
-                v0 = self._smooth(k, vel[sl, i], eng[sl, i], v0)
+                if k.start <= cut < k.start + n:
+                    causal_cut[i] = pos[cut, i].copy(), vel[cut, i].copy(), bool(eng[cut, i])
+                v0 = self._smooth(k, pos[sl, i], vel[sl, i], eng[sl, i], v0)
             back = (np.arange(k.start) - k.start)[:, None] / self.fps
             pos[:k.start, i], quat[:k.start, i] = pos[k.start, i] + back * v0, quat[k.start, i]
             vel[:k.start, i] = v0
@@ -583,11 +587,10 @@ class SceneParser:
                                                  self.physics.fast_speed),
                 confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
         cut_state = None if cut >= T or not N else {
-            "position": pos[cut].copy(), "orientation": quat[cut].copy(),
-            "velocity": np.array([causal_cut.get(i, (vel[cut, i],))[0] for i in range(N)]),
-            "angular_velocity": ang[cut].copy(), "engine": np.array([causal_cut.get(i, (0, eng[cut, i]))[1]
-                                                                     for i in range(N)]),
-            "floating": flo[cut].copy()}
+            "position": pos[cut].copy(), "orientation": quat[cut].copy(), "velocity": vel[cut].copy(),
+            "angular_velocity": ang[cut].copy(), "engine": eng[cut].copy(), "floating": flo[cut].copy()}
+        for i, (x, v, e) in causal_cut.items():
+            cut_state["position"][i], cut_state["velocity"][i], cut_state["engine"][i] = x, v, e
         # an event's impulse: the reduced mass times the change of the pair's relative (filtered) velocity
         dv = collisions.FEATURES.index("filter_dv")
         events = [Collision(t, a, b, (0.0, 0.0, 0.0),
@@ -596,18 +599,20 @@ class SceneParser:
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=events, observed_frames=self.observed, cut_state=cut_state)
 
-    def _smooth(self, k: Track, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
-        """Replace the track's causal velocities `vel` [n, 3] (in place) by the non-causal ones of its measurements
-        where a window holds enough of them, and decide its engine `engine` [n] (in place) from all its measurements
-        before its first impact; -> its velocity on the way in (before it was found)."""
+    def _smooth(self, k: Track, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
+        """Replace the track's causal positions and velocities [n, 3] (in place) by the non-causal ones of its
+        measurements where a window holds enough of them, and decide its engine `engine` [n] (in place) from all its
+        measurements before its first impact; -> its velocity on the way in (before it was found)."""
         p = self.p
         z = np.array(k.z)
-        smooth = dynamics.smoothed_velocity(z, k.breaks, self.fps, p["smooth_window"], p["min_fit_frames"])
+        spos, smooth = dynamics.smoothed_motion(z, k.breaks, self.fps, p["smooth_window"], p["min_fit_frames"])
         ok = np.isfinite(smooth).all(1)
         if not ok.any():
             return v0
         smooth[np.linalg.norm(smooth, axis=1) < p["static_speed"]] = 0.0
         vel[ok] = smooth[ok]
+        if p["smooth_positions"]:
+            pos[ok] = spos[ok]
         # The engine holds until the first impact (the generator's rule): its evidence is the whole stretch before it.
         first = min([b for b in k.breaks if b > 0] + [len(z)])
         samples = [(f, z[f]) for f in range(first) if np.isfinite(z[f]).all()]

@@ -3,7 +3,8 @@
 The estimated state is put into the same physics engine that made the data and simulated forward:
 - predictive: from the state estimated at the last observed frame from the frames up to there only (the
   estimate's cut state), simulated to the end of the video; the collisions after the observed frames are the prediction;
-- counterfactual: from the estimated initial state with one intervention on one object, over the whole video.
+- counterfactual: from the estimated initial state with one intervention on one object, over the whole video;
+  objects follow their estimated trajectories until the intervention reaches them (perception/imagine.py).
 Reads only parsed/ (the model's estimate); never the truth. The per-frame baseline (`--per-frame`) has no physics
 engine: its future and counterfactuals are its contact rule on positions extrapolated at constant velocity
 (baselines/perframe.py, `imagine`).
@@ -17,6 +18,7 @@ import numpy as np
 import pyarrow as pa
 
 from dynclevr.artifacts import read_parquet, write_parquet
+from dynclevr.perception.imagine import counterfactual_run
 from dynclevr.physics import Body, PhysicsParams, World, catalogue_digest, counterfactual, simulate
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.scene import INTERVENTIONS, Collision, Scene4D
@@ -61,7 +63,11 @@ def initial_bodies(scene: Scene4D) -> tuple[list[Body], list[int]]:
     return bodies, ids
 
 
-def predict(scene: Scene4D, params: PhysicsParams) -> tuple[list[Collision], dict[tuple[int, str], list[Collision]]]:
+def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True
+            ) -> tuple[list[Collision], dict[tuple[int, str], list[Collision]]]:
+    """The future after the observed frames, and every counterfactual run's collisions. `replay`: objects follow
+    their estimated trajectories until the intervention reaches them (perception/imagine.py); False: the paper's
+    re-simulation of everything from the estimated initial state."""
     last = scene.observed_frames - 1
     seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
     future: list[Collision] = []
@@ -75,10 +81,14 @@ def predict(scene: Scene4D, params: PhysicsParams) -> tuple[list[Collision], dic
         with World(bodies, params) as world:
             for k, oid in enumerate(ids):
                 for iv in INTERVENTIONS:
-                    run = counterfactual(bodies, k, iv, params, scene.num_frames, world=world)
+                    if replay:
+                        events = counterfactual_run(scene, bodies, ids, k, iv, params, world)
+                    else:
+                        run = counterfactual(bodies, k, iv, params, scene.num_frames, world=world)
+                        events = None if run is None else _events(run.collisions, ids)
                     # An intervention that changes nothing (the object already is static, say) leaves the video
                     # as it was seen: its outcome is the observed collisions.
-                    outcomes[(oid, iv)] = scene.collisions if run is None else _events(run.collisions, ids)
+                    outcomes[(oid, iv)] = scene.collisions if events is None else events
     return future, outcomes
 
 
@@ -89,7 +99,8 @@ def run_scene(job: SceneJob) -> None:
     if perframe.enabled(job.cfg):   # the per-frame baseline: constant velocity, no physics engine
         future, outcomes = perframe.imagine(scene, job.cfg)
     else:
-        future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg))
+        future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg),
+                                   job.cfg["imagine"]["counterfactuals"] == "replay")
     rows = [("future", -1, "", e) for e in future]
     rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
     # A run with no collision still needs a row, so that "no collision" differs from "not simulated".
@@ -123,10 +134,11 @@ def _params(cfg) -> dict:
     from dynclevr.baselines import perframe
 
     # (the per-frame baseline's own section only where it runs: the other variants' caches stay as they are)
-    return {**cfg.digest("physics", "video", "labels"), **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
+    return {**cfg.digest("physics", "video", "labels", "imagine"),
+            **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
 
 
-STAGE = Stage("simulate-future", 2, inputs=("parse-scene",),
+STAGE = Stage("simulate-future", 3, inputs=("parse-scene",),
               params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
