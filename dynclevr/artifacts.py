@@ -1,8 +1,15 @@
 """The artifact store: `<data-dir>/<split>/<stage-dir>/`, manifests, atomic writes, schema-checked reads.
 
 Every artifact carries its schema name and version (MCAP metadata record `dynclevr`, Parquet schema metadata);
-every stage directory holds a `manifest.json` with one entry per output: stage version, the params it used, the
-digests of its inputs and its own digest. A stage reruns an output only when that cache key changes (as `dvc repro`).
+every stage directory has a manifest, `<split>/manifests/<stage dir>.json`, with one entry per output: stage version,
+the params it used, the digests of its inputs and its own digest. A stage reruns an output only when that cache key
+changes (as `dvc repro`).
+
+Tables are laid out to open as datasets: each folder of Parquet files holds one table (one schema, a `scene` column,
+nulls where a value does not apply) and nothing else, so that `duckdb 'future/*.parquet'`, `polars.read_parquet(
+'future')` and `pandas.read_parquet('future')` read a whole split in one call. Hence the manifests live outside the
+folders (polars refuses a folder with any other file in it, whatever its name), and a stage with several per-scene
+tables writes one sub-folder per table (`labels/events/<scene>.parquet`).
 """
 
 from __future__ import annotations
@@ -97,26 +104,43 @@ class Store:
         return self.root / (STAGE_DIRS[stage] + suffix)
 
     def path(self, stage: str, scene: str, suffix: str) -> Path:
-        return self.stage_dir(stage) / f"{scene}{suffix}"
+        """A per-scene output: `suffix` is ".mcap" (sim/000003.mcap) or "<table>/.parquet", one folder per table
+        (labels/events/000003.parquet)."""
+        table, _, suffix = suffix.rpartition("/")
+        return self.stage_dir(stage) / table / f"{scene}{suffix}"
 
     def split_file(self, name: str) -> Path:
         """A split-level artifact such as questions.parquet or objects.parquet."""
         return self.root / name
 
+    def model_file(self, name: str) -> Path:
+        """A split-level output of a model stage: answers.parquet, or answers-noprior.parquet for a variant."""
+        stem, dot, ext = name.partition(".")
+        return self.root / (f"{stem}-{self.variant}{dot}{ext}" if self.variant else name)
+
     def manifest(self, stage: str) -> "Manifest":
-        return Manifest(self.stage_dir(stage) / "manifest.json")
+        d = self.stage_dir(stage)
+        return Manifest(self.root / MANIFEST_DIR / f"{d.name}.json", legacy=d / "manifest.json")
+
+
+MANIFEST_DIR = "manifests"
 
 
 class Manifest:
-    """One stage directory's lock file: output name -> {key, params, inputs, digest, stage_version}."""
+    """One stage directory's lock file: output name -> {key, params, inputs, digest, stage_version}.
 
-    def __init__(self, path: Path):
+    `legacy` is where a data dir of an older layout kept it (`<stage dir>/manifest.json`): read when the new file is
+    absent, so that a stage whose outputs did not change keeps its cache, and removed by the first save."""
+
+    def __init__(self, path: Path, legacy: Path | None = None):
         self.path = Path(path)
         self.entries: dict[str, dict] = {}
         self.corrupt = False
-        if self.path.exists():
+        self.legacy = legacy if legacy is not None and not self.path.exists() and legacy.exists() else None
+        source = self.legacy or self.path
+        if source.exists():
             try:
-                entries = json.loads(self.path.read_text())["entries"]
+                entries = json.loads(source.read_text())["entries"]
                 if not all(isinstance(e, dict) and isinstance(e.get("key"), str) and isinstance(e.get("digest"), str)
                            for e in entries.values()):
                     raise ValueError
@@ -140,6 +164,9 @@ class Manifest:
 
     def save(self) -> None:
         write_json_atomic(self.path, {"entries": dict(sorted(self.entries.items()))})
+        if self.legacy is not None:
+            self.legacy.unlink(missing_ok=True)
+            self.legacy = None
 
 
 def digest_outputs(outputs: list[Path]) -> str:
@@ -148,8 +175,9 @@ def digest_outputs(outputs: list[Path]) -> str:
     return hashlib.sha256("".join(file_digest(p) for p in outputs).encode()).hexdigest()
 
 
-# Split-level artifacts -> the stage that writes them.
-SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate"}
+# Split-level artifacts -> the stage that writes them (a model variant's: answers-noprior.parquet).
+SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate", "answers.parquet": "answer",
+               "metrics.parquet": "answer"}
 
 
 # store variant -> CLI flag
@@ -170,12 +198,15 @@ def rerun_hint(path: Path) -> str:
     """The command that rewrites a missing or damaged artifact: the stage on that scene only (the cache sees the
     damage, so no --force), or the stage for a split-level table."""
     path = Path(path)
-    if path.name in SPLIT_FILES:
-        stage, split, variant, scenes = SPLIT_FILES[path.name], path.parent.name, "", ""
+    stem, _, variant = path.name.split(".", 1)[0].partition("-")
+    base = stem + path.suffix
+    if base in SPLIT_FILES:
+        stage, split, scenes = SPLIT_FILES[base], path.parent.name, ""
         data_dir = path.parent.parent
-    else:   # <data-dir>/<split>/<stage dir>[-<variant>]/<scene><suffix>
-        kind, _, variant = path.parent.name.partition("-")
-        stage, split, data_dir = DIR_STAGES.get(kind), path.parent.parent.name, path.parent.parent.parent
+    else:   # <data-dir>/<split>/<stage dir>[-<variant>]/[<table>/]<scene><suffix>
+        folder = path.parent if path.parent.name.partition("-")[0] in DIR_STAGES else path.parent.parent
+        kind, _, variant = folder.name.partition("-")
+        stage, split, data_dir = DIR_STAGES.get(kind), folder.parent.name, folder.parent.parent
         scene = path.name.split(".", 1)[0]
         scenes = f" --scenes {int(scene)}" if scene.isdigit() else ""
     if not stage:

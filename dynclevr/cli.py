@@ -11,14 +11,37 @@ from typing import Optional
 
 import typer
 
-from dynclevr import DynclevrError
+from dynclevr import DynclevrError, __version__
 from dynclevr.config import Config
 from dynclevr.pipeline import ORDER, Runner, model_configs, parse_scenes
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+# Shell completion: `dynclevr --install-completion` (bash, zsh, fish), or `--show-completion` to see the script.
+app = typer.Typer(add_completion=True, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="DynSuperCLEVR data generation and the NS-4DPhysics model, as a staged, cached pipeline.")
 
-SplitOpt = typer.Option(None, "--split", help="split name from pipeline.toml (default: its default_split)")
+
+def _print_version(value: bool) -> None:
+    if value:
+        typer.echo(f"dynclevr {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _options(version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                          help="Print the version and exit.")) -> None:
+    pass
+
+
+def _split_names(incomplete: str) -> list[str]:
+    """--split completes to the splits of pipeline.toml."""
+    try:
+        return [s for s in Config.load().data.get("splits", {}) if s.startswith(incomplete)]
+    except DynclevrError:
+        return []
+
+
+SplitOpt = typer.Option(None, "--split", help="split name from pipeline.toml (default: its default_split)",
+                        autocompletion=_split_names)
 ScenesOpt = typer.Option(None, "--scenes", help="subset of scene indices, e.g. 3-5 or 0,2,7-9")
 ForceOpt = typer.Option(False, "--force", help="rerun even where the cache is fresh")
 ConfigOpt = typer.Option(None, "--config", help="a TOML file merged over pipeline.toml")
@@ -131,7 +154,7 @@ def main() -> None:
     from dynclevr.pipeline import Interrupted
 
     try:
-        app()  # standalone: typer reports usage errors itself and exits
+        app(prog_name="dynclevr")  # standalone: typer reports usage errors itself and exits
     except (Interrupted, KeyboardInterrupt) as e:
         typer.secho(f"interrupted: {e}" if str(e) else "interrupted", err=True, fg="yellow")
         sys.exit(130)

@@ -62,6 +62,9 @@ class Stage:
     run_scene: Callable[[SceneJob], None]
     finalize: Callable[[Store, Config, list[str]], list[Path]] | None = None
     extra_inputs: Callable[[Store, Config], dict[str, str]] = field(default=lambda store, cfg: {})
+    # Globs, in the stage's folder, of files an older version wrote that this one does not: removed when it runs,
+    # so that a folder keeps one table (a stage version bump already reruns every scene).
+    retired: tuple[str, ...] = ()
 
 
 def model_variant(cfg: Config) -> str:
@@ -144,6 +147,13 @@ class Runner:
         digests = {}
         for up in stage.inputs:
             d = manifests[up].digest(scene)
+            made_by = manifests[up].entries.get(scene, {}).get("stage_version")
+            if d is not None and made_by != get_stage(up).version:
+                # A data dir of an older dynclevr: its tables have another layout or schema.
+                flag = VARIANT_FLAGS.get(self.store.variant, "") if up in MODEL_STAGES else ""
+                raise DynclevrError(f"{STAGE_DIRS[up]}/{scene} was made by an older {up} (v{made_by}; this dynclevr "
+                                    f"has v{get_stage(up).version}) for {stage.name}: run `dynclevr {up} --split "
+                                    f"{self.split.name}{flag}{command_options(self.store.data_dir)}` first")
             if d is None:
                 what = (f"{manifests[up].path} is corrupt" if manifests[up].corrupt
                         else f"{STAGE_DIRS[up]}/{scene} is missing")
@@ -184,6 +194,11 @@ class Runner:
                            self.store.data_dir, {up: self._outputs(get_stage(up), scene) for up in stage.inputs},
                            self._outputs(stage, scene))
             todo.append((job, key))
+        # Its inputs are there (or the loop above said what to run first): now, and not before, tidy an older
+        # dynclevr's layout.
+        if manifest.legacy:   # <stage dir>/manifest.json: moved out of the tables' folder
+            manifest.save()
+        self._remove_retired(stage)
         self.echo(f"{stage.name}: {len(todo)} to run, {cached} cached (unchanged inputs, params and version)")
         done = 0
         try:
@@ -202,6 +217,15 @@ class Runner:
         if todo:
             self.echo(f"{stage.name}: {len(todo)} done in {seconds:.1f} s")
         return {"ran": len(todo), "cached": cached, "seconds": seconds}
+
+    def _remove_retired(self, stage: Stage) -> None:
+        folder = self.store.stage_dir(stage.name)
+        old = sorted(p for g in stage.retired for p in folder.glob(g) if p.is_file())
+        for p in old:
+            p.unlink()
+        if old:
+            self.echo(f"{stage.name}: removed {len(old)} files of an older dynclevr's layout from {folder} "
+                      f"(e.g. {old[0].name}); the stage writes its tables anew")
 
     def _map(self, stage: Stage, todo):
         from rich.console import Console

@@ -14,7 +14,7 @@ from dynclevr.pipeline import model_configs, model_variant
 from dynclevr.questions.programs import Executor
 from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
-from dynclevr.stages.answer import ANSWERS_SCHEMA, ANSWERS_VERSION, table1
+from dynclevr.stages.answer import ANSWERS_FILE, ANSWERS_SCHEMA, ANSWERS_VERSION, table1
 
 COLUMNS = ("Average", "Factual All", "Vel", "Acc", "Col", "Predictive", "Counterfactual")
 PAPER = {  # REFERENCE.md section 3 (paper, Table 1, its test split)
@@ -28,7 +28,7 @@ PAPER = {  # REFERENCE.md section 3 (paper, Table 1, its test split)
 
 
 def _answers(store: Store, variant: str) -> list[dict] | None:
-    path = Store(store.data_dir, store.split, variant).stage_dir("answer") / "answers.parquet"
+    path = Store(store.data_dir, store.split, variant).model_file(ANSWERS_FILE)
     return read_parquet(path, ANSWERS_SCHEMA, ANSWERS_VERSION).to_pylist() if path.exists() else None
 
 

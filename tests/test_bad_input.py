@@ -91,14 +91,13 @@ def test_damaged_video_is_one_clear_error(data, damage):
 
 
 def test_garbage_manifest_costs_a_rerun_not_the_data(data):
-    sim = Store(data, SPLIT).stage_dir("simulate")
-    (sim / "manifest.json").write_text("garbage{")
-    before = {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")}
+    Store(data, SPLIT).manifest("simulate").path.write_text("garbage{")
+    before = {k: v for k, v in checksums(data).items() if not k.startswith("x/manifests/")}
     line = error_line(cli(data, "annotate"))
-    assert (f"sim/manifest.json is corrupt for annotate: run `dynclevr simulate --split x --data-dir {data} "
+    assert (f"manifests/sim.json is corrupt for annotate: run `dynclevr simulate --split x --data-dir {data} "
             f"--config {data.parent / 'x.toml'}` first") in line
     assert cli(data, "simulate").returncode == 0
-    assert {k: v for k, v in checksums(data).items() if not k.endswith("manifest.json")} == before
+    assert {k: v for k, v in checksums(data).items() if not k.startswith("x/manifests/")} == before
     out = cli(data, "annotate")
     assert out.returncode == 0 and "annotate: 0 to run, 2 cached" in out.stdout, out.stdout
 
@@ -239,8 +238,7 @@ def test_two_runs_on_one_split_take_turns(data):
     second = subprocess.run(args + ["1"], capture_output=True, text=True)
     assert first.wait(60) == 0 and second.returncode == 0, second.stderr
     assert f"held by pid {first.pid} (dynclevr render --force" in second.stdout
-    manifest = Manifest(store.stage_dir("render") / "manifest.json")
-    assert set(manifest.entries) >= {"000000", "000001"}
+    assert set(store.manifest("render").entries) >= {"000000", "000001"}
     assert not leftover.exists()
     status = subprocess.run([sys.executable, "-m", "dynclevr.cli", "status", "--split", SPLIT, "--config",
                              str(config), "--data-dir", str(data)], capture_output=True, text=True)

@@ -13,7 +13,7 @@ from dynclevr.config import Config
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import balanced_counts, family_names, references, scene_candidates, select, templates
 from dynclevr.questions.programs import execute, parse
-from dynclevr.questions.tables import read_questions
+from dynclevr.questions.tables import CANDIDATES_OUT, read_questions
 from dynclevr.scene import Scene4D
 from dynclevr.stages import annotate
 from test_programs import known_scene
@@ -51,7 +51,7 @@ def test_oracle_every_stored_question(simulated, cfg):
     for q in qs:
         assert execute(q["program"], scenes[q["scene"]], cfg["labels"]) == q["answer"], q
     for s in scenes:   # the per-scene candidates too: the balanced set is a subset of them
-        for q in read_questions(store.path("annotate", s, ".questions.parquet")):
+        for q in read_questions(store.path("annotate", s, CANDIDATES_OUT)):
             assert execute(q["program"], scenes[s], cfg["labels"]) == q["answer"], q
 
 
@@ -156,10 +156,12 @@ def test_candidates_are_deterministic(cfg):
 def test_stage_outputs_are_byte_identical_and_cached(simulated, cfg, tmp_path):
     for stage_dir in ("sim", "video"):
         shutil.copytree(simulated / "tiny" / stage_dir, tmp_path / "tiny" / stage_dir)
+        shutil.copytree(simulated / "tiny" / "manifests", tmp_path / "tiny" / "manifests",
+                        ignore=lambda d, names: [n for n in names if n != f"{stage_dir}.json"], dirs_exist_ok=True)
     r = Runner(cfg, cfg.split("tiny"), tmp_path, echo=lambda *a: None)
     assert r.run("annotate", list(range(3))).items() >= {"ran": 3, "cached": 0}.items()
-    for name in ["questions.parquet", "labels/000000.parquet", "labels/000001.events.parquet",
-                 "labels/000002.questions.parquet", "labels/000001.dropped.parquet"]:
+    for name in ["questions.parquet", "labels/frames/000000.parquet", "labels/events/000001.parquet",
+                 "labels/candidates/000002.parquet", "labels/dropped/000001.parquet"]:
         assert (tmp_path / "tiny" / name).read_bytes() == (simulated / "tiny" / name).read_bytes()
     assert r.run("annotate", list(range(3))).items() >= {"ran": 0, "cached": 3}.items()
 
@@ -183,7 +185,7 @@ def test_the_papers_missing_families_are_asked_and_run_on_the_truth(simulated, c
     asked = Counter()
     for s in Runner(cfg, cfg.split("tiny"), simulated, echo=lambda *a: None).split.scene_names():
         truth = Scene4D.read(store.path("simulate", s, ".mcap"))
-        for q in read_questions(store.path("annotate", s, ".questions.parquet")):
+        for q in read_questions(store.path("annotate", s, CANDIDATES_OUT)):
             if q["family"] in NEW_FAMILIES:
                 asked[q["family"]] += 1
                 assert execute(q["program"], truth, cfg["labels"]) == q["answer"], q

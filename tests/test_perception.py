@@ -131,7 +131,8 @@ def _only_video(src_data, dst_data, strip: bool):
     """A data directory holding nothing but video/ (optionally without the mask and depth channels)."""
     src, dst = src_data / "ptiny" / "video", dst_data / "ptiny" / "video"
     dst.mkdir(parents=True)
-    shutil.copy(src / "manifest.json", dst / "manifest.json")
+    (dst_data / "ptiny" / "manifests").mkdir()
+    shutil.copy(src_data / "ptiny" / "manifests" / "video.json", dst_data / "ptiny" / "manifests" / "video.json")
     if not strip:
         shutil.copy(src / "000000.mcap", dst / "000000.mcap")
         return
@@ -163,7 +164,8 @@ def test_parse_scene_reads_only_the_video(tiny, tmp_path, strip):
             v.masks()
     Runner(cfg, cfg.split("ptiny"), alone).run("parse-scene", [0])
     # (beside the split's lock file, which holds no data)
-    assert sorted(p.name for p in (alone / "ptiny").iterdir() if p.name != ".lock") == ["parsed", "video"]
+    assert sorted(p.name for p in (alone / "ptiny").iterdir() if p.name != ".lock") == ["manifests", "parsed", "video"]
+    assert sorted(p.name for p in (alone / "ptiny" / "manifests").iterdir()) == ["parsed.json", "video.json"]
     assert (alone / "ptiny" / "parsed" / "000000.mcap").read_bytes() == expected
 
 

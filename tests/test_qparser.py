@@ -23,7 +23,7 @@ from dynclevr.language.vocab import UNK_ID, Vocab
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions.phrasing import grammar
-from dynclevr.questions.tables import read_questions, write_questions
+from dynclevr.questions.tables import CANDIDATES_OUT, read_questions, write_questions
 
 COLORS = ["gray", "red", "blue", "green", "brown", "purple", "cyan", "yellow"]
 SHAPES = ["airliner", "fighter", "jet", "mountain bike", "tandem bike", "utility bike", "articulated bus",
@@ -266,7 +266,7 @@ def heldout_questions(tmp_path_factory) -> list[dict]:
     for stage in ("simulate", "render", "annotate"):
         runner.run(stage, [0, 1, 2])
     return [q for s in runner.split.scene_names()
-            for q in read_questions(runner.store.path("annotate", s, ".questions.parquet"))]
+            for q in read_questions(runner.store.path("annotate", s, CANDIDATES_OUT))]
 
 
 def test_shipped_weights_parse_held_out_questions(heldout_questions):

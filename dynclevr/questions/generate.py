@@ -190,8 +190,8 @@ def scene_candidates(scene: Scene4D, labels_cfg: dict, seed: int, seen: np.ndarr
                 continue
             except ProgramError:
                 continue
-            factual = copy.run(program) if fam["type"] == "counterfactual" else ""
-            out.append({"id": "", "scene": scene.name, "type": fam["type"], "subtype": fam["subtype"],
+            factual = copy.run(program) if fam["type"] == "counterfactual" else None
+            out.append({"id": None, "scene": scene.name, "type": fam["type"], "subtype": fam["subtype"],
                         "family": fam["name"], "text": text, "program": program, "answer": answer,
                         "factual": factual})
     return out, dropped

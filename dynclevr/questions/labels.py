@@ -123,7 +123,7 @@ class Labels:
     floating_ambiguous: np.ndarray
 
     def rows(self) -> dict[str, list]:
-        """The labels/<scene>.parquet columns: one row per (frame, object), ambiguous labels spelled out."""
+        """The labels/frames/<scene>.parquet columns: one row per (frame, object), ambiguous labels spelled out."""
         T, N = self.speed.shape
 
         def words(values, amb, names):

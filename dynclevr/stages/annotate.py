@@ -2,13 +2,13 @@
 
 Reads: `sim/<scene>.mcap` (the truth), `video/<scene>.mcap` (its instance masks: what a viewer sees), pipeline.toml
 [labels] and [annotate], dynclevr/questions/templates.json.
-Writes per scene: `labels/<scene>.parquet` (per object and frame: velocity class, moving direction, accelerating,
-floating, pixels in view; "ambiguous" where no question is asked), `labels/<scene>.events.parquet` (merged collision
-events: observed with the visible gap between the pair, future, counterfactual, grazes),
-`labels/<scene>.questions.parquet` (every candidate question with its program, the answer the executor gives on
-the truth, and for counterfactuals the answer of copying the video's outcome) and `labels/<scene>.dropped.parquet`
-(candidates not asked, per family and reason). Split level: `questions.parquet`, answer-balanced per family
-(id, scene, type, subtype, family, text, program, answer, factual).
+Writes per scene, one folder per table (each opens as one dataset): `labels/frames/<scene>.parquet` (per object
+and frame: velocity class, moving direction, accelerating, floating, pixels in view; "ambiguous" where no question is
+asked), `labels/events/<scene>.parquet` (merged collision events: observed with the visible gap between the pair,
+future, counterfactual, grazes), `labels/candidates/<scene>.parquet` (every candidate question with its program, the
+answer the executor gives on the truth, and for counterfactuals the answer of copying the video's outcome) and
+`labels/dropped/<scene>.parquet` (candidates not asked, per family and reason). Split level: `questions.parquet`,
+answer-balanced per family (id, scene, type, subtype, family, text, program, answer, factual).
 
 Questions are asked only about what the video shows: objects with at least `labels.min_visible_pixels` pixels in the
 frames a question is about, collisions both of whose vehicles are seen, no pair that only grazes.
@@ -28,32 +28,33 @@ from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.questions.evidence import mask_gap, mesh_gap, pixel_counts
 from dynclevr.questions.generate import TEMPLATES_PATH, check_annotate_cfg, family_names, scene_candidates, select
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
-from dynclevr.questions.tables import (DROPPED, DROPPED_SCHEMA, DROPPED_VERSION, EVENTS, EVENTS_SCHEMA, EVENTS_VERSION,
-                                       LABELS, LABELS_SCHEMA, LABELS_VERSION, QUESTIONS_SCHEMA, QUESTIONS_VERSION,
-                                       read_questions, write_questions)
+from dynclevr.questions.tables import (CANDIDATES_OUT, DROPPED, DROPPED_OUT, DROPPED_SCHEMA, DROPPED_VERSION, EVENTS,
+                                       EVENTS_OUT, EVENTS_SCHEMA, EVENTS_VERSION, FRAMES_OUT, LABELS, LABELS_SCHEMA,
+                                       LABELS_VERSION, QUESTIONS_SCHEMA, QUESTIONS_VERSION, read_questions,
+                                       write_questions)
 from dynclevr.scene import Scene4D
 from dynclevr.video import Video
 
-VERSION = 3   # 2: visibility from the masks, grazes, the predictive margin, counterfactual balance; 3: the phrasing
-#   grammar and the paper's missing families
+VERSION = 4   # 2: visibility from the masks, grazes, the predictive margin, counterfactual balance; 3: the phrasing
+#   grammar and the paper's missing families; 4: one folder per table, scene columns, nulls
 QUESTIONS_FILE = "questions.parquet"
 # questions.parquet's schema, for its readers (answer, report, the question parser's training)
 __all__ = ["STAGE", "QUESTIONS_FILE", "QUESTIONS_SCHEMA", "QUESTIONS_VERSION", "stats"]
 
 
 def _events_table(scene: Scene4D, merge: int, masks: np.ndarray) -> pa.Table:
-    runs = [("observed", -1, "", merge_events(scene.collisions, merge)),
-            ("future", -1, "", future_events(scene, merge)),
-            ("graze", -1, "", merge_events(scene.grazes, merge))]
+    runs = [("observed", None, None, merge_events(scene.collisions, merge)),
+            ("future", None, None, future_events(scene, merge)),
+            ("graze", None, None, merge_events(scene.grazes, merge))]
     runs += [("counterfactual", oid, iv, merge_events(ev, merge))
              for (oid, iv), ev in sorted(scene.counterfactuals.items())]
     rows = []
     for kind, target, iv, events in runs:
         for e in events:
             seen = kind == "observed"
-            rows.append({"kind": kind, "target": target, "intervention": iv, "frame": e.frame, "a": e.a, "b": e.b,
-                         "gap_m": mesh_gap(scene, e) if seen else float("nan"),
-                         "gap_px": mask_gap(masks[e.frame], e.a, e.b) if seen else float("nan")})
+            rows.append({"scene": scene.name, "kind": kind, "target": target, "intervention": iv, "frame": e.frame,
+                         "a": e.a, "b": e.b, "gap_m": mesh_gap(scene, e) if seen else None,
+                         "gap_px": mask_gap(masks[e.frame], e.a, e.b) if seen else None})
     return pa.Table.from_pylist(rows, schema=EVENTS)
 
 
@@ -65,6 +66,7 @@ def run_scene(job: SceneJob) -> None:
     labels = compute_labels(scene, cfg["labels"])
     pixels = pixel_counts(masks, [o.id for o in scene.objects])
     rows = {**labels.rows(), "pixels": pixels.ravel().tolist()}   # rows are frame-major, like pixels
+    rows["scene"] = [job.scene] * len(rows["pixels"])
     write_parquet(pa.Table.from_pydict(rows, schema=LABELS), labels_path, LABELS_SCHEMA, LABELS_VERSION)
     write_parquet(_events_table(scene, cfg["labels"]["collision_merge_frames"], masks), events_path, EVENTS_SCHEMA,
                   EVENTS_VERSION)
@@ -72,12 +74,13 @@ def run_scene(job: SceneJob) -> None:
     candidates, dropped = scene_candidates(scene, cfg["labels"], job.seed, seen,
                                            check_annotate_cfg(cfg["annotate"])["phrasings"])
     write_questions(candidates, questions_path)
-    write_parquet(pa.Table.from_pylist([{"family": f, "reason": r, "count": n} for (f, r), n in sorted(dropped.items())],
-                                       schema=DROPPED), dropped_path, DROPPED_SCHEMA, DROPPED_VERSION)
+    write_parquet(pa.Table.from_pylist([{"scene": job.scene, "family": f, "reason": r, "count": n}
+                                        for (f, r), n in sorted(dropped.items())], schema=DROPPED),
+                  dropped_path, DROPPED_SCHEMA, DROPPED_VERSION)
 
 
 def finalize(store: Store, cfg: Config, scenes: list[str]) -> list[Path]:
-    candidates = {s: read_questions(store.path("annotate", s, ".questions.parquet")) for s in scenes}
+    candidates = {s: read_questions(store.path("annotate", s, CANDIDATES_OUT)) for s in scenes}
     path = store.split_file(QUESTIONS_FILE)
     write_questions(select(candidates, cfg["annotate"], cfg.split(store.split).seed), path)
     return [path]
@@ -88,7 +91,9 @@ STAGE = Stage(
     version=VERSION,
     inputs=("simulate", "render"),
     params=lambda cfg: cfg.digest("labels", "annotate"),
-    outputs=(".parquet", ".events.parquet", ".questions.parquet", ".dropped.parquet"),
+    outputs=(FRAMES_OUT, EVENTS_OUT, CANDIDATES_OUT, DROPPED_OUT),
+    # The layout of versions before 4: four tables side by side in labels/ (a rerun removes them).
+    retired=("*.parquet",),
     run_scene=run_scene,
     finalize=finalize,
     extra_inputs=lambda store, cfg: {"templates": file_digest(TEMPLATES_PATH)},
@@ -123,7 +128,7 @@ def stats(store: Store, cfg: Config) -> str:
         majority = f"{answers.most_common(1)[0][1] / n:.0%}" if n else "-"
         rows.append([fam, kind, n, majority, dist])
     out += [_table(["family", "type", "questions", "majority answer", "answers"], rows), ""]
-    scenes = [s for s in cfg.split(store.split).scene_names() if store.path("annotate", s, ".events.parquet").exists()]
+    scenes = [s for s in cfg.split(store.split).scene_names() if store.path("annotate", s, EVENTS_OUT).exists()]
     return "\n".join(out + _truth_audit(store, cfg, scenes, qs))
 
 
@@ -133,7 +138,7 @@ def _share(x) -> str:
 
 def _truth_audit(store: Store, cfg: Config, scenes: list[str], qs: list[dict]) -> list[str]:
     """How far the truth agrees with what a viewer sees, and how much reasoning the questions need."""
-    events = [read_parquet(store.path("annotate", s, ".events.parquet"), EVENTS_SCHEMA, EVENTS_VERSION).to_pylist()
+    events = [read_parquet(store.path("annotate", s, EVENTS_OUT), EVENTS_SCHEMA, EVENTS_VERSION).to_pylist()
               for s in scenes]
     observed = [e for ev in events for e in ev if e["kind"] == "observed"]
     gm = np.array([e["gap_m"] for e in observed], float)
@@ -156,7 +161,7 @@ def _truth_audit(store: Store, cfg: Config, scenes: list[str], qs: list[dict]) -
             f"`labels.predict_margin` = {within} frames of it and are never asked about.", ""]
     cf = [q for q in qs if q["type"] == "counterfactual"]
     fams = sorted({q["family"] for q in cf})
-    cands = [q for s in scenes for q in read_questions(store.path("annotate", s, ".questions.parquet"))
+    cands = [q for s in scenes for q in read_questions(store.path("annotate", s, CANDIDATES_OUT))
              if q["type"] == "counterfactual"]
     rows = [[f, sum(q["family"] == f for q in cf),
              _share([q["factual"] == q["answer"] for q in cf if q["family"] == f]),
@@ -166,7 +171,7 @@ def _truth_audit(store: Store, cfg: Config, scenes: list[str], qs: list[dict]) -
             _table(["family", "questions", "copy-factual accuracy", "before balancing (all candidates)"], rows), ""]
     dropped = Counter()
     for s in scenes:
-        for r in read_parquet(store.path("annotate", s, ".dropped.parquet"), DROPPED_SCHEMA,
+        for r in read_parquet(store.path("annotate", s, DROPPED_OUT), DROPPED_SCHEMA,
                               DROPPED_VERSION).to_pylist():
             dropped[r["reason"]] += r["count"]
     out += ["### Candidate questions dropped, per reason", "",

@@ -2,10 +2,15 @@
 
 The model side reads only the question's id, scene, type and text; the stored program and answer are read after
 all predictions are written, by `finalize`, to score them.
+
+Writes `answers/<scene>.parquet` (the predictions) and, split level beside questions.parquet, `answers.parquet`
+(every prediction scored) and `metrics.parquet` (the Table 1 columns); a model variant's are answers-noprior/,
+answers-noprior.parquet, ... Split-level tables stay out of answers/, so that the folder is one table.
 """
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 from pathlib import Path
 
@@ -19,13 +24,24 @@ from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.simulate_future import attach
 
-ANSWERS_SCHEMA = "dynclevr.answers"
-ANSWERS_VERSION = 1
-METRICS_SCHEMA = "dynclevr.metrics"
-METRICS_VERSION = 1
+PREDICTIONS_SCHEMA, PREDICTIONS_VERSION = "dynclevr.predictions", 1   # answers/<scene>.parquet
+PREDICTION_FIELDS = [
+    ("scene", pa.string()), ("id", pa.string()),
+    ("predicted_program", pa.string()),   # null: unparsed
+    ("predicted_answer", pa.string()),    # null: unparsed, or the program failed
+    ("status", pa.string()),              # ok / unparsed / failed
+]
+PREDICTIONS = pa.schema(PREDICTION_FIELDS)
+# answers.parquet: the predictions scored. 2: split level (it was answers/answers.parquet, where v1 per-scene files
+# of another schema shared its name)
+ANSWERS_SCHEMA, ANSWERS_VERSION = "dynclevr.answers", 2
+ANSWERS = pa.schema(PREDICTION_FIELDS + [
+    ("type", pa.string()), ("subtype", pa.string()), ("family", pa.string()), ("answer", pa.string()),
+    ("correct", pa.bool_()), ("program_match", pa.bool_())])
+METRICS_SCHEMA, METRICS_VERSION = "dynclevr.metrics", 2   # 2: split level; null accuracy where no question
+METRICS = pa.schema([("column", pa.string()), ("accuracy", pa.float64()), ("questions", pa.int64())])
+ANSWERS_FILE, METRICS_FILE = "answers.parquet", "metrics.parquet"   # Store.model_file: answers-noprior.parquet, ...
 MODEL_COLUMNS = ["id", "scene", "type", "text"]   # all the model may read of a question
-PREDICTION_FIELDS = pa.schema([("id", pa.string()), ("predicted_program", pa.string()),
-                               ("predicted_answer", pa.string()), ("status", pa.string())])
 UNPARSED, FAILED = "unparsed", "failed"   # counted wrong
 
 
@@ -42,14 +58,15 @@ def predict(questions: list[dict], scene: Scene4D, labels_cfg: dict) -> list[dic
     out = []
     for q, program in zip(questions, programs):
         if program is None:
-            out.append({"id": q["id"], "predicted_program": "", "predicted_answer": "", "status": UNPARSED})
+            out.append({"scene": q["scene"], "id": q["id"], "predicted_program": None, "predicted_answer": None,
+                        "status": UNPARSED})
             continue
         try:
             answer, status = executor.run(program), "ok"
         except DynclevrError:  # no unique object, wrong types, an ambiguous label: the question counts as wrong
-            answer, status = "", FAILED
-        out.append({"id": q["id"], "predicted_program": " ".join(program), "predicted_answer": answer,
-                    "status": status})
+            answer, status = None, FAILED
+        out.append({"scene": q["scene"], "id": q["id"], "predicted_program": " ".join(program),
+                    "predicted_answer": answer, "status": status})
     return out
 
 
@@ -59,8 +76,8 @@ def run_scene(job: SceneJob) -> None:
     questions = [q for q in table.to_pylist() if q["scene"] == job.scene]
     scene = attach(Scene4D.read(job.inputs["parse-scene"][0]), job.inputs["simulate-future"][0])
     rows = predict(questions, scene, job.cfg["labels"])
-    write_parquet(pa.Table.from_pylist(rows, schema=PREDICTION_FIELDS), job.outputs[0], ANSWERS_SCHEMA,
-                  ANSWERS_VERSION)
+    write_parquet(pa.Table.from_pylist(rows, schema=PREDICTIONS), job.outputs[0], PREDICTIONS_SCHEMA,
+                  PREDICTIONS_VERSION)
 
 
 def _scores(store, scenes: list[str]) -> list[dict]:
@@ -68,9 +85,10 @@ def _scores(store, scenes: list[str]) -> list[dict]:
                                               QUESTIONS_VERSION).to_pylist()}
     rows = []
     for scene in scenes:
-        for p in read_parquet(store.path("answer", scene, ".parquet"), ANSWERS_SCHEMA, ANSWERS_VERSION).to_pylist():
+        for p in read_parquet(store.path("answer", scene, ".parquet"), PREDICTIONS_SCHEMA,
+                              PREDICTIONS_VERSION).to_pylist():
             q = truth[p["id"]]
-            rows.append({**p, "scene": scene, "type": q["type"], "subtype": q["subtype"], "family": q["family"],
+            rows.append({**p, "type": q["type"], "subtype": q["subtype"], "family": q["family"],
                          "answer": q["answer"], "correct": p["predicted_answer"] == q["answer"],
                          "program_match": p["predicted_program"] == q["program"]})
     return rows
@@ -94,16 +112,18 @@ def table1(rows: list[dict], correct=lambda r: r["correct"]) -> dict[str, tuple[
 
 def finalize(store, cfg, scenes: list[str]) -> list[Path]:
     rows = _scores(store, scenes)
-    answers = store.stage_dir("answer") / "answers.parquet"
-    write_parquet(pa.Table.from_pylist(rows), answers, ANSWERS_SCHEMA, ANSWERS_VERSION)
+    answers = store.model_file(ANSWERS_FILE)
+    write_parquet(pa.Table.from_pylist(rows, schema=ANSWERS), answers, ANSWERS_SCHEMA, ANSWERS_VERSION)
     metrics = [{"column": k, "accuracy": a, "questions": n} for k, (a, n) in table1(rows).items()]
     matched = sum(r["program_match"] for r in rows)
     metrics.append({"column": "Program exact match", "accuracy": 100.0 * matched / max(len(rows), 1),
                     "questions": len(rows)})
     metrics.append({"column": "Unparsed", "accuracy": 100.0 * sum(r["status"] == UNPARSED for r in rows)
                     / max(len(rows), 1), "questions": len(rows)})
-    path = store.stage_dir("answer") / "metrics.parquet"
-    write_parquet(pa.Table.from_pylist(metrics), path, METRICS_SCHEMA, METRICS_VERSION)
+    for m in metrics:   # a column without questions has no accuracy
+        m["accuracy"] = None if math.isnan(m["accuracy"]) else m["accuracy"]
+    path = store.model_file(METRICS_FILE)
+    write_parquet(pa.Table.from_pylist(metrics, schema=METRICS), path, METRICS_SCHEMA, METRICS_VERSION)
     return [answers, path]
 
 
@@ -116,5 +136,7 @@ def _extra(store, cfg) -> dict[str, str]:
             **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
 
-STAGE = Stage("answer", 3, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
-              outputs=(".parquet",), run_scene=run_scene, finalize=finalize, extra_inputs=_extra)
+STAGE = Stage("answer", 4, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
+              outputs=(".parquet",), run_scene=run_scene, finalize=finalize, extra_inputs=_extra,
+              # Before version 4 the split-level tables lay in answers/ beside the per-scene ones.
+              retired=(ANSWERS_FILE, METRICS_FILE))

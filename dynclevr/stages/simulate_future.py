@@ -24,10 +24,18 @@ from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.scene import INTERVENTIONS, Collision, Scene4D
 
 FUTURE_SCHEMA = "dynclevr.future"
-FUTURE_VERSION = 1
-FUTURE_FIELDS = pa.schema([("run", pa.string()), ("object", pa.int32()), ("intervention", pa.string()),
-                           ("frame", pa.int32()), ("a", pa.int32()), ("b", pa.int32()), ("x", pa.float64()),
-                           ("y", pa.float64()), ("z", pa.float64()), ("impulse", pa.float64())])
+FUTURE_VERSION = 2   # 2: scene column; nulls, not -1 and ""
+FUTURE_FIELDS = pa.schema([
+    ("scene", pa.string()),
+    ("run", pa.string()),             # future / counterfactual
+    ("object", pa.int32()),           # counterfactual: the changed object; future: null
+    ("intervention", pa.string()),    # counterfactual: static / slow / fast / accelerating / floating; future: null
+    # One collision per row; a counterfactual run with none has one row whose event columns are null, so that
+    # "no collision" differs from "not simulated".
+    ("frame", pa.int32()), ("a", pa.int32()), ("b", pa.int32()),
+    ("x", pa.float64()), ("y", pa.float64()), ("z", pa.float64()),   # contact point, m
+    ("impulse", pa.float64()),
+])
 
 
 def _bodies(scene: Scene4D, t: np.ndarray, ids: list[int]) -> list[Body]:
@@ -101,13 +109,12 @@ def run_scene(job: SceneJob) -> None:
     else:
         future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg),
                                    job.cfg["imagine"]["counterfactuals"] == "replay")
-    rows = [("future", -1, "", e) for e in future]
+    rows = [("future", None, None, e) for e in future]
     rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
-    # A run with no collision still needs a row, so that "no collision" differs from "not simulated".
     rows += [("counterfactual", oid, iv, None) for (oid, iv), events in sorted(outcomes.items()) if not events]
     cols = {f.name: [] for f in FUTURE_FIELDS}
     for run, oid, iv, e in rows:
-        vals = [run, oid, iv] + ([e.frame, e.a, e.b, *e.point, e.impulse] if e else [-1, -1, -1, 0.0, 0.0, 0.0, 0.0])
+        vals = [job.scene, run, oid, iv] + ([e.frame, e.a, e.b, *e.point, e.impulse] if e else [None] * 7)
         for f, v in zip(FUTURE_FIELDS, vals):
             cols[f.name].append(v)
     write_parquet(pa.table(cols, schema=FUTURE_FIELDS), job.outputs[0], FUTURE_SCHEMA, FUTURE_VERSION)
@@ -121,7 +128,7 @@ def attach(scene: Scene4D, path: Path) -> Scene4D:
     for r in t:
         if r["run"] == "counterfactual":
             events = scene.counterfactuals.setdefault((r["object"], r["intervention"]), [])
-            if r["frame"] >= 0:
+            if r["frame"] is not None:
                 events.append(_row_event(r))
     return scene
 
@@ -138,7 +145,7 @@ def _params(cfg) -> dict:
             **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
 
 
-STAGE = Stage("simulate-future", 3, inputs=("parse-scene",),
+STAGE = Stage("simulate-future", 4, inputs=("parse-scene",),   # 4: a scene column and nulls in future/
               params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
