@@ -6,6 +6,7 @@ install's finder there is not loaded), so pip resolves every dependency, torch==
 anything (--no-index); the wheel itself is the only thing installed. About 70 s: the `install` marker lets a quick
 local run leave it out (`pytest -m "not install"`)."""
 
+import os
 import shutil
 import subprocess
 import sys
@@ -23,6 +24,8 @@ SKIP = shutil.ignore_patterns(".venv", "data", ".git", "build", "dist", "*.egg-i
 
 
 def run(*args, **kw) -> subprocess.CompletedProcess:
+    # no PYTHONPATH: it would put a checkout before the installed wheel
+    kw.setdefault("env", {k: v for k, v in os.environ.items() if k != "PYTHONPATH"})
     out = subprocess.run([str(a) for a in args], capture_output=True, text=True, **kw)
     assert out.returncode == 0, (args, out.stdout[-2000:], out.stderr[-2000:])
     return out
