@@ -35,6 +35,7 @@ STAGE_DIRS = {
     "parse-scene": "parsed",
     "simulate-future": "future",
     "answer": "answers",
+    "answer-cnnlstm": "answers-cnnlstm",   # the CNN+LSTM baseline (it reads the video, not a parse)
 }
 # Which stage makes each artifact kind: named in "rerun ..." hints.
 DIR_STAGES = {v: k for k, v in STAGE_DIRS.items()}
@@ -180,6 +181,8 @@ SPLIT_FILES = {"objects.parquet": "simulate", "questions.parquet": "annotate", "
                "metrics.parquet": "answer"}
 
 
+# A baseline with a stage of its own, whose outputs are named like a model variant's: "cnnlstm" -> answer-cnnlstm.
+BASELINE_STAGES = {"cnnlstm": "answer-cnnlstm"}
 # store variant -> CLI flag
 VARIANT_FLAGS = {"noprior": " --no-physics-prior", "particle": " --particle-filter", "perframe": " --per-frame"}
 
@@ -209,6 +212,8 @@ def rerun_hint(path: Path) -> str:
         stage, split, data_dir = DIR_STAGES.get(kind), folder.parent.name, folder.parent.parent
         scene = path.name.split(".", 1)[0]
         scenes = f" --scenes {int(scene)}" if scene.isdigit() else ""
+    if variant in BASELINE_STAGES:   # answers-cnnlstm/, answers-cnnlstm.parquet: a stage of its own
+        stage, variant = BASELINE_STAGES[variant], ""
     if not stage:
         return "regenerate it"
     flag = VARIANT_FLAGS.get(variant, "")

@@ -13,7 +13,7 @@ import typer
 
 from dynclevr import DynclevrError, __version__
 from dynclevr.config import Config
-from dynclevr.pipeline import ORDER, Runner, model_configs, parse_scenes
+from dynclevr.pipeline import BASELINES, ORDER, Runner, model_configs, parse_scenes
 
 # Shell completion: `dynclevr --install-completion` (bash, zsh, fish), or `--show-completion` to see the script.
 app = typer.Typer(add_completion=True, no_args_is_help=True, pretty_exceptions_enable=False,
@@ -89,7 +89,7 @@ def _stage_command(name: str):
     return command
 
 
-for _name in ORDER:
+for _name in ORDER + BASELINES:
     app.command(_name)(_stage_command(_name))
 
 
@@ -98,18 +98,22 @@ def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, forc
         config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
         ablation: bool = typer.Option(True, "--ablation/--no-ablation",
                                       help="also the report's other rows: the model without the physics prior and "
-                                           "with the particle filter, and the per-frame 3D baseline")):
-    """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer."""
-    r = runner(split, config, data_dir, workers)
-    indices = parse_scenes(scenes, r.split)
+                                           "with the particle filter, the per-frame 3D and the CNN+LSTM baselines")):
+    """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer; then the same
+    model stages for the report's other rows, and the CNN+LSTM baseline (answer-cnnlstm)."""
+    main = runner(split, config, data_dir, workers)
+    indices = parse_scenes(scenes, main.split)
     for name in ORDER:
-        r.run(name, indices, force)
+        main.run(name, indices, force)
     if ablation:
-        for row, cfg in model_configs(r.cfg)[1:]:
+        for row, cfg in model_configs(main.cfg)[1:]:
             typer.echo(f"{row}:")
             r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
             for name in ORDER[3:]:
                 r.run(name, indices, force)
+        typer.echo("CNN+LSTM:")
+        for name in BASELINES:
+            main.run(name, indices, force)
 
 
 @app.command()
@@ -119,7 +123,7 @@ def status(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, 
     r = runner(split, config, data_dir, no_physics_prior=no_physics_prior, particle_filter=particle_filter,
                per_frame=per_frame)
     typer.echo(f"split {r.split.name}: {r.split.scenes} scenes under {r.store.root}")
-    for name in ORDER:
+    for name in ORDER + BASELINES:
         try:
             st = r.status(name)
         except DynclevrError as e:

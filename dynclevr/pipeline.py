@@ -26,6 +26,7 @@ from dynclevr.artifacts import MODEL_STAGES, ArtifactError, STAGE_DIRS, VARIANT_
 from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
+BASELINES = ("answer-cnnlstm",)   # stages beside the model's that read the video themselves (Table 1's baselines)
 SPLIT_ENTRY = "_split"
 WORKER_TASKS = 25   # scenes a pool worker runs before it is replaced
 
@@ -105,7 +106,7 @@ def model_configs(cfg: Config) -> list[tuple[str, Config]]:
 
 def get_stage(name: str) -> Stage:
     if name not in STAGE_DIRS:
-        raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER)}")
+        raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER + BASELINES)}")
     module = "dynclevr.stages." + name.replace("-", "_")
     try:
         return importlib.import_module(module).STAGE
@@ -148,8 +149,9 @@ class Runner:
         for up in stage.inputs:
             d = manifests[up].digest(scene)
             made_by = manifests[up].entries.get(scene, {}).get("stage_version")
-            if d is not None and made_by != get_stage(up).version:
-                # A data dir of an older dynclevr: its tables have another layout or schema.
+            if made_by is not None and made_by != get_stage(up).version:
+                # A data dir of an older dynclevr: its tables have another layout or schema. (An entry that
+                # records no version, a hand-built input, is taken as it is.)
                 flag = VARIANT_FLAGS.get(self.store.variant, "") if up in MODEL_STAGES else ""
                 raise DynclevrError(f"{STAGE_DIRS[up]}/{scene} was made by an older {up} (v{made_by}; this dynclevr "
                                     f"has v{get_stage(up).version}) for {stage.name}: run `dynclevr {up} --split "

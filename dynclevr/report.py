@@ -1,5 +1,7 @@
 """The paper's Table 1 measured on our data: NS-4DPhysics, its ablation without the physics prior, the particle
-filter, the oracle (truth scene + gold programs), the blind baseline, and the paper's reported rows for reference."""
+filter, the per-frame 3D baseline (PO3D-VQA style) and the CNN+LSTM baseline, the oracle (truth scene + gold
+programs), the blind baseline; below them the paper's reported rows for reference. PLLaVA and GPT-4o are the
+paper's figures only ("paper, not reproduced"): their weights are not here and this machine has no network."""
 
 from __future__ import annotations
 
@@ -17,14 +19,20 @@ from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.answer import ANSWERS_FILE, ANSWERS_SCHEMA, ANSWERS_VERSION, table1
 
 COLUMNS = ("Average", "Factual All", "Vel", "Acc", "Col", "Predictive", "Counterfactual")
+NOT_REPRODUCED = "paper, not reproduced: "
 PAPER = {  # REFERENCE.md section 3 (paper, Table 1, its test split)
     "paper: NS-4DPhysics": (82.64, 87.70, 88.66, 83.73, 88.46, 85.71, 74.51),
     "paper: NS-4DPhysics w/o physics prior": (75.97, 79.68, 81.40, 81.30, 74.88, 78.83, 69.39),
     "paper: PO3D-VQA": (62.93, 61.22, 62.21, 73.17, 51.20, 65.33, 62.24),
-    "paper: PLLaVA": (59.24, 54.61, 55.00, 63.80, 46.63, 67.52, 73.47),
-    "paper: GPT-4o + reasoning": (56.06, 55.50, 58.81, 57.67, 47.12, 56.93, 58.16),
+    NOT_REPRODUCED + "PLLaVA": (59.24, 54.61, 55.00, 63.80, 46.63, 67.52, 73.47),
+    NOT_REPRODUCED + "GPT-4o + reasoning": (56.06, 55.50, 58.81, 57.67, 47.12, 56.93, 58.16),
     "paper: CNN+LSTM": (48.03, 40.63, 41.71, 56.79, 25.37, 56.04, 47.42),
 }
+CNNLSTM_ROW = "CNN+LSTM"
+# A measured row -> the paper's row of the same model (the chart sets them side by side).
+PAPER_OF = {"NS-4DPhysics (ours)": "paper: NS-4DPhysics", "ours without physics prior":
+            "paper: NS-4DPhysics w/o physics prior", "per-frame 3D, PO3D-VQA style": "paper: PO3D-VQA",
+            CNNLSTM_ROW: "paper: CNN+LSTM"}
 
 
 def _answers(store: Store, variant: str) -> list[dict] | None:
@@ -32,14 +40,15 @@ def _answers(store: Store, variant: str) -> list[dict] | None:
     return read_parquet(path, ANSWERS_SCHEMA, ANSWERS_VERSION).to_pylist() if path.exists() else None
 
 
-def stale_answers(cfg: Config, store: Store, answers: list[dict], questions: list[dict]) -> str | None:
+def stale_answers(cfg: Config, store: Store, answers: list[dict], questions: list[dict],
+                  stage: str = "answer") -> str | None:
     """Why a model row's answers are not those of the current questions and parses (None: they are). The answer
     stage's cache keys know: a scene is stale when its questions, its parse or its future changed since it ran."""
     from dynclevr.pipeline import Runner
 
-    status = Runner(cfg, cfg.split(store.split), store.data_dir, echo=lambda *a: None).status("answer")
+    status = Runner(cfg, cfg.split(store.split), store.data_dir, echo=lambda *a: None).status(stage)
     if status["stale"] or status["missing"]:
-        return (f"answer is stale for {len(status['stale'])} and has not run for {len(status['missing'])} of "
+        return (f"{stage} is stale for {len(status['stale'])} and has not run for {len(status['missing'])} of "
                 f"{len(cfg.split(store.split).scene_names())} scenes")
     if {a["id"] for a in answers} != {q["id"] for q in questions}:
         return "answers.parquet does not cover the current questions.parquet"
@@ -91,6 +100,14 @@ def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple],
         extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / max(len(answers), 1)
         extra[f"{name}: unparsed"] = sum(a["status"] == "unparsed" for a in answers)
         extra[f"{name}: failed programs"] = sum(a["status"] == "failed" for a in answers)
+    answers = _answers(store, "cnnlstm")   # answers-cnnlstm.parquet (stage answer-cnnlstm)
+    if answers is None:
+        extra[CNNLSTM_ROW] = "not run"
+    else:
+        why = stale_answers(cfg, store, answers, questions, stage="answer-cnnlstm")
+        if why:
+            raise DynclevrError(f"the row '{CNNLSTM_ROW}' would show stale numbers ({why}): run `{rerun}`")
+        rows[CNNLSTM_ROW] = tuple(table1(answers)[c][0] for c in COLUMNS)
     rows["oracle (truth scene, gold programs)"] = tuple(
         table1(oracle_rows(store, cfg, questions))[c][0] for c in COLUMNS)
     blind = blind_rows(questions)
@@ -120,18 +137,26 @@ def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    names = [n for n in rows if not n.startswith("paper:") or n in ("paper: NS-4DPhysics",
-                                                                     "paper: NS-4DPhysics w/o physics prior")]
+    # Each measured row, then (hatched, in its colour) the paper's row of the same model; the paper's rows of models
+    # not reproduced here last, in grey.
+    measured = [n for n in rows if n not in PAPER]
+    bars, colours = [], plt.get_cmap("tab10").colors
+    for k, n in enumerate(measured):
+        bars.append((n, colours[k % 10], None))
+        if PAPER_OF.get(n) in rows:
+            bars.append((PAPER_OF[n], colours[k % 10], "//"))
+    bars += [(n, "0.6", "//") for n in rows if n in PAPER and n not in {b[0] for b in bars}]
     x = np.arange(len(COLUMNS))
-    w = 0.8 / len(names)
-    fig, ax = plt.subplots(figsize=(11, 5.2))
-    for k, n in enumerate(names):
-        ax.bar(x + k * w - 0.4 + w / 2, [0 if math.isnan(v) else v for v in rows[n]], w, label=n)
+    w = 0.86 / len(bars)
+    fig, ax = plt.subplots(figsize=(14, 6))
+    for k, (n, colour, hatch) in enumerate(bars):
+        ax.bar(x + k * w - 0.43 + w / 2, [0 if v is None or math.isnan(v) else v for v in rows[n]], w, label=n,
+               color="white" if hatch else colour, edgecolor=colour if hatch else "none", hatch=hatch, linewidth=0.6)
     ax.set_xticks(x, COLUMNS)
     ax.set_ylabel("accuracy (%)")
     ax.set_ylim(0, 105)
-    ax.set_title(f"DynSuperCLEVR question answering, split '{split}'")
-    ax.legend(fontsize=8, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.08), frameon=False)
+    ax.set_title(f"DynSuperCLEVR question answering, split '{split}' (hatched: the paper's figures, its test split)")
+    ax.legend(fontsize=8, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.08), frameon=False)
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)

@@ -9,7 +9,7 @@ import pytest
 from mcap.reader import make_reader
 from mcap.writer import CompressionType, Writer
 
-from dynclevr.artifacts import ArtifactError, write_parquet
+from dynclevr.artifacts import ArtifactError, read_parquet, write_parquet
 from dynclevr.baselines import cnnlstm, perframe
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
@@ -17,7 +17,8 @@ from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
-from dynclevr.pipeline import Runner
+from dynclevr.pipeline import Runner, SceneJob
+from dynclevr.stages import answer, answer_cnnlstm
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.video import CALIBRATION, IMAGE, POSE, TF, Video
 
@@ -158,6 +159,30 @@ def test_per_frame_parse_reads_only_the_video(rendered, tmp_path):
     Runner(pf, pf.split("bl"), alone, echo=lambda *a: None).run("parse-scene", [0])
     assert (alone / "bl" / "parsed-perframe" / "000000.mcap").read_bytes() == expected
     assert not (alone / "bl" / "sim").exists() and not (alone / "bl" / "labels").exists()
+
+
+def test_cnnlstm_reads_only_the_video_and_the_question_text(rendered, tmp_path):
+    """The stage's predictions, made in a data dir holding the stripped video and questions.parquet cut to
+    answer.MODEL_COLUMNS, equal those made beside the truth and the full questions."""
+    data, cfg, r = rendered
+    full = read_parquet(data / "bl" / "questions.parquet", QUESTIONS_SCHEMA, QUESTIONS_VERSION)
+    assert full.num_rows > 0
+
+    def predict(root):
+        out = tmp_path / f"{root.name}.parquet"
+        answer_cnnlstm.run_scene(SceneJob("bl", "000000", 0, 0, cfg.data, root,
+                                          {"render": [root / "bl" / "video" / "000000.mcap"]}, [out]))
+        return read_parquet(out, answer.PREDICTIONS_SCHEMA, answer.PREDICTIONS_VERSION).to_pylist()
+
+    expected = predict(data)
+    alone = tmp_path / "alone"
+    _video_only(data, alone)
+    write_parquet(full.select(answer.MODEL_COLUMNS), alone / "bl" / "questions.parquet", QUESTIONS_SCHEMA,
+                  QUESTIONS_VERSION)
+    got = predict(alone)
+    assert got == expected and len(got) == full.num_rows
+    answers = set(cnnlstm.CnnLstmModel.load().answers)
+    assert all(p["predicted_answer"] in answers for p in got)
 
 
 def test_cnnlstm_predictive_questions_see_only_the_observed_frames():

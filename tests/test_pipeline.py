@@ -35,6 +35,7 @@ def test_report_has_every_row_and_the_oracle_is_exact(run):
     text = cli("report")
     rows = {line.split("|")[1].strip(): line for line in text.splitlines() if line.startswith("| ")}
     for name in ("NS-4DPhysics (ours)", "ours without physics prior", "ours with the particle filter",
+                 "per-frame 3D, PO3D-VQA style", "CNN+LSTM", "paper, not reproduced: PLLaVA",
                  "oracle (truth scene, gold programs)",
                  "blind (train-split majority per family)", "paper: NS-4DPhysics"):
         assert name in rows, text

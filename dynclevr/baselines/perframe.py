@@ -56,6 +56,17 @@ def enabled(cfg: Config) -> bool:
     return cfg.data.get("parser", {}).get("filter") == "none"
 
 
+# The [parser] settings the per-frame model reads (the rest are the filter's): its cache key holds these only, so
+# that tuning the tracker does not rerun this baseline.
+PARSER_KEYS = ("detect_threshold", "max_detections", "new_track_score", "spawn_pixels", "merge_radius",
+               "appearance_weight", "static_speed", "engine_threshold")
+
+
+def parse_params(cfg: Config) -> dict:
+    """What the per-frame parse depends on (parse-scene's params for this variant)."""
+    return {"parser": {k: cfg["parser"][k] for k in PARSER_KEYS}, **cfg.digest("physics", "video", "perframe")}
+
+
 def params(cfg: Config) -> dict:
     p = cfg["perframe"]
     for key in ("velocity_window", "min_frames", "gate", "reach", "max_gap", "static_speed"):

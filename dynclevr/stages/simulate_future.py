@@ -140,9 +140,9 @@ def _row_event(r: dict) -> Collision:
 def _params(cfg) -> dict:
     from dynclevr.baselines import perframe
 
-    # (the per-frame baseline's own section only where it runs: the other variants' caches stay as they are)
-    return {**cfg.digest("physics", "video", "labels", "imagine"),
-            **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
+    if perframe.enabled(cfg):   # the per-frame baseline's future reads these only
+        return cfg.digest("physics", "video", "perframe")
+    return cfg.digest("physics", "video", "labels", "imagine")
 
 
 STAGE = Stage("simulate-future", 4, inputs=("parse-scene",),   # 4: a scene column and nulls in future/
