@@ -26,6 +26,7 @@ from dynclevr.artifacts import MODEL_STAGES, ArtifactError, STAGE_DIRS, VARIANT_
 from dynclevr.config import Config, Split, scene_name, scene_seed, stable_digest
 
 ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "answer")
+BASELINES = ("answer-cnnlstm",)   # stages beside the model's that read the video themselves (Table 1's baselines)
 SPLIT_ENTRY = "_split"
 WORKER_TASKS = 25   # scenes a pool worker runs before it is replaced
 
@@ -105,7 +106,7 @@ def model_configs(cfg: Config) -> list[tuple[str, Config]]:
 
 def get_stage(name: str) -> Stage:
     if name not in STAGE_DIRS:
-        raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER)}")
+        raise DynclevrError(f"unknown stage '{name}': use one of {', '.join(ORDER + BASELINES)}")
     module = "dynclevr.stages." + name.replace("-", "_")
     try:
         return importlib.import_module(module).STAGE
