@@ -207,3 +207,12 @@ def test_collision_classifier_trains_from_a_split_and_loads(tmp_path):
     first = (out / "collision.json").read_bytes()
     train_collisions(cfg, tmp_path / "data", cfg.split("tiny"), out, workers=1, echo=lambda *a: None)
     assert (out / "collision.json").read_bytes() == first
+
+
+def test_smoothed_motion_ignores_a_bad_detection():
+    """A detection 2 m off (placed on a neighbour) in the middle of a steady drive changes no fit around it."""
+    t = np.arange(40) / FPS
+    z = np.stack([3.0 * t, np.zeros_like(t), np.zeros_like(t)], 1)
+    z[20] += [0.0, 2.0, 0.0]
+    x, v = smoothed_motion(z, [], FPS, 12, 8)
+    np.testing.assert_allclose(v[:, :2], np.tile([3.0, 0.0], (40, 1)), atol=1e-6)

@@ -55,14 +55,17 @@ class QuadraticFit:
     """A least-squares quadratic through (frame, position) samples: its acceleration, and its velocity at any
     frame. Fewer than `min_samples` samples: no fit (zero acceleration and velocity)."""
 
-    def __init__(self, samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int):
+    def __init__(self, samples: list[tuple[int, np.ndarray]], fps: int, min_samples: int, robust: bool = False):
+        """`robust`: without the samples it explains worst (`_robust_fit`)."""
         self.fps = fps
         self.ok = len(samples) >= min_samples
         self.centre, self.coef = 0.0, np.zeros((3, 3))
         if self.ok:
             t = np.array([f for f, _ in samples], float) / fps
             self.centre = float(t.mean())
-            self.coef = _fit(t - self.centre, np.array([x for _, x in samples]), True)
+            x = np.array([x for _, x in samples])
+            coef = _robust_fit(t - self.centre, x, min_samples // 2) if robust else _fit(t - self.centre, x, True)
+            self.coef[:len(coef)] = coef
 
     @property
     def acceleration(self) -> np.ndarray:
@@ -106,7 +109,8 @@ def smoothed_motion(z: np.ndarray, breaks: list[int], fps: int, half_window: int
     """Non-causal (position, velocity) [n, 3] at each frame of a track from its measured positions z [n, 3] (NaN:
     no detection): the value and derivative at the frame of a least-squares fit to the measurements within
     +-half_window frames, not across a break (an impact, or a change of motion the engine missed; indices into z).
-    Quadratic where the window holds at least 2 x min_samples measurements, linear from min_samples; NaN with fewer.
+    Quadratic where the window holds at least 2 x min_samples measurements, linear from min_samples; NaN with fewer;
+    robust to bad detections (`_robust_fit`).
 
     The factual questions are about a video seen whole, so frame t may use frames after it: at the start of a
     track a causal estimate has a few frames of evidence, a centred one a whole window."""
@@ -120,5 +124,24 @@ def smoothed_motion(z: np.ndarray, breaks: list[int], fps: int, half_window: int
             idx = np.nonzero(seen[a:b])[0] + a
             if len(idx) < min_samples:
                 continue
-            pos[t], vel[t] = _fit((idx - t) / fps, z[idx], len(idx) >= 2 * min_samples)[:2]
+            pos[t], vel[t] = _robust_fit((idx - t) / fps, z[idx], min_samples)[:2]
     return pos, vel
+
+
+OUTLIER_MADS, OUTLIER_FLOOR = 3.0, 0.15    # a residual above 3 robust sigmas (and 15 cm) is a bad detection
+
+
+def _robust_fit(t: np.ndarray, z: np.ndarray, min_samples: int, rounds: int = 3) -> np.ndarray:
+    """`_fit` (quadratic from 2 x min_samples samples, else linear) without the measurements it explains worst: a
+    detection placed on a neighbour, or with its depth metres off, would otherwise bend every fit it is in."""
+    keep = np.ones(len(t), bool)
+    for _ in range(rounds):
+        quadratic = keep.sum() >= 2 * min_samples
+        coef = _fit(t[keep], z[keep], quadratic)
+        basis = np.stack([np.ones_like(t), t] + ([0.5 * t * t] if quadratic else []), 1)
+        r = np.linalg.norm(z - basis @ coef, axis=1)
+        ok = r <= max(OUTLIER_MADS * 1.4826 * float(np.median(r[keep])), OUTLIER_FLOOR)
+        if (ok == keep).all() or ok.sum() < min_samples:
+            return coef
+        keep = ok
+    return _fit(t[keep], z[keep], keep.sum() >= 2 * min_samples)

@@ -616,7 +616,7 @@ class SceneParser:
         # The engine holds until the first impact (the generator's rule): its evidence is the whole stretch before it.
         first = min([b for b in k.breaks if b > 0] + [len(z)])
         samples = [(f, z[f]) for f in range(first) if np.isfinite(z[f]).all()]
-        fit = dynamics.QuadraticFit(samples, self.fps, 2 * p["min_fit_frames"])
+        fit = dynamics.QuadraticFit(samples, self.fps, 2 * p["min_fit_frames"], robust=True)
         if fit.ok:
             mid = samples[len(samples) // 2][0]
             engine[:first] = dynamics.engine_on(fit.velocity(mid), fit.acceleration, k.quat[mid], p)
