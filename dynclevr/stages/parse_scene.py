@@ -58,9 +58,9 @@ def _detector():
 
 
 def _params(cfg) -> dict:
-    # (the per-frame baseline's own section only where it runs: the other variants' caches stay as they are)
-    return {**cfg.digest("parser", "physics", "video", "labels"),
-            **(cfg.digest("perframe") if perframe.enabled(cfg) else {})}
+    if perframe.enabled(cfg):   # the settings the per-frame baseline reads (tuning the tracker does not rerun it)
+        return perframe.parse_params(cfg)
+    return cfg.digest("parser", "physics", "video", "labels")
 
 
 STAGE = Stage(
