@@ -145,7 +145,8 @@ def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
         bars.append((n, colours[k % 10], None))
         if PAPER_OF.get(n) in rows:
             bars.append((PAPER_OF[n], colours[k % 10], "//"))
-    bars += [(n, "0.6", "//") for n in rows if n in PAPER and n not in {b[0] for b in bars}]
+    rest = [n for n in rows if n in PAPER and n not in {b[0] for b in bars}]
+    bars += [(n, str(0.65 - 0.3 * k / max(len(rest) - 1, 1)), ("//", "\\\\", "xx")[k % 3]) for k, n in enumerate(rest)]
     x = np.arange(len(COLUMNS))
     w = 0.86 / len(bars)
     fig, ax = plt.subplots(figsize=(14, 6))
