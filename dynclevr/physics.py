@@ -314,6 +314,18 @@ class World:
         if floating is not None:
             self.floating = np.array(floating, bool).reshape(n)
 
+    def place(self, which: Sequence[int], position, orientation, velocity, angular_velocity, engine, floating
+              ) -> None:
+        """Teleport the bodies `which` (indices) to states (arrays [len(which), ...]) with their engine and floating
+        flags; the others keep theirs (a counterfactual replay moves only the bodies it has not reached)."""
+        for k, i in enumerate(which):
+            uid = self.ids[i]
+            self.client.resetBasePositionAndOrientation(uid, tuple(map(float, position[k])),
+                                                        tuple(map(float, orientation[k])))
+            self.client.resetBaseVelocity(uid, tuple(map(float, velocity[k])), tuple(map(float, angular_velocity[k])))
+        self.engine[list(which)] = np.asarray(engine, bool)
+        self.floating[list(which)] = np.asarray(floating, bool)
+
     def step_frame(self) -> dict[tuple[int, int], tuple[tuple[float, float, float], float]]:
         """Advance one video frame (hz / fps physics steps) under the engine and floating forces.
 

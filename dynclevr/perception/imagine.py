@@ -65,12 +65,8 @@ def counterfactual_run(scene: Scene4D, bodies: Sequence[Body], ids: list[int], i
 
 def _replay(world: World, scene: Scene4D, cols: list[int], reached: np.ndarray, t: int) -> None:
     """Put every object not yet reached at its estimated state of frame t (engine and floating as estimated)."""
-    s = world.states()
-    follow = ~reached
-    if not follow.any():
-        return
-    c = np.array(cols)[follow]
-    s.position[follow], s.orientation[follow] = scene.position[t, c], scene.orientation[t, c]
-    s.velocity[follow], s.angular_velocity[follow] = scene.velocity[t, c], scene.angular_velocity[t, c]
-    s.engine[follow], s.floating[follow] = scene.engine[t, c], scene.floating[t, c]
-    world.set_state(s.position, s.orientation, s.velocity, s.angular_velocity, s.engine, s.floating)
+    follow = np.flatnonzero(~reached)
+    if len(follow):
+        c = np.array(cols)[follow]
+        world.place(follow, scene.position[t, c], scene.orientation[t, c], scene.velocity[t, c],
+                    scene.angular_velocity[t, c], scene.engine[t, c], scene.floating[t, c])

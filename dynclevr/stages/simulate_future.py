@@ -145,7 +145,8 @@ def _params(cfg) -> dict:
     return cfg.digest("physics", "video", "labels", "imagine")
 
 
-STAGE = Stage("simulate-future", 4, inputs=("parse-scene",),   # 4: a scene column and nulls in future/
+# 4: a scene column and nulls in future/; 5: the counterfactual replay moves only the bodies it has not reached
+STAGE = Stage("simulate-future", 5, inputs=("parse-scene",),
               params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
