@@ -6,7 +6,7 @@ STAMP := $(VENV)/.installed
 SPLIT ?= small
 WORKERS ?= 2
 
-.PHONY: all setup test smoke bench realistic clean
+.PHONY: all setup test smoke bench realistic ray clean
 
 all: $(STAMP)
 	$(BIN)/dynclevr run --split $(SPLIT) --workers $(WORKERS)
@@ -37,6 +37,11 @@ realistic: $(STAMP)
 		{ apt-get install -y -q libllvm19 || { apt-get update -q && apt-get install -y -q libllvm19; }; }
 	$(BIN)/pip install -q --disable-pip-version-check -e '.[realistic]'
 	$(BIN)/python -c "from dynclevr.render.mitsuba import require_mitsuba; require_mitsuba(); print('mitsuba ready')"
+
+# The Ray executor (`dynclevr run --executor ray [--ray-address auto]`): an optional extra, as the realistic backend.
+ray: $(STAMP)
+	$(BIN)/pip install -q --disable-pip-version-check -e '.[ray]'
+	$(BIN)/python -c "import ray; print('ray', ray.__version__, 'ready')"
 
 clean:
 	rm -rf data/tiny data/small

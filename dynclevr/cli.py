@@ -46,6 +46,12 @@ ScenesOpt = typer.Option(None, "--scenes", help="subset of scene indices, e.g. 3
 ForceOpt = typer.Option(False, "--force", help="rerun even where the cache is fresh")
 ConfigOpt = typer.Option(None, "--config", help="a TOML file merged over pipeline.toml")
 WorkersOpt = typer.Option(1, "--workers", min=1, help="scenes run in parallel processes")
+ExecutorOpt = typer.Option("local", "--executor",
+                           help="where per-scene tasks run: local (this machine's process pool) or ray (a Ray "
+                                "cluster; `make ray` installs it); same cache, manifests and bytes")
+RayAddressOpt = typer.Option(None, "--ray-address",
+                             help="with --executor ray: the cluster to join (auto: the one `ray start` began on this "
+                                  "node); default: a local Ray with --workers CPUs")
 DataOpt = typer.Option(Path("data"), "--data-dir", help="artifact root: <data-dir>/<split>/<stage>/")
 NoPriorOpt = typer.Option(False, "--no-physics-prior",
                           help="the paper's ablation: the scene parser without the physics prior; model outputs "
@@ -72,17 +78,21 @@ def load_config(config: Path | None, no_physics_prior: bool = False, particle_fi
 
 
 def runner(split: str | None, config: Path | None, data_dir: Path, workers: int = 1,
-           no_physics_prior: bool = False, particle_filter: bool = False, per_frame: bool = False) -> Runner:
+           no_physics_prior: bool = False, particle_filter: bool = False, per_frame: bool = False,
+           executor: str = "local", ray_address: str | None = None) -> Runner:
     cfg = load_config(config, no_physics_prior, particle_filter, per_frame)
-    return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
+    return Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo, executor=executor,
+                  ray_address=ray_address)
 
 
 def _stage_command(name: str):
     def command(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, force: bool = ForceOpt,
                 config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
                 no_physics_prior: bool = NoPriorOpt, particle_filter: bool = ParticleOpt,
-                per_frame: bool = PerFrameOpt):
-        r = runner(split, config, data_dir, workers, no_physics_prior, particle_filter, per_frame)
+                per_frame: bool = PerFrameOpt, executor: str = ExecutorOpt,
+                ray_address: Optional[str] = RayAddressOpt):
+        r = runner(split, config, data_dir, workers, no_physics_prior, particle_filter, per_frame, executor,
+                   ray_address)
         r.run(name, parse_scenes(scenes, r.split), force)
 
     command.__doc__ = f"Run the {name} stage over a split (cached per scene)."
@@ -98,17 +108,19 @@ def run(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt, forc
         config: Optional[Path] = ConfigOpt, workers: int = WorkersOpt, data_dir: Path = DataOpt,
         ablation: bool = typer.Option(True, "--ablation/--no-ablation",
                                       help="also the report's other rows: the model without the physics prior and "
-                                           "with the particle filter, the per-frame 3D and the CNN+LSTM baselines")):
+                                           "with the particle filter, the per-frame 3D and the CNN+LSTM baselines"),
+        executor: str = ExecutorOpt, ray_address: Optional[str] = RayAddressOpt):
     """Run every stage in order: simulate, render, annotate, parse-scene, simulate-future, answer; then the same
     model stages for the report's other rows, and the CNN+LSTM baseline (answer-cnnlstm)."""
-    main = runner(split, config, data_dir, workers)
+    main = runner(split, config, data_dir, workers, executor=executor, ray_address=ray_address)
     indices = parse_scenes(scenes, main.split)
     for name in ORDER:
         main.run(name, indices, force)
     if ablation:
         for row, cfg in model_configs(main.cfg)[1:]:
             typer.echo(f"{row}:")
-            r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
+            r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo, executor=executor,
+                       ray_address=ray_address)
             for name in ORDER[3:]:
                 r.run(name, indices, force)
         typer.echo("CNN+LSTM:")

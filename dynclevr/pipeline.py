@@ -15,8 +15,10 @@ import importlib
 import os
 import sys
 import time
+import traceback
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from dataclasses import dataclass, field
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field, replace
 from multiprocessing import get_context
 from pathlib import Path
 from typing import Callable
@@ -29,6 +31,10 @@ ORDER = ("simulate", "render", "annotate", "parse-scene", "simulate-future", "an
 BASELINES = ("answer-cnnlstm",)   # stages beside the model's that read the video themselves (Table 1's baselines)
 SPLIT_ENTRY = "_split"
 WORKER_TASKS = 25   # scenes a pool worker runs before it is replaced
+# Where per-scene tasks run: "local", this machine's process pool; "ray", a Ray cluster (the optional extra
+# `pip install -e '.[ray]'`), local or remote. The same task function, cache keys, manifests and bytes either way.
+EXECUTORS = ("local", "ray")
+RAY_RETRIES = 3     # times Ray reruns a scene whose worker died (killed, out of memory, a lost node)
 
 
 @dataclass(frozen=True)
@@ -137,10 +143,16 @@ def parse_scenes(spec: str | None, split: Split) -> list[int]:
 
 
 class Runner:
-    def __init__(self, cfg: Config, split: Split, data_dir: Path, workers: int = 1, echo=print):
+    def __init__(self, cfg: Config, split: Split, data_dir: Path, workers: int = 1, echo=print,
+                 executor: str = "local", ray_address: str | None = None):
         self.cfg, self.split = cfg, split
         self.store = Store(Path(data_dir), split.name, model_variant(cfg))
         self.workers, self.echo = max(1, workers), echo
+        if executor not in EXECUTORS:
+            raise DynclevrError(f"--executor {executor}: use one of {', '.join(EXECUTORS)}")
+        if executor == "ray":
+            require_ray()
+        self.executor, self.ray_address = executor, ray_address
 
     # ---- cache keys ----------------------------------------------------------------------------------------------
 
@@ -202,9 +214,15 @@ class Runner:
             manifest.save()
         self._remove_retired(stage)
         self.echo(f"{stage.name}: {len(todo)} to run, {cached} cached (unchanged inputs, params and version)")
-        done = 0
+        done, failed = 0, {}
         try:
-            for job, key in self._map(stage, todo):
+            for job, key, error in self._map(stage, todo):
+                if error is not None:   # the scene's own failure: the others go on, the stage fails at the end
+                    failed[job.scene] = error
+                    if not isinstance(error, DynclevrError):   # a bug, not bad input: its traceback helps
+                        print(f"{stage.name} {job.scene}: " + "".join(traceback.format_exception(error)).rstrip(),
+                              file=sys.stderr)
+                    continue
                 manifest.record(job.scene, key, job.outputs, stage_version=stage.version,
                                 params=stage.params(self.cfg),
                                 inputs={**self._input_digests(stage, job.scene, manifests), **extra})
@@ -213,11 +231,14 @@ class Runner:
         except KeyboardInterrupt:
             raise Interrupted(f"{stage.name} stopped after {done} of {len(todo)} scenes (each one done is recorded): "
                               "run the same command again to go on") from None
+        if failed:
+            raise StageFailed(stage.name, failed, len(todo))
         if stage.finalize:
             self._finalize(stage, manifest, manifests, extra, force)
         seconds = time.perf_counter() - start
         if todo:
-            self.echo(f"{stage.name}: {len(todo)} done in {seconds:.1f} s")
+            self.echo(f"{stage.name}: {len(todo)} done in {seconds:.1f} s ({60 * len(todo) / seconds:.1f} scenes/min, "
+                      f"{self.executor})")
         return {"ran": len(todo), "cached": cached, "seconds": seconds}
 
     def _remove_retired(self, stage: Stage) -> None:
@@ -230,42 +251,92 @@ class Runner:
                       f"(e.g. {old[0].name}); the stage writes its tables anew")
 
     def _map(self, stage: Stage, todo):
+        """Run each (job, key) of `todo` on the executor; yield (job, key, None) or (job, key, the scene's error) in
+        completion order, with one progress bar for the stage (scenes done / total, rate, ETA)."""
         from rich.console import Console
-        from rich.progress import Progress
+        from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TaskProgressColumn, TextColumn,
+                                   TimeElapsedColumn, TimeRemainingColumn)
 
         if not todo:
             return
         console = Console(stderr=True)
-        with Progress(console=console, transient=True, disable=not console.is_terminal) as bar:
-            task = bar.add_task(stage.name, total=len(todo))
-            # In this process when that is cheap and bounded: no spawn cost. Past WORKER_TASKS scenes, a pool even
-            # for one worker, so that native memory is returned (below).
-            if len(todo) == 1 or (self.workers == 1 and len(todo) <= WORKER_TASKS):
-                for job, key in todo:
+        columns = (TextColumn("[progress.description]{task.description}"), BarColumn(), MofNCompleteColumn(),
+                   TextColumn("scenes"), TaskProgressColumn(), _rate_column(), TimeElapsedColumn(), TextColumn("ETA"),
+                   TimeRemainingColumn())
+        with Progress(*columns, console=console, transient=True, disable=not console.is_terminal) as bar:
+            task = bar.add_task(f"{stage.name} ({self.executor})", total=len(todo))
+            run = self._map_ray if self.executor == "ray" else self._map_local
+            for job, key, error in run(stage, todo):
+                bar.advance(task)
+                yield job, key, error
+
+    def _map_local(self, stage: Stage, todo):
+        # In this process when that is cheap and bounded: no spawn cost. Past WORKER_TASKS scenes, a pool even
+        # for one worker, so that native memory is returned (below).
+        if len(todo) == 1 or (self.workers == 1 and len(todo) <= WORKER_TASKS):
+            for job, key in todo:
+                try:
                     stage.run_scene(job)
-                    bar.advance(task)
-                    yield job, key
-                return
-            # A fresh pool every WORKER_TASKS scenes per worker: pybullet keeps about 1 MB per connection and the
-            # TinyRenderer tens of MB per scene after disconnecting, so a long-lived worker of a 1,000-scene split
-            # would grow by gigabytes. (Not max_tasks_per_child: with it, Python 3.11's pool can hang once a worker
-            # retires.)
-            size = WORKER_TASKS * self.workers
-            for chunk in (todo[i:i + size] for i in range(0, len(todo), size)):
-                with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
-                                         initializer=_worker_init) as pool:
-                    futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in chunk}
-                    try:
-                        # In completion order, so every scene done is recorded even when a later one fails.
-                        for fut in as_completed(futures):
+                except Exception as e:
+                    yield job, key, e
+                else:
+                    yield job, key, None
+            return
+        # A fresh pool every WORKER_TASKS scenes per worker: pybullet keeps about 1 MB per connection and the
+        # TinyRenderer tens of MB per scene after disconnecting, so a long-lived worker of a 1,000-scene split
+        # would grow by gigabytes. (Not max_tasks_per_child: with it, Python 3.11's pool can hang once a worker
+        # retires.)
+        size = WORKER_TASKS * self.workers
+        for chunk in (todo[i:i + size] for i in range(0, len(todo), size)):
+            with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
+                                     initializer=_worker_init) as pool:
+                futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in chunk}
+                try:
+                    # In completion order, so every scene done is recorded even when a later one fails.
+                    for fut in as_completed(futures):
+                        job, key = futures[fut]
+                        try:
                             fut.result()
-                            bar.advance(task)
-                            yield futures[fut]
-                    except BaseException:
-                        # Leaving the pool waits for its queue: without this a failure would surface only after
-                        # every other scene of the chunk had run.
-                        pool.shutdown(cancel_futures=True)
-                        raise
+                        except BrokenProcessPool:   # a worker died: not the scene's fault, and the pool is gone
+                            raise
+                        except Exception as e:
+                            yield job, key, e
+                        else:
+                            yield job, key, None
+                except BaseException:
+                    # Leaving the pool waits for its queue: without this an interrupt would surface only after
+                    # every other scene of the chunk had run.
+                    pool.shutdown(cancel_futures=True)
+                    raise
+
+    def _map_ray(self, stage: Stage, todo):
+        """Every scene a Ray task (one CPU each), retried by Ray when its worker dies; a worker process is
+        replaced after WORKER_TASKS scenes as the local pool's. Paths are absolute: on a cluster the data dir is a
+        shared file system mounted at the same path on every node."""
+        ray = _ray_connect(self.ray_address, self.workers)
+        from ray.exceptions import RayError, RayTaskError
+
+        remote = _ray_task(ray)
+        refs = {remote.remote(stage.name, _absolute(job)): (job, key) for job, key in todo}
+        pending = list(refs)
+        try:
+            while pending:
+                ready, pending = ray.wait(pending, num_returns=1)
+                job, key = refs[ready[0]]
+                try:
+                    ray.get(ready[0])
+                except RayTaskError as e:   # the scene raised: the exception itself, as the local pool gives it
+                    cause = getattr(e, "cause", None)
+                    yield job, key, cause if isinstance(cause, Exception) else e
+                except RayError as e:   # its worker died RAY_RETRIES + 1 times, or the cluster lost it
+                    yield job, key, DynclevrError(f"its Ray worker died {RAY_RETRIES + 1} times "
+                                                  f"({type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''})")
+                else:
+                    yield job, key, None
+        except BaseException:   # Ctrl-C, or the caller stopped: the cluster drops what was not run
+            for ref in pending:
+                ray.cancel(ref, force=True)
+            raise
 
     def _current(self, stage: Stage, scene: str, index: int, manifest: Manifest, manifests, extra: dict) -> bool:
         """The scene's recorded output was made with today's params, inputs and version."""
@@ -317,6 +388,93 @@ class Runner:
 
 class Interrupted(DynclevrError):
     """Ctrl-C during a stage: what is done is recorded, and the same command resumes."""
+
+
+class StageFailed(DynclevrError):
+    """Scenes that failed for a reason of their own, each by id; every other scene of the stage ran and is recorded,
+    and the split-level outputs wait. One line: the first failure's own message says what to do."""
+
+    def __init__(self, stage: str, failed: dict[str, BaseException], total: int):
+        self.failed = failed
+        ids = sorted(failed)
+        first = failed[ids[0]]
+        what = str(first) if isinstance(first, DynclevrError) else f"{type(first).__name__}: {first}"
+        shown = ", ".join(ids[:10]) + (f" and {len(ids) - 10} more" if len(ids) > 10 else "")
+        super().__init__(f"{stage} failed on {len(ids)} of {total} scenes ({shown}; the other {total - len(ids)} are "
+                         f"done and recorded); {ids[0]}: {' '.join(what.split())}")
+
+
+def _rate_column():
+    """Scenes per minute, a column of the progress bar (rich is imported where the bar is drawn)."""
+    from rich.progress import ProgressColumn
+    from rich.text import Text
+
+    class Rate(ProgressColumn):
+        def render(self, task):
+            speed = task.finished_speed or task.speed
+            return Text(f"{60 * speed:.1f} scenes/min" if speed else "-- scenes/min", style="progress.data.speed")
+
+    return Rate()
+
+
+# ---- Ray (the optional extra) ---------------------------------------------------------------------------------------
+
+RAY_MISSING = ("--executor ray needs Ray, which is not installed: run `make ray` (or `pip install -e '.[ray]'`) "
+               "in this environment")
+
+
+def require_ray():
+    try:
+        import ray
+    except ImportError:
+        raise DynclevrError(RAY_MISSING) from None
+    return ray
+
+
+def _ray_connect(address: str | None, workers: int):
+    """The Ray this process already joined (a caller's ray.init), the cluster at `address` ("auto": the one
+    `ray start` began on this node), or a local Ray of `workers` CPUs started now and stopped with the process."""
+    import logging
+
+    ray = require_ray()
+    if not ray.is_initialized():
+        quiet = dict(logging_level=logging.WARNING, log_to_driver=False, include_dashboard=False)
+        try:
+            if address:
+                ray.init(address=address, **quiet)
+            else:
+                # A Ray of this process's own, on this machine: its notice that token authentication is on (the
+                # secure default) is noise on every command.
+                logging.getLogger("ray._private.authentication.authentication_token_setup").setLevel(logging.ERROR)
+                ray.init(num_cpus=workers, object_store_memory=100 * 1024 ** 2, **quiet)
+        except ConnectionError as e:
+            raise DynclevrError(f"cannot join the Ray cluster at {address}: {e} (start it with `ray start --head`, "
+                                f"or leave out --ray-address for a local Ray)") from None
+    return ray
+
+
+_RAY_TASK = None
+
+
+def _ray_task(ray):
+    global _RAY_TASK
+    if _RAY_TASK is None:
+        # max_retries: a dead worker's scene runs again (atomic writes: no half-written artifact is ever seen);
+        # not retry_exceptions: a scene that raises fails the same way again. max_calls: as WORKER_TASKS.
+        _RAY_TASK = ray.remote(num_cpus=1, max_retries=RAY_RETRIES, retry_exceptions=False,
+                               max_calls=WORKER_TASKS)(_run_in_ray)
+    return _RAY_TASK
+
+
+def _absolute(job: SceneJob) -> SceneJob:
+    return replace(job, data_dir=Path(job.data_dir).absolute(),
+                   inputs={k: [Path(p).absolute() for p in v] for k, v in job.inputs.items()},
+                   outputs=[Path(p).absolute() for p in job.outputs])
+
+
+def _run_in_ray(name: str, job: SceneJob) -> None:
+    os.environ["OMP_NUM_THREADS"] = "1"   # as _worker_init: one core per task
+    _run_in_worker(name, job)
 
 
 # ---- one writer per split -------------------------------------------------------------------------------------------
