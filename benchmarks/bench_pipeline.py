@@ -10,7 +10,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-STAGE_LINE = re.compile(r"^(?P<stage>[a-z-]+): \d+ done in (?P<seconds>[\d.]+) s$")
+STAGE_LINE = re.compile(r"^(?P<stage>[a-z-]+): \d+ done in (?P<seconds>[\d.]+) s( \(.*\))?$")   # (rate, executor)
 
 
 def bench(workdir: Path) -> list[dict]:
