@@ -610,7 +610,13 @@ class SceneParser:
         if not ok.any():
             return v0
         smooth[np.linalg.norm(smooth, axis=1) < p["static_speed"]] = 0.0
-        vel[ok] = smooth[ok]
+        # The fits' velocities where the filter is still converging (a track's first fit_window frames, and as many
+        # after each impact or change of motion); elsewhere the filter's, whose acceleration is the prior's engine
+        # and friction rather than a second derivative of noisy positions.
+        young = np.zeros(len(z), bool)
+        for b in [0] + k.breaks:
+            young[b:b + p["fit_window"]] = True
+        vel[ok & young] = smooth[ok & young]
         if p["smooth_positions"]:
             pos[ok] = spos[ok]
         # The engine holds until the first impact (the generator's rule): its evidence is the whole stretch before it.
