@@ -1,8 +1,11 @@
 import numpy as np
 import pytest
+from mcap.reader import make_reader
+from mcap.writer import CompressionType, Writer
 
 from dynclevr.camera import Camera
 from dynclevr.scene import Collision, Scene4D, SceneObject
+from dynclevr.video import CALIBRATION, IMAGE, POSE, TF
 
 
 @pytest.fixture
@@ -25,3 +28,21 @@ def tiny_scene() -> Scene4D:
                    collisions=[Collision(20, 0, 1, (1.0, 0.0, 0.5), 12.0)],
                    future_collisions=[Collision(20, 0, 1, (1.0, 0.0, 0.5), 12.0)],
                    counterfactuals={(1, "static"): []}, observed_frames=10)
+
+
+def strip_video(src, dst) -> None:
+    """Copy a rendered video's MCAP keeping only what a model may read: the RGB frames and the camera."""
+    keep = {IMAGE, POSE, CALIBRATION, TF}
+    with open(src, "rb") as f_in, open(dst, "wb") as f_out:
+        reader = make_reader(f_in)
+        w = Writer(f_out, compression=CompressionType.ZSTD)
+        w.start(profile="", library="test")
+        for m in reader.iter_metadata():
+            w.add_metadata(m.name, m.metadata)
+        channels = {}
+        for schema, channel, msg in reader.iter_messages(topics=sorted(keep)):
+            if channel.topic not in channels:
+                sid = w.register_schema(schema.name, schema.encoding, schema.data) if schema else 0
+                channels[channel.topic] = w.register_channel(channel.topic, channel.message_encoding, sid)
+            w.add_message(channels[channel.topic], msg.log_time, msg.data, msg.publish_time, msg.sequence)
+        w.finish()

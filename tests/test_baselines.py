@@ -6,8 +6,6 @@ import shutil
 import numpy as np
 import pyarrow as pa
 import pytest
-from mcap.reader import make_reader
-from mcap.writer import CompressionType, Writer
 
 from dynclevr.artifacts import ArtifactError, read_parquet, write_parquet
 from dynclevr.baselines import cnnlstm, perframe
@@ -20,7 +18,9 @@ from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.pipeline import Runner, SceneJob
 from dynclevr.stages import answer, answer_cnnlstm
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
-from dynclevr.video import CALIBRATION, IMAGE, POSE, TF, Video
+from dynclevr.video import Video
+
+from conftest import strip_video
 
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 FPS, T = 60, 120
@@ -124,20 +124,7 @@ def _video_only(src_data, dst_data):
     """A data directory holding only video/, its files stripped to the RGB frames and the camera."""
     src, dst = src_data / "bl" / "video", dst_data / "bl" / "video"
     dst.mkdir(parents=True)
-    keep = {IMAGE, POSE, CALIBRATION, TF}
-    with open(src / "000000.mcap", "rb") as f_in, open(dst / "000000.mcap", "wb") as f_out:
-        reader = make_reader(f_in)
-        w = Writer(f_out, compression=CompressionType.ZSTD)
-        w.start(profile="", library="test")
-        for m in reader.iter_metadata():
-            w.add_metadata(m.name, m.metadata)
-        channels = {}
-        for schema, channel, msg in reader.iter_messages(topics=sorted(keep)):
-            if channel.topic not in channels:
-                sid = w.register_schema(schema.name, schema.encoding, schema.data) if schema else 0
-                channels[channel.topic] = w.register_channel(channel.topic, channel.message_encoding, sid)
-            w.add_message(channels[channel.topic], msg.log_time, msg.data, msg.publish_time, msg.sequence)
-        w.finish()
+    strip_video(src / "000000.mcap", dst / "000000.mcap")
     with pytest.raises(ArtifactError):
         Video.read(dst / "000000.mcap").masks()
     # the manifests of video/ (whichever layout keeps them), so that the stage finds its input recorded

@@ -6,8 +6,6 @@ import shutil
 import numpy as np
 import pytest
 import torch
-from mcap.reader import make_reader
-from mcap.writer import CompressionType, Writer
 
 from dynclevr.artifacts import ArtifactError
 from dynclevr.camera import Camera
@@ -23,7 +21,9 @@ from dynclevr.perception.tracker import parse_video
 from dynclevr.perception.train import contrastive_step, neighbours
 from dynclevr.pipeline import Runner
 from dynclevr.scene import CUT_FIELDS, Scene4D
-from dynclevr.video import CALIBRATION, IMAGE, POSE, TF, Video
+from dynclevr.video import Video
+
+from conftest import strip_video
 
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 
@@ -136,20 +136,7 @@ def _only_video(src_data, dst_data, strip: bool):
     if not strip:
         shutil.copy(src / "000000.mcap", dst / "000000.mcap")
         return
-    keep = {IMAGE, POSE, CALIBRATION, TF}
-    with open(src / "000000.mcap", "rb") as f_in, open(dst / "000000.mcap", "wb") as f_out:
-        reader = make_reader(f_in)
-        w = Writer(f_out, compression=CompressionType.ZSTD)
-        w.start(profile="", library="test")
-        for m in reader.iter_metadata():
-            w.add_metadata(m.name, m.metadata)
-        channels = {}
-        for schema, channel, msg in reader.iter_messages(topics=sorted(keep)):
-            if channel.topic not in channels:
-                sid = w.register_schema(schema.name, schema.encoding, schema.data) if schema else 0
-                channels[channel.topic] = w.register_channel(channel.topic, channel.message_encoding, sid)
-            w.add_message(channels[channel.topic], msg.log_time, msg.data, msg.publish_time, msg.sequence)
-        w.finish()
+    strip_video(src / "000000.mcap", dst / "000000.mcap")
 
 
 @pytest.mark.parametrize("strip", [False, True], ids=["video-only", "rgb-and-camera-only"])
