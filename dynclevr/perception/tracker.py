@@ -600,9 +600,10 @@ class SceneParser:
                        collisions=events, observed_frames=self.observed, cut_state=cut_state)
 
     def _smooth(self, k: Track, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
-        """Replace the track's causal positions and velocities [n, 3] (in place) by the non-causal ones of its
-        measurements where a window holds enough of them, and decide its engine `engine` [n] (in place) from all its
-        measurements before its first impact; -> its velocity on the way in (before it was found)."""
+        """Replace the track's causal positions [n, 3] (in place) by non-causal fits to its measurements where a
+        window holds enough of them, its velocities where the filter is still converging, and decide its engine
+        `engine` [n] (in place) from all its measurements before its first impact; -> its velocity on the way in
+        (before it was found)."""
         p = self.p
         z = np.array(k.z)
         spos, smooth = dynamics.smoothed_motion(z, k.breaks, self.fps, p["smooth_window"], p["min_fit_frames"])
