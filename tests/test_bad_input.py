@@ -260,11 +260,15 @@ def _alive(pid: int) -> bool:
 
 
 def _render_with_workers(data):
+    import signal
     import time
 
     args = [sys.executable, "-m", "dynclevr.cli", "render", "--force", "--workers", "2", "--scenes", "0-1",
             "--split", SPLIT, "--config", str(data.parent / "x.toml"), "--data-dir", str(data)]
-    main = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    # As from a terminal: a shell that started the tests in the background (`make test &`) made them ignore SIGINT,
+    # and an ignored signal stays ignored in every child.
+    main = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.time() + 60
     while len(_children(main.pid)) < 2 and time.time() < deadline:
         time.sleep(0.1)
