@@ -46,3 +46,10 @@ def strip_video(src, dst) -> None:
                 channels[channel.topic] = w.register_channel(channel.topic, channel.message_encoding, sid)
             w.add_message(channels[channel.topic], msg.log_time, msg.data, msg.publish_time, msg.sequence)
         w.finish()
+
+
+def onehot(n: int, k: int) -> np.ndarray:
+    """Log-probabilities of a sure choice of k among n (a synthetic detection's sub-type or colour)."""
+    v = np.full(n, -20.0)
+    v[k] = 0.0
+    return v

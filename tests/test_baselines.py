@@ -20,16 +20,10 @@ from dynclevr.stages import answer, answer_cnnlstm
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.video import Video
 
-from conftest import strip_video
+from conftest import onehot, strip_video
 
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 FPS, T = 60, 120
-
-
-def _onehot(n, k):
-    v = np.full(n, -20.0)
-    v[k] = 0.0
-    return v
 
 
 def _detections(tracks, rng, pixel_noise=0.3):
@@ -42,8 +36,8 @@ def _detections(tracks, rng, pixel_noise=0.3):
             (u, v), _ = CAMERA.project(pos)
             dist = float(np.linalg.norm(pos - np.asarray(CAMERA.position)))
             frame.append(Detection(float(u + rng.normal(0, pixel_noise)), float(v + rng.normal(0, pixel_noise)), 0.9,
-                                   _onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
-                                   _onehot(len(COLOR_NAMES), colour), yaw - float(azimuth(CAMERA.position, pos)),
+                                   onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
+                                   onehot(len(COLOR_NAMES), colour), yaw - float(azimuth(CAMERA.position, pos)),
                                    dist, float(pos[2])))
         out.append(frame)
     return out

@@ -16,14 +16,10 @@ from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser
 from dynclevr.physics import Body, PhysicsParams, ground_height, simulate, yaw_quaternion
 
+from conftest import onehot
+
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 FPS, T = 60, 90
-
-
-def _onehot(n, k):
-    v = np.full(n, -20.0)
-    v[k] = 0.0
-    return v
 
 
 def _detections(positions, yaw, shape, rng, pixel_noise=0.4):
@@ -32,8 +28,8 @@ def _detections(positions, yaw, shape, rng, pixel_noise=0.4):
         (u, v), _ = CAMERA.project(pos)
         u, v = u + rng.normal(0, pixel_noise), v + rng.normal(0, pixel_noise)
         dist = float(np.linalg.norm(pos - np.asarray(CAMERA.position))) * (1 + rng.normal(0, 0.03))
-        out.append([Detection(float(u), float(v), 0.9, _onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
-                              _onehot(len(COLOR_NAMES), 1), yaw - float(azimuth(CAMERA.position, pos)), dist,
+        out.append([Detection(float(u), float(v), 0.9, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
+                              onehot(len(COLOR_NAMES), 1), yaw - float(azimuth(CAMERA.position, pos)), dist,
                               float(pos[2]))])
     return out
 
