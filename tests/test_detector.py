@@ -13,21 +13,17 @@ from dynclevr.perception.detector_data import LABEL_COLUMNS, azimuth
 from dynclevr.perception.detector_train import COL, losses, targets
 from dynclevr.perception.place import place, resting_height
 
+from conftest import onehot
+
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 NAMES = list(SUBTYPES)
-
-
-def _onehot_logp(n: int, k: int) -> np.ndarray:
-    v = np.full(n, -30.0)
-    v[k] = 0.0
-    return v
 
 
 def _detection(pos, yaw, shape) -> Detection:
     (u, v), _ = CAMERA.project(np.asarray(pos))
     dist = float(np.linalg.norm(np.asarray(pos) - np.asarray(CAMERA.position)))
-    return Detection(u=float(u), v=float(v), score=0.9, subtype_logp=_onehot_logp(len(NAMES), NAMES.index(shape)),
-                     color_logp=_onehot_logp(len(COLOR_NAMES), 0), alpha=yaw - float(azimuth(CAMERA.position, pos)),
+    return Detection(u=float(u), v=float(v), score=0.9, subtype_logp=onehot(len(NAMES), NAMES.index(shape)),
+                     color_logp=onehot(len(COLOR_NAMES), 0), alpha=yaw - float(azimuth(CAMERA.position, pos)),
                      dist=dist, height=float(pos[2]))
 
 
