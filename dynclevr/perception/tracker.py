@@ -627,7 +627,77 @@ class SceneParser:
         if fit.ok:
             mid = samples[len(samples) // 2][0]
             engine[:first] = dynamics.engine_on(fit.velocity(mid), fit.acceleration, k.quat[mid], p)
+        if p["physics_prior"] and p["segment_motion"]:
+            self._segment_motion(k, z, pos, vel, engine)
         return np.array([*smooth[int(np.argmax(ok))][:2], 0.0])
+
+    def _segment_motion(self, k: Track, z: np.ndarray, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray) -> None:
+        """The physics prior over each stretch between the track's breaks (`dynamics.segment_motion`): its
+        horizontal velocities [n, 3] (in place) follow the engine's motion of a body on the ground or floating, and
+        its engine [n] (in place) is the hypothesis, engine or none, whose motion explains the measurements better
+        (in the first stretch only: the generator's engine stops at the first impact, physics.engine_until_collision).
+
+        The breaks come from the filter, causally: an impact the engine predicted from decimetre-off hulls, or a
+        change of motion noticed a few frames late. Seen whole, a run of them is one, which moves within
+        +-break_shift frames to where the two stretches' motions explain the measurements best, and goes where one
+        motion explains both stretches within break_penalty (square metres) of two."""
+        p, ph = self.p, self.physics
+        category, size = SUBTYPES[k.shape]
+        floating = np.array(k.floating, bool)
+        need = 2 * p["min_fit_frames"]
+
+        def rates(lo: int, hi: int) -> dict | None:
+            """Rate of change of speed with and without engine; None: it fell (or landed) in lo..hi."""
+            if floating[lo:hi].any() != floating[lo:hi].all():
+                return None
+            if floating[lo]:
+                return {False: 0.0, True: ph.engine_accel}
+            if category == "aeroplane" and (pos[lo:hi, 2] > size[2] / 2 + 0.2).any():
+                return None
+            return {False: -self.friction_decel, True: ph.engine_accel - self.friction_decel}
+
+        def engines(lo: int) -> tuple:
+            return (False, True) if lo == 0 or not ph.engine_until_collision else (False,)
+
+        def fit(lo: int, hi: int, engines: tuple) -> tuple[float, bool, np.ndarray] | None:
+            r = rates(lo, hi)
+            fits = {e: dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"])
+                    for e in engines} if r else {}
+            if not fits or fits[False] is None:
+                return None
+            best = min(fits, key=lambda e: fits[e][1])
+            return fits[best][1], best, fits[best][0]
+
+        # bodies in contact for a while give a break every frame: a run of them is one impact, at its first frame
+        edges, last = [0], -need
+        for b in sorted(b for b in k.breaks if 0 < b < len(z)):
+            if b - last > need:
+                edges.append(b)
+            last = b
+        edges.append(len(z))
+        i = 1
+        while i < len(edges) - 1:
+            lo, b, hi = edges[i - 1], edges[i], edges[i + 1]
+            best = None
+            for s in range(max(lo + need, b - p["break_shift"]), min(hi - need, b + p["break_shift"]) + 1):
+                left, right = fit(lo, s, engines(lo)), fit(s, hi, engines(s))
+                if left is not None and right is not None and (best is None or left[0] + right[0] < best[0]):
+                    best = left[0] + right[0], s
+            whole = fit(lo, hi, engines(lo))
+            if best is not None and whole is not None and whole[0] <= best[0] + p["break_penalty"]:
+                del edges[i]
+                continue
+            if best is not None:
+                edges[i] = best[1]
+            i += 1
+        for lo, hi in zip(edges[:-1], edges[1:]):
+            f = fit(lo, hi, engines(lo))
+            if f is None:
+                continue
+            engine[lo:hi] = f[1]
+            v = f[2][:, :2]
+            v[np.linalg.norm(v, axis=1) < p["static_speed"]] = 0.0
+            vel[lo:hi, :2] = v
 
     def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, int, int, np.ndarray]]:
         """Collision events of the confirmed tracks (collisions.py): the classifier over the engine's contacts and

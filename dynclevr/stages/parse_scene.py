@@ -26,8 +26,8 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 8   # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
-              # 7: robust smoothing; 8: smoothed velocities only where the filter converges
+VERSION = 9   # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
+              # 7: robust smoothing; 8: smoothed velocities only where the filter converges; 9: segment motion
 
 
 @lru_cache(maxsize=1)
