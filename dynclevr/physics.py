@@ -58,6 +58,12 @@ class _Client:
     def __init__(self):
         with _Silenced(1):
             self.id = p.connect(p.DIRECT)
+            # Nothing renders through these clients. Without the TinyRenderer plugin createMultiBody no longer
+            # turns every convex piece into a render mesh (over a quarter of building a world); the physics never
+            # reads it.
+            renderer = p.loadPlugin("tinyRendererPlugin", physicsClientId=self.id)   # the loaded one's id
+            if renderer >= 0:
+                p.unloadPlugin(renderer, physicsClientId=self.id)
 
     def __getattr__(self, name):
         return functools.partial(getattr(p, name), physicsClientId=self.id)
@@ -247,7 +253,8 @@ class World:
             # Below this closing speed contacts do not bounce: no micro-bounces of a body sliding on the floor.
             restitutionVelocityThreshold=pp.restitution_threshold,
         )
-        self._dynamics(c.createMultiBody(0, c.createCollisionShape(p.GEOM_PLANE)), pp.floor_friction)
+        self.floor = c.createMultiBody(0, c.createCollisionShape(p.GEOM_PLANE))
+        self._dynamics(self.floor, pp.floor_friction)
 
     def _dynamics(self, uid: int, friction: float) -> None:
         # Bullet multiplies the two bodies' friction (and restitution) coefficients in a contact.
@@ -292,6 +299,7 @@ class World:
         for uid in self.ids:
             self._dynamics(uid, self.params.object_friction)
         self.shapes = shapes
+        self._index = {uid: i for i, uid in enumerate(self.ids)}
         self.set_state(np.array([b.position for b in bodies], float).reshape(-1, 3),
                        np.array([b.orientation for b in bodies], float).reshape(-1, 4),
                        np.array([b.velocity for b in bodies], float).reshape(-1, 3),
@@ -331,14 +339,14 @@ class World:
 
         Returns the object pairs (i < j, body indices) that touched during the frame, each with the first contact
         point and the summed normal impulse (N s). Floor contacts are not collisions and are left out."""
-        pp, cid = self.params, self.client.id
+        pp, cid, floor, index, masses = self.params, self.client.id, self.floor, self._index, self.masses
         dt = 1.0 / pp.hz
-        index = {uid: i for i, uid in enumerate(self.ids)}
         touched: dict[tuple[int, int], list] = {}
         # Per-substep work is the hot loop of every stage that simulates: plain pybullet calls, no numpy in it.
-        engine = [(self.ids[i], (pp.engine_accel * self.masses[i], 0.0, 0.0)) for i in np.flatnonzero(self.engine)]
-        floating = [(self.ids[i], (0.0, 0.0, pp.floating_force * self.masses[i]))
-                    for i in np.flatnonzero(self.floating)]
+        engine = [(self.ids[i], (pp.engine_accel * masses[i], 0.0, 0.0))
+                  for i, on in enumerate(self.engine.tolist()) if on]
+        floating = [(self.ids[i], (0.0, 0.0, pp.floating_force * masses[i]))
+                    for i, on in enumerate(self.floating.tolist()) if on]
         for _ in range(pp.substeps):
             for uid, force in engine:
                 # In the body frame at its centre of mass: along its nose, and no torque.
@@ -349,9 +357,10 @@ class World:
                 p.applyExternalForce(uid, -1, force, pos, p.WORLD_FRAME, physicsClientId=cid)
             p.stepSimulation(physicsClientId=cid)
             for pt in p.getContactPoints(physicsClientId=cid):
-                a, b = index.get(pt[1]), index.get(pt[2])
-                if a is None or b is None or pt[8] > TOUCH_DISTANCE:
+                # Most points are the floor's: the cheapest test first.
+                if pt[1] == floor or pt[2] == floor or pt[8] > TOUCH_DISTANCE:
                     continue
+                a, b = index[pt[1]], index[pt[2]]
                 key = (a, b) if a < b else (b, a)
                 if key in touched:
                     touched[key][1] += pt[9] * dt
@@ -359,7 +368,7 @@ class World:
                     touched[key] = [tuple(map(float, pt[5])), pt[9] * dt]
             if engine and pp.engine_until_collision and touched:
                 # The engine stops at the body's first collision: an impact as ContactEvents counts it, not a graze.
-                hit = {i for (a, b), (_, imp) in touched.items() if imp * (1 / self.masses[a] + 1 / self.masses[b])
+                hit = {i for (a, b), (_, imp) in touched.items() if imp * (1 / masses[a] + 1 / masses[b])
                        >= pp.min_impact_speed for i in (a, b)}
                 if hit:
                     self.engine[list(hit)] = False

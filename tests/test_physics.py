@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+from dynclevr import physics
 from dynclevr.assets.catalogue import get_asset
 from dynclevr.config import Config, ConfigError
 from dynclevr.physics import (Body, PhysicsParams, World, counterfactual, intervene, simulate,
@@ -120,6 +121,22 @@ def test_world_reuse_is_a_clean_start(params):
         again = simulate(bodies, params, 90, world=world)
     np.testing.assert_array_equal(fresh.position, again.position)
     assert fresh.collisions == again.collisions
+
+
+def test_worlds_without_a_renderer_simulate_the_same(params, monkeypatch):
+    """Worlds unload pybullet's renderer (it made building them slow): the physics must not notice."""
+    bodies = head_on(params, engine_on=True) + [Body("jet", (2.0, 3.0, 1.6), velocity=(0.0, -3.0, 0.0))]
+    with World(bodies, params) as world:
+        with pytest.raises(physics.p.error):   # no renderer, no visual shapes
+            world.client.getVisualShapeData(world.ids[0])
+        lean = simulate(bodies, params, 90, world=world)
+    monkeypatch.setattr(physics.p, "unloadPlugin", lambda *args, **kw: None)
+    with World(bodies, params) as world:
+        assert world.client.getVisualShapeData(world.ids[0])
+        full = simulate(bodies, params, 90, world=world)
+    for a, b in ((lean.position, full.position), (lean.velocity, full.velocity), (lean.engine, full.engine)):
+        np.testing.assert_array_equal(a, b)
+    assert (lean.collisions, lean.grazes) == (full.collisions, full.grazes) and lean.collisions
 
 
 def test_world_step_from_a_state(params):
