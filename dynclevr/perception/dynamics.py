@@ -132,7 +132,8 @@ SPEED_GRID = np.arange(0.0, 16.0, 0.02)    # m/s: the start speeds segment_motio
 TRUNCATE = 0.3                              # metres: segment_motion's cost of a measurement at most this far off
 
 
-def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int) -> tuple[np.ndarray, float] | None:
+def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, speeds: np.ndarray = SPEED_GRID
+                   ) -> tuple[np.ndarray, float] | None:
     """The physics prior over a whole stretch between impacts: horizontal velocities [n, 3] (vz 0) for the frames
     of measured positions z [n, 3] (NaN: none), and the median distance of the measurements from the motion.
 
@@ -140,14 +141,14 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int) -> t
     vehicle without engine slows at friction's rate until it stops (< 0), one with an engine speeds up (> 0), a
     floating one holds its speed (0). So one parameter, the start speed, explains the stretch, fitted by least
     squares over a grid of speeds (the stop makes it non-linear) along the line of the measurements' linear fit,
-    robust like `_robust_fit`. With local fits a few frames of depth noise read as a speed-up or a slow-down, and
+    robust like `_robust_fit` (`speeds`: the start speeds to try). With local fits a few frames of depth noise read as a speed-up or a slow-down, and
     "accelerating" reads the change of speed over a sixth of a second. Comparing costs decides between two rates
     (an engine or none) and where an impact split the motion. None: fewer than 2 x min_samples measurements."""
     idx = np.nonzero(np.isfinite(z).all(1))[0]
     if len(idx) < 2 * min_samples:
         return None
     tau, xy = idx / fps, z[idx, :2]
-    v0s = SPEED_GRID[:, None]
+    v0s = np.asarray(speeds, float)[:, None]
     if accel < 0:
         stop = v0s / -accel
         travel = np.where(tau < stop, v0s * tau + 0.5 * accel * tau ** 2, v0s * stop / 2)
@@ -166,7 +167,7 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int) -> t
             break
         keep = ok
     t = np.arange(len(z)) / fps
-    speed = SPEED_GRID[best] + accel * t
+    speed = v0s[best, 0] + accel * t
     speed = np.maximum(speed, 0.0) if accel < 0 else speed
     return np.concatenate([speed[:, None] * u, np.zeros((len(z), 1))], 1), float((np.minimum(r, TRUNCATE) ** 2).sum())
 
