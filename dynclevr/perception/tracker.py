@@ -718,9 +718,10 @@ class SceneParser:
             if f is None:
                 continue
             engine[lo:hi] = f[1]
+            # a stretch that never reaches static_speed is a parked body whose detections wander; one that does
+            # keeps its slowest speeds (friction brings it to rest through "slow")
             v = f[2][:, :2]
-            v[np.linalg.norm(v, axis=1) < p["static_speed"]] = 0.0
-            vel[lo:hi, :2] = v
+            vel[lo:hi, :2] = v if np.linalg.norm(v, axis=1).max() >= p["static_speed"] else 0.0
 
     def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, int, int, np.ndarray]]:
         """Collision events of the confirmed tracks (collisions.py): the classifier over the engine's contacts and
