@@ -51,7 +51,7 @@ from dynclevr.scene import Collision, Scene4D, SceneObject
 
 POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "process_position", "process_velocity", "initial_speed", "maneuver_chi2", "maneuver_frames",
-            "maneuver_speed",
+            "maneuver_speed", "break_shift", "break_penalty", "start_speed_penalty",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
             "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
