@@ -135,13 +135,14 @@ TRUNCATE = 0.3                              # metres: segment_motion's cost of a
 def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, speeds: np.ndarray = SPEED_GRID
                    ) -> tuple[np.ndarray, float] | None:
     """The physics prior over a whole stretch between impacts: horizontal velocities [n, 3] (vz 0) for the frames
-    of measured positions z [n, 3] (NaN: none), and the median distance of the measurements from the motion.
+    of measured positions z [n, 3] (NaN: none), and its cost: the sum of the measurements' squared distances from
+    the motion, each capped at TRUNCATE (a bad detection costs the same under every motion).
 
     Between impacts a body moves along a line with a known rate of change of speed `accel` (m/s^2): a ground
     vehicle without engine slows at friction's rate until it stops (< 0), one with an engine speeds up (> 0), a
     floating one holds its speed (0). So one parameter, the start speed, explains the stretch, fitted by least
-    squares over a grid of speeds (the stop makes it non-linear) along the line of the measurements' linear fit,
-    robust like `_robust_fit` (`speeds`: the start speeds to try). With local fits a few frames of depth noise read as a speed-up or a slow-down, and
+    squares over `speeds` (the stop makes it non-linear) along the line of the measurements' linear fit, robust
+    like `_robust_fit`. With local fits a few frames of depth noise read as a speed-up or a slow-down, and
     "accelerating" reads the change of speed over a sixth of a second. Comparing costs decides between two rates
     (an engine or none) and where an impact split the motion. None: fewer than 2 x min_samples measurements."""
     idx = np.nonzero(np.isfinite(z).all(1))[0]
