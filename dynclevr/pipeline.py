@@ -290,8 +290,9 @@ class Runner:
         for chunk in (todo[i:i + size] for i in range(0, len(todo), size)):
             with ProcessPoolExecutor(self.workers, mp_context=get_context("spawn"),
                                      initializer=_worker_init) as pool:
-                futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in chunk}
                 try:
+                    with _ctrl_c_deferred():   # the pool starts its workers on submit
+                        futures = {pool.submit(_run_in_worker, stage.name, job): (job, key) for job, key in chunk}
                     # In completion order, so every scene done is recorded even when a later one fails.
                     for fut in as_completed(futures):
                         job, key = futures[fut]
@@ -523,6 +524,31 @@ def split_lock(root: Path, echo=print):
             del _HELD[path]   # closing the file releases the lock
 
 
+@contextlib.contextmanager
+def _ctrl_c_deferred():
+    """Start workers with Ctrl-C ignored, so that one still importing when it comes prints no traceback over the
+    report: an ignored signal stays ignored across exec, and Python then installs no KeyboardInterrupt handler.
+    In this process SIGINT is blocked meanwhile (Linux keeps a blocked signal pending even while it is ignored),
+    so a Ctrl-C then arrives when the handler is back, not lost."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    # The resource tracker unblocks SIGINT once it has started: start it first.
+    from multiprocessing import resource_tracker
+
+    resource_tracker.ensure_running()
+    signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
 def _worker_init() -> None:
     # One core per worker: the pool is the parallelism.
     os.environ["OMP_NUM_THREADS"] = "1"
@@ -535,10 +561,6 @@ def _worker_init() -> None:
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
         if os.getppid() == 1:   # the parent died before the line above ran
             os._exit(1)
-    # Ctrl-C reaches the whole process group: the parent stops the pool and reports, the workers stay quiet.
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def _run_in_worker(name: str, job: SceneJob) -> None:
