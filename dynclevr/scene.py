@@ -70,6 +70,9 @@ class Scene4D:
     # An estimate's state at the last observed frame from those frames alone (its arrays may use later frames):
     # arrays per object of CUT_FIELDS; None: the arrays' row is that state (the truth, a causal estimate).
     cut_state: dict[str, np.ndarray] | None = None
+    # An estimate's collisions as the observed frames alone decide them: the predictive questions merge these, not
+    # `collisions` (which later frames decide), with the predicted future. None: `collisions` (the truth).
+    cut_collisions: list[Collision] | None = None
 
     @property
     def num_frames(self) -> int:
@@ -107,6 +110,9 @@ class Scene4D:
                              for i, o in enumerate(self.objects)]})
             out.json("/scene/collisions", "dynclevr.CollisionEvents", 0,
                      {"events": [asdict(c) for c in self.collisions]})
+            if self.cut_collisions is not None:
+                out.json("/scene/cut_collisions", "dynclevr.CollisionEvents", 0,
+                         {"events": [asdict(c) for c in self.cut_collisions]})
             out.json("/scene/future_collisions", "dynclevr.CollisionEvents", 0,
                      {"events": [asdict(c) for c in self.future_collisions]})
             out.json("/scene/grazes", "dynclevr.CollisionEvents", 0, {"events": [asdict(c) for c in self.grazes]})
@@ -133,6 +139,7 @@ class Scene4D:
 
         cf = src.first("/scene/counterfactuals")["runs"]
         cut = next((m["objects"] for _, _, m in src.messages("/scene/cut_state")), None)   # optional
+        cut_events = next((m["events"] for _, _, m in src.messages("/scene/cut_collisions")), None)   # optional
         return cls(
             name=src.meta.get("scene", Path(path).stem), fps=cat["fps"], camera=camera, objects=objects,
             position=stack("position", 3), orientation=stack("orientation", 4), velocity=stack("velocity", 3),
@@ -143,7 +150,8 @@ class Scene4D:
             counterfactuals={(r["object"], r["intervention"]): events(r["events"]) for r in cf},
             observed_frames=cat["observed_frames"], grazes=events(src.first("/scene/grazes")["events"]),
             counterfactual_grazes={(r["object"], r["intervention"]): events(r["grazes"]) for r in cf if r["grazes"]},
-            cut_state=None if cut is None else {k: np.array([o[k] for o in cut]) for k in CUT_FIELDS})
+            cut_state=None if cut is None else {k: np.array([o[k] for o in cut]) for k in CUT_FIELDS},
+            cut_collisions=None if cut_events is None else events(cut_events))
 
     def state_at(self, frame: int) -> dict[str, np.ndarray]:
         """Per-object arrays of CUT_FIELDS at `frame`: the cut state there, where the estimate has one."""

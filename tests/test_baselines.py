@@ -75,6 +75,18 @@ def test_per_frame_speeds_and_collision_by_finite_differences_and_distance():
     # under static_speed mostly 0: five frames of centimetres of jitter make a metre per second now and then
     assert (np.abs(est.velocity[10:touch, car]).max(1) == 0.0).mean() > 0.9
     assert [c.frame for c in est.collisions][:1] and abs(est.collisions[0].frame - touch) <= 3
+    assert est.cut_collisions == []   # the observed frames show no contact: a predictive question must predict it
+
+
+def test_per_frame_contacts_within_the_observed_frames_are_known_at_the_cut():
+    """A truck at 12 m/s reaches the parked car before the cut: the parse of the observed frames alone shows the
+    contact, with the objects named as in the whole video's parse."""
+    cfg = _per_frame_cfg()
+    parked, moving = _head_on(speed=12.0)
+    dets = _detections([(parked, 0.0, "sedan", 1), (moving, 0.0, "truck", 3)], np.random.default_rng(0))
+    est = perframe.parse(np.zeros((T, 1, 1, 3), np.uint8), CAMERA, None, cfg, "syn", dets)
+    assert est.collisions and est.collisions[0].frame < cfg["video"]["observed_frames"]
+    assert est.cut_collisions == [e for e in est.collisions if e.frame < cfg["video"]["observed_frames"]]
 
 
 def test_per_frame_future_and_counterfactuals_at_constant_velocity_from_the_observed_frames():

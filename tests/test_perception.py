@@ -179,6 +179,7 @@ def test_estimates_up_to_frame_30_ignore_later_frames(tiny):
     # an event merges the contacts of the next merge_frames frames: the ones complete by frame 30 are fixed
     merge = cfg["labels"]["collision_merge_frames"]
     assert [c for c in est.collisions if c.frame + merge <= 30] == [c for c in alt.collisions if c.frame + merge <= 30]
+    assert est.cut_collisions == alt.cut_collisions   # what the predictive questions know of the observed frames
     assert est.objects[0].confidence == alt.objects[0].confidence
     assert not np.array_equal(est.position[31:, early], alt.position[31:, early])
     assert isinstance(est, Scene4D)

@@ -17,15 +17,16 @@ def test_scene_roundtrip_and_bytes(tiny_scene, tmp_path):
     assert back.collisions[0].pair() == frozenset({0, 1})
     assert back.counterfactuals == {(1, "static"): []}
     assert back.camera == tiny_scene.camera
-    assert back.cut_state is None                   # the truth's arrays are causal: no separate cut state
+    assert back.cut_state is None and back.cut_collisions is None   # the truth is causal: no separate cut
     cut = {"position": np.ones((2, 3)), "orientation": np.tile([0.0, 0.0, 0.0, 1.0], (2, 1)),
            "velocity": np.full((2, 3), 2.5), "angular_velocity": np.zeros((2, 3)),
            "engine": np.array([True, False]), "floating": np.array([False, False])}
-    tiny_scene.cut_state = cut
+    tiny_scene.cut_state, tiny_scene.cut_collisions = cut, []
     tiny_scene.write(a, kind="estimate")
     back = Scene4D.read(a)
     for k, v in cut.items():
         np.testing.assert_array_equal(back.cut_state[k], v)
+    assert back.cut_collisions == [] and back.collisions   # none known at the cut, some seen later
 
 
 def test_corrupt_and_wrong_version(tiny_scene, tmp_path):

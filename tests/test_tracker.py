@@ -161,6 +161,40 @@ def test_a_head_on_collision_is_found_at_its_frame_and_a_near_miss_is_not():
             assert events == []
 
 
+@pytest.mark.parametrize("start", [2.5, 5.0], ids=["crash at frame 14", "crash at frame 46"])
+def test_the_collisions_known_at_the_cut_are_those_the_observed_frames_decide(start):
+    """The predictive questions merge the estimate's cut_collisions with the predicted future: they equal the
+    collisions of a parse of the observed frames alone (truncating the video changes nothing), and a crash the
+    later frames show is in the factual collisions only, so that it is predicted, not read off the video."""
+    from dynclevr.perception.collisions import CollisionModel
+    from dynclevr.questions.labels import future_events, merge_events
+
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    bodies = [Body("sedan", (-start, 0.0, ground_height("sedan")), yaw_quaternion(0.0), (5.0, 0.0, 0.0)),
+              Body("suv", (start, 0.3, ground_height("suv")), yaw_quaternion(math.pi), (-5.0, 0.0, 0.0))]
+    tr = simulate(bodies, params, T)
+    rng = np.random.default_rng(3)
+    per = [_detections(tr.position[:, i], yaw, b.shape, rng) for i, (b, yaw) in enumerate(zip(bodies, (0.0, math.pi)))]
+    dets = [a + b for a, b in zip(*per)]
+
+    def parse(n):
+        return SceneParser(ParserModel.load(), None, CAMERA, cfg, CollisionModel.load()).parse(
+            np.zeros((n, 1, 1, 3), np.uint8), "syn", dets[:n])
+
+    est, cut = parse(T), cfg["video"]["observed_frames"]
+    merge = cfg["labels"]["collision_merge_frames"]
+    crash = merge_events(tr.collisions, merge)[0].frame
+    assert [e.frame for e in merge_events(est.collisions, merge)] and abs(
+        merge_events(est.collisions, merge)[0].frame - crash) <= 3
+    assert est.cut_collisions == parse(cut).collisions
+    # (no future predicted here: simulate-future's run is what would add one)
+    if crash < cut - 10:
+        assert est.cut_collisions and future_events(est, merge) == []   # seen: no future event
+    else:
+        assert crash > cut and est.cut_collisions == [] and future_events(est, merge) == []
+
+
 def test_particle_filter_keeps_the_hypothesis_of_an_unseen_impact():
     """A car at 4 m/s that the engine believes keeps going stops dead at frame 30 (hit by something the engine
     did not see): the particles that were kicked explain the detections, so the estimate follows within a few

@@ -223,7 +223,24 @@ def parse(frames: np.ndarray, camera: Camera, detector, cfg: Config, name: str,
         present[min(o.dets):max(o.dets) + 1, i] = True
     scene = Scene4D(name, fps, camera, out, pos, quat, vel, ang, acc, eng, flo, vis, observed_frames=observed)
     scene.collisions = contacts(pos, quat, present, out, p["contact_gap"])
+    if T > observed:
+        scene.cut_collisions = _observed_contacts(scene, frames, camera, cfg, detections)
     return scene
+
+
+def _observed_contacts(scene: Scene4D, frames, camera: Camera, cfg: Config, detections) -> list[Collision]:
+    """The contacts that the observed frames alone show: those of a parse of them (positions between detections
+    are interpolated, so the whole video's would read later frames), its objects named as in `scene`. Association is
+    frame by frame, so an object of that parse is the one here with its first detection."""
+    def first(s: Scene4D, i: int) -> tuple:
+        t = int(np.argmax(s.visible[:, i]))
+        return t, tuple(np.round(s.position[t, i], 6))
+
+    observed = scene.observed_frames
+    seen = parse(frames[:observed], camera, None, cfg, scene.name, detections[:observed])
+    here = {first(scene, i): o.id for i, o in enumerate(scene.objects)}
+    name = {o.id: here[first(seen, i)] for i, o in enumerate(seen.objects)}
+    return [Collision(e.frame, *sorted((name[e.a], name[e.b])), e.point, e.impulse) for e in seen.collisions]
 
 
 def box_gap(pa: np.ndarray, qa: np.ndarray, sa, pb: np.ndarray, qb: np.ndarray, sb) -> np.ndarray:

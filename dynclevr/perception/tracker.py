@@ -602,8 +602,11 @@ class SceneParser:
         events = [Collision(t, a, b, (0.0, 0.0, 0.0),
                             round(float(x[dv]) * masses[a] * masses[b] / (masses[a] + masses[b]), 6))
                   for t, a, b, x in self._collisions(tracks, masses, T)]
+        # an event's score reads the causal filter's frames up to it + AFTER: these are decided by the cut
+        cut_events = None if cut_state is None else [e for e in events if e.frame + collisions.AFTER <= cut]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
-                       collisions=events, observed_frames=self.observed, cut_state=cut_state)
+                       collisions=events, observed_frames=self.observed, cut_state=cut_state,
+                       cut_collisions=cut_events)
 
     def _smooth(self, k: Track, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
         """Replace the track's causal positions [n, 3] (in place) by non-causal fits to its measurements where a

@@ -81,8 +81,10 @@ def merge_events(events: list[Collision], merge_frames: int) -> list[Collision]:
 
 def future_events(scene: Scene4D, merge_frames: int) -> list[Collision]:
     """Collisions that start after the observed frames: a contact that began within them and goes on is no future
-    event (merged over the whole timeline first)."""
-    merged = merge_events(list(scene.collisions) + list(scene.future_collisions), merge_frames)
+    event (merged over the whole timeline first). An estimate's known collisions are those its observed frames
+    decide (`cut_collisions`): the events it found in later frames are what the question asks it to predict."""
+    known = scene.collisions if scene.cut_collisions is None else scene.cut_collisions
+    merged = merge_events(list(known) + list(scene.future_collisions), merge_frames)
     return [e for e in merged if e.frame >= scene.observed_frames]
 
 
