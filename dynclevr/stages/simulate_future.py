@@ -86,7 +86,7 @@ def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True
     outcomes: dict[tuple[int, str], list[Collision]] = {}
     bodies, ids = initial_bodies(scene)
     if bodies:
-        with World(bodies, params) as world:
+        with World([], params) as world:   # empty: every run builds its own bodies in it (World.set_bodies)
             for k, oid in enumerate(ids):
                 for iv in INTERVENTIONS:
                     if replay:
