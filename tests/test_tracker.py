@@ -72,6 +72,28 @@ def test_a_parked_vehicle_stays_static_under_detection_noise():
     assert np.abs(est.velocity[20:, 0]).max() == 0.0
 
 
+def test_a_struck_car_slides_to_rest_through_slow_and_a_parked_one_is_static():
+    """An SUV at 3 m/s hits a parked sedan, which friction brings to rest: the estimate reads it 0 before the impact
+    (a parked body's detections wander) and slow (0.5-0.8 m/s) where the truth is, not 0 from static_speed."""
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    n = 150
+    bodies = [Body("suv", (-5.0, 0.0, ground_height("suv")), yaw_quaternion(0.0), (3.0, 0.0, 0.0)),
+              Body("sedan", (0.0, 0.0, ground_height("sedan")), yaw_quaternion(0.0), (0.0, 0.0, 0.0))]
+    tr = simulate(bodies, params, n)
+    rng = np.random.default_rng(3)
+    per = [_detections(tr.position[:, i], 0.0, b.shape, rng) for i, b in enumerate(bodies)]
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn",
+                                                                    [a + b for a, b in zip(*per)])
+    sedan = int(np.argmin([np.linalg.norm(est.position[0, k, :2]) for k in range(len(est.objects))]))
+    truth, speed = (np.linalg.norm(v[:, 1 if v is tr.velocity else sedan, :2], axis=1)
+                    for v in (tr.velocity, est.velocity))
+    hit = tr.collisions[0].frame
+    assert (speed[10:hit - 5] == 0).all()
+    slow = (truth >= 0.5) & (truth < 0.8)
+    assert slow[hit:].sum() > 10 and np.abs(speed[slow] - truth[slow]).max() < 0.15
+
+
 def test_smoothed_motion_uses_both_sides_and_never_crosses_an_impact():
     """Constant acceleration is recovered exactly where the window is full (a quadratic fit), a few frames into a
     segment too (a causal fit has few samples there); across an impact (a break) each side keeps its own motion;

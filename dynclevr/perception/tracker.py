@@ -721,10 +721,16 @@ class SceneParser:
             if f is None:
                 continue
             engine[lo:hi] = f[1]
-            # a stretch that never reaches static_speed is a parked body whose detections wander; one that does
-            # keeps its slowest speeds (friction brings it to rest through "slow")
+            # Before its first impact a body does not slow under static_speed within a video (from the generator's
+            # slowest start speed friction takes seconds): slower speeds there are a parked body's wandering
+            # detections. After one, a stretch that reaches static_speed keeps its slowest speeds: friction brings
+            # a struck body to rest through "slow". (Keeping them before the first impact too read parked bodies
+            # as slow: factual questions 0.890 -> 0.858 on 30 full-val videos.)
             v = f[2][:, :2]
-            vel[lo:hi, :2] = v if np.linalg.norm(v, axis=1).max() >= p["static_speed"] else 0.0
+            speed = np.linalg.norm(v, axis=1)
+            if lo == 0 or speed.max() < p["static_speed"]:
+                v[speed < p["static_speed"]] = 0.0
+            vel[lo:hi, :2] = v
 
     def _collisions(self, tracks: list[Track], masses: list[float], T: int) -> list[tuple[int, int, int, np.ndarray]]:
         """Collision events of the confirmed tracks (collisions.py): the classifier over the engine's contacts and
