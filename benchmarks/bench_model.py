@@ -22,7 +22,7 @@ def _split(workdir: str):
     path.write_text(f"[splits.bench]\nseed = 11\nscenes = {SCENES}\n")
     cfg = Config.load(path)
     runner = Runner(cfg, cfg.split("bench"), Path(workdir) / "data", echo=lambda *_: None)
-    for stage in ("simulate", "annotate"):
+    for stage in ("simulate", "render", "annotate"):   # annotate reads the rendered masks (visibility)
         runner.run(stage, list(range(SCENES)))
     return cfg, runner.store
 
