@@ -602,8 +602,11 @@ class SceneParser:
         events = [Collision(t, a, b, (0.0, 0.0, 0.0),
                             round(float(x[dv]) * masses[a] * masses[b] / (masses[a] + masses[b]), 6))
                   for t, a, b, x in self._collisions(tracks, masses, T)]
-        # an event's score reads the causal filter's frames up to it + AFTER: these are decided by the cut
-        cut_events = None if cut_state is None else [e for e in events if e.frame + collisions.AFTER <= cut]
+        # an event's score reads the causal filter's frames up to it + AFTER: these are decided by the cut (between
+        # tracks confirmed by then, as a parse of the observed frames alone would have them)
+        known = {k.id for k in tracks if k.confirmed <= cut}
+        cut_events = None if cut_state is None else [e for e in events if e.frame + collisions.AFTER <= cut
+                                                     and e.a in known and e.b in known]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=events, observed_frames=self.observed, cut_state=cut_state,
                        cut_collisions=cut_events)
