@@ -72,6 +72,21 @@ def test_a_parked_vehicle_stays_static_under_detection_noise():
     assert np.abs(est.velocity[20:, 0]).max() == 0.0
 
 
+@pytest.mark.parametrize("seed", range(6))
+def test_a_parked_vehicle_is_parked_at_the_cut(seed):
+    """In the half second before the cut a parked body's wandering detections fit "engine on from rest" about as
+    well as "parked"; the generator never gives a static body an engine, so the predictive state is parked."""
+    cfg = Config.load()
+    pos = np.tile([-1.0, 2.0, resting_height("sedan")], (T, 1))
+    rng = np.random.default_rng(seed)
+    dets = _detections(pos, 0.5, "sedan", rng, pixel_noise=0.8)
+    for d, du in zip(dets, np.linspace(0.0, rng.normal(0, 1.5), T)):   # and a slow wander, in pixels
+        d[0].u += du
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+    assert not est.cut_state["engine"][0]
+    assert np.linalg.norm(est.cut_state["velocity"][0, :2]) == 0.0
+
+
 def test_a_struck_car_slides_to_rest_through_slow_and_a_parked_one_is_static():
     """An SUV at 3 m/s hits a parked sedan, which friction brings to rest: the estimate reads it 0 before the impact
     (a parked body's detections wander) and slow (0.5-0.8 m/s) where the truth is, not 0 from static_speed."""

@@ -690,8 +690,10 @@ class SceneParser:
                 # static, slow or fast at frame 0), changed since at the stretch's rate: a speed elsewhere costs
                 # start_speed_penalty (say it collided before it was found). Not for a floating plane: its distance
                 # is the head's alone, too noisy for the few speeds to pick its engine (right at the cut for 69% of
-                # the first 40 full-test videos' aeroplanes with them, 77% without).
-                v = classes + r[e] * k.start / self.fps
+                # the first 40 full-test videos' aeroplanes with them, 77% without). A static start has no engine
+                # (the generator's rule): else in the half second before the cut a parked body's noisy detections
+                # fit "engine on from rest" about as well as "parked".
+                v = (classes[1:] if e else classes) + r[e] * k.start / self.fps
                 g = dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"],
                                             np.maximum(v, 0.0) if r[e] < 0 else v)
                 options += [(f[1] + p["start_speed_penalty"], e, f[0]), (g[1], e, g[0])]
