@@ -2,6 +2,8 @@
 
 from dataclasses import replace
 
+import numpy as np
+
 from dynclevr.config import Config
 from dynclevr.perception.evaluate import scene_stats, summarise
 from test_programs import known_scene
@@ -20,3 +22,18 @@ def test_collision_events_count_by_pair_and_frame_tolerance():
     assert (s["collision_precision"], s["collision_recall"]) == (2 / 3, 1.0)    # within 6 frames
     assert abs(s["collision_f1"] - 0.8) < 1e-9
     assert abs(s["collision_f1_strict"] - 2 * (1 / 3) * 0.5 / (1 / 3 + 0.5)) < 1e-9   # within 3: only (1, 4)
+
+
+def test_the_cut_state_is_scored_for_the_objects_the_observed_frames_show():
+    truth = known_scene()
+    cut = truth.observed_frames - 1
+    state = {k: np.array(v, copy=True) for k, v in truth.state_at(cut).items()}
+    state["velocity"][[1, 2, 3], 0] += 1.0       # 1 m/s off for three objects
+    state["engine"][4] = True                     # a wrong engine
+    state["velocity"][5, 0] += 9.0                # first seen after the cut: not scored
+    visible = truth.visible.copy()
+    visible[:cut + 1, 5] = False
+    est = replace(truth, cut_state=state, visible=visible)
+    s = summarise([scene_stats(truth, est, Config.load()["labels"])])
+    assert s["cut_speed_err_median"] == 1.0
+    assert s["cut_engine_acc"] == 0.8

@@ -4,7 +4,9 @@ the truth; nothing here feeds back into the model.
 Objects are matched one-to-one (Hungarian) by their mean distance over the frames where both are visible;
 a pair further apart than MATCH_RADIUS is no match. The language labels (velocity class, accelerating, floating)
 are computed by the same function the dataset uses (dynclevr.questions.labels) on both scenes and compared
-where the truth's label is unambiguous, i.e. where a question could be asked.
+where the truth's label is unambiguous, i.e. where a question could be asked. The state at the last observed frame,
+from which the predictive questions start (an estimate's cut state), is scored for the matched objects that the
+observed frames show: its horizontal speed error and whether its engine is right.
 """
 
 from __future__ import annotations
@@ -45,18 +47,24 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
     counted = truth.visible.sum(0) >= MIN_VISIBLE
     s = {"true_objects": int(counted.sum()), "est_objects": len(est.objects),
          "matched": len(pairs), "subtype": [], "color": [], "pos_err": [], "velocity": [], "accelerating": [],
-         "floating": [], "depth_err": [], "yaw_err": [], "confusion": [],
+         "floating": [], "depth_err": [], "yaw_err": [], "confusion": [], "cut_speed_err": [], "cut_engine": [],
          "true_by_category": {c: 0 for c in CATEGORIES}, "found_by_category": {c: 0 for c in CATEGORIES}}
     for i, o in enumerate(truth.objects):
         if counted[i]:
             s["true_by_category"][o.category] += 1
     eye = np.asarray(truth.camera.position, float)
     matched_est = {j for _, j in pairs}
+    # the state the predictive questions start from, of the objects the observed frames show
+    cut = est.observed_frames - 1
+    cut_true, cut_est = truth.state_at(cut), est.state_at(cut)
     for i, j in pairs:
         s["found_by_category"][truth.objects[i].category] += int(counted[i])
         s["subtype"].append(truth.objects[i].shape == est.objects[j].shape)
         s["confusion"].append((truth.objects[i].shape, est.objects[j].shape))
         s["color"].append(truth.objects[i].color == est.objects[j].color)
+        if 0 <= cut < truth.num_frames and est.visible[:cut + 1, j].any():
+            s["cut_speed_err"].append(float(np.linalg.norm(cut_est["velocity"][j, :2] - cut_true["velocity"][i, :2])))
+            s["cut_engine"].append(bool(cut_est["engine"][j]) == bool(cut_true["engine"][i]))
         both = truth.visible[:, i] & est.visible[:, j]
         s["pos_err"] += np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).tolist()
         ray = truth.position[both, i] - eye
@@ -106,6 +114,7 @@ def summarise(stats: list[dict]) -> dict:
     err = np.array([x for s in stats for x in s["pos_err"]])
     depth = np.array([x for s in stats for x in s["depth_err"]])
     yaw = np.array([x for s in stats for x in s["yaw_err"]])
+    cut_speed = np.array([x for s in stats for x in s["cut_speed_err"]])
     per_cat = {}
     for c in CATEGORIES:
         n = sum(s["true_by_category"][c] for s in stats)
@@ -128,6 +137,8 @@ def summarise(stats: list[dict]) -> dict:
         "yaw_flip_rate": float((yaw > FLIP).mean()) if len(yaw) else float("nan"),
         "velocity_class_acc": mean("velocity"), "accelerating_acc": mean("accelerating"),
         "floating_acc": mean("floating"),
+        "cut_speed_err_median": float(np.median(cut_speed)) if len(cut_speed) else float("nan"),
+        "cut_engine_acc": mean("cut_engine"),
         "collision_precision": ep, "collision_recall": er,
         "collision_f1": 2 * ep * er / (ep + er) if ep + er else 0.0,
         "collision_f1_strict": 2 * sp * sr / (sp + sr) if sp + sr else 0.0,
@@ -142,6 +153,7 @@ ROWS = [("detection_precision", "detection precision"), ("detection_recall", "de
         ("yaw_flip_rate", "yaw flips (> 135 deg)"),
         ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
         ("floating_acc", "floating accuracy"),
+        ("cut_speed_err_median", "speed error at the cut, median (m/s)"), ("cut_engine_acc", "engine at the cut"),
         ("collision_precision", f"collision-event precision (frame within {EVENT_TOLERANCE})"),
         ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1"),
         ("collision_f1_strict", f"collision-event F1, frame within {STRICT_EVENT_TOLERANCE}")]
