@@ -70,26 +70,3 @@ def test_an_observed_collision_with_a_reached_object_hands_the_other_to_the_engi
     with World(bodies, params) as world:
         replay = counterfactual_run(scene, bodies, [0, 1], 0, "static", params, world)
     assert replay == []
-
-
-def test_a_contact_the_cut_state_is_already_in_is_no_future_collision(params):
-    """The estimate's cut state has car 0 nose to tail with parked car 1, still at its speed before the impact the
-    observed frames show (the parser did not call it): the engine's contact in its first frame is that impact,
-    dated at the cut, and no future collision. Car 2, 9 m off, drives into car 3 about a second later: that one is."""
-    from dynclevr.questions.labels import future_events
-    from dynclevr.stages.simulate_future import predict
-
-    bodies = [_car(-3.05, 0.0, 5.0), _car(0.0, 0.0, 0.0), _car(-9.0, 8.0, 6.0), _car(0.0, 8.0, 0.0)]
-    est = _scene(bodies, params)
-    cut = est.observed_frames - 1
-    est.cut_state = {"position": np.array([b.position for b in bodies]),
-                     "orientation": np.array([b.orientation for b in bodies]),
-                     "velocity": np.array([b.velocity for b in bodies]), "angular_velocity": np.zeros((4, 3)),
-                     "engine": np.zeros(4, bool), "floating": np.zeros(4, bool)}
-    est.collisions, est.cut_collisions = [], []
-    est.future_collisions, _ = predict(est, params)
-    touching = [e for e in est.future_collisions if e.pair() == frozenset({0, 1})]
-    assert touching and touching[0].frame == cut
-    future = future_events(est, Config.load()["labels"]["collision_merge_frames"])
-    assert [e.pair() for e in future] == [frozenset({2, 3})]
-    assert future[0].frame > cut + 30

@@ -12,7 +12,6 @@ engine: its future and counterfactuals are its contact rule on positions extrapo
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -83,12 +82,7 @@ def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True
     if seen:
         bodies = _bodies(scene, np.full(len(seen), last), seen)
         run = simulate(bodies, params, scene.num_frames - last, record=False)
-        # A contact in the first simulated frame is one the cut state is already in (hulls that touch, or close
-        # within a frame: a collision the observed frames show but the parser did not call). It began within the
-        # observed frames, so it is dated at the cut, and labels.future_events merges the rest of that contact into
-        # it: no future collision, as for the truth's contacts that go on across the cut.
-        future = [replace(e, frame=last) if e.frame == last + 1 else e
-                  for e in _events(run.collisions, seen, offset=last) if e.frame > last]
+        future = [e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames]
     outcomes: dict[tuple[int, str], list[Collision]] = {}
     bodies, ids = initial_bodies(scene)
     if bodies:
@@ -152,8 +146,7 @@ def _params(cfg) -> dict:
 
 
 # 4: a scene column and nulls in future/; 5: the counterfactual replay moves only the bodies it has not reached
-# 6: a contact in the first simulated frame is at the cut (no future collision)
-STAGE = Stage("simulate-future", 6, inputs=("parse-scene",),
+STAGE = Stage("simulate-future", 5, inputs=("parse-scene",),
               params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
