@@ -327,3 +327,60 @@ def test_the_cut_state_decides_the_engine_from_the_observed_frames(speed, engine
                                                                   dets[:cut + 1])
     assert bool(est.cut_state["engine"][0]) == engine
     assert abs(np.linalg.norm(est.cut_state["velocity"][0, :2]) - np.linalg.norm(tr.velocity[cut, 0, :2])) < 0.3
+
+
+def test_a_falling_plane_keeps_its_horizontal_speed_in_the_air():
+    """In the air only an engine changes a body's horizontal speed, falling or floating: through the head's noisy
+    distances a falling plane's horizontal speed is one start speed, not a wander that reads as accelerating."""
+    from dynclevr.questions.labels import compute_labels
+
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    tr = simulate([Body("jet", (0.0, 1.0, 3.4), yaw_quaternion(0.3), (3.0 * math.cos(0.3), 3.0 * math.sin(0.3), 0.0),
+                        floating=False)], params, 40)
+    assert (tr.position[:, 0, 2] > 1.0).all()                      # still in the air at the last frame
+    dets = _detections(tr.position[:, 0], 0.3, "jet", np.random.default_rng(5))
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((40, 1, 1, 3), np.uint8), "syn", dets)
+    speed = np.linalg.norm(est.velocity[5:, 0, :2], axis=1)
+    np.testing.assert_allclose(speed, 3.0, atol=0.3)
+    assert np.ptp(speed) < 1e-9
+    assert not compute_labels(est, cfg["labels"]).accelerating[cfg["labels"]["start_frame"], 0]
+
+
+def _bounced_car(lost: range) -> tuple[np.ndarray, list]:
+    """A sedan driving at 6 m/s that bounces straight back while no detection sees it (frames `lost`): the filter's
+    prediction runs on and the detections come back 2.4 m behind it. Re-acquiring within one gate (not four), the
+    tracker alone starts a new track on the same car."""
+    turn = lost.start + len(lost) // 2
+    t = np.arange(T) / FPS
+    x = np.where(np.arange(T) < turn, -4.0 + 6.0 * t, -4.0 + 6.0 * t[turn] - 6.0 * (t - t[turn]))
+    pos = np.stack([x, np.full(T, 0.5), np.full(T, resting_height("sedan"))], 1)
+    dets = _detections(pos, 0.0, "sedan", np.random.default_rng(3))
+    return pos, [[] if f in lost else d for f, d in enumerate(dets)]
+
+
+@pytest.mark.parametrize("stitch", [True, False])
+def test_a_track_lost_and_found_again_is_one_object(stitch):
+    cfg = Config.load()
+    cfg.data["parser"].update(stitch=stitch, reacquire=1.0)
+    pos, dets = _bounced_car(range(40, 64))
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+    if not stitch:                      # without stitching the tracker alone makes two objects of it
+        assert len(est.objects) == 2
+        return
+    assert len(est.objects) == 1
+    seen = np.nonzero(est.visible[:, 0])[0]
+    assert seen[0] < 10 and seen[-1] == T - 1 and not est.visible[40:64, 0].any()
+    late = np.arange(70, T)
+    assert float(np.median(np.linalg.norm(est.position[late, 0] - pos[late], axis=1))) < 0.15
+
+
+def test_no_track_joins_across_the_cut():
+    """The predictive questions' state at the last observed frame reads no later frame: a car lost before the cut
+    and found again after it stays two objects (joining them would put later frames into the observed ones)."""
+    cfg = Config.load()
+    cfg.data["parser"]["reacquire"] = 1.0
+    cut = cfg["video"]["observed_frames"] - 1
+    _, dets = _bounced_car(range(cut - 12, cut + 12))
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+    assert len(est.objects) == 2

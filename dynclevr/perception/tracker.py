@@ -535,7 +535,81 @@ class SceneParser:
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
+    def _stitch(self, tracks: list[Track]) -> None:
+        """A track that lost its object, and a younger one that took the object over, are one object (in place:
+        the older absorbs the younger, which is then no object). Around impacts and occlusions the filter loses a
+        vehicle and a new track starts on it a few frames later (or while the old one still coasts on a wrong
+        prediction): two objects for one in the estimate, the first frames of the second "not yet visible".
+
+        Joined when alike (category and colour agreement >= stitch_agreement), the younger starting within
+        stitch_frames after the older's last detection (or up to stitch_overlap frames before it), near where the
+        older was (within stitch_radius, plus a fast vehicle's travel over the gap); the closest such pair first.
+        Causal at the cut: the predictive questions' state at the last observed frame reads no later frame, so a
+        track found by then joins on the observed frames alone, and none joins across a gap that spans the cut."""
+        p, cut = self.p, self.observed - 1
+        if not p["stitch"]:
+            return
+        live = [k for k in tracks if k.confirmed is not None]
+        pairs = []
+        for a in live:
+            pa, ca = _appearance(a.subtype_logp, a.color_logp)
+            for b in live:
+                if b.start <= a.start or _agreement(pa, ca, *_appearance(b.subtype_logp, b.color_logp)) \
+                        < p["stitch_agreement"]:
+                    continue
+                # a younger track found by the cut joins on what the observed frames show
+                horizon = cut if b.start <= cut else len(a.seen) + a.start
+                if b.start <= cut < b.confirmed:
+                    continue
+                seen = [a.start + i for i, v in enumerate(a.seen[:horizon + 1 - a.start]) if v]
+                last = seen[-1] if seen else -1
+                gap = b.start - last
+                if not seen or not -p["stitch_overlap"] <= gap <= p["stitch_frames"] or last < cut < b.start:
+                    continue
+                # where the older one was when the younger started (while they overlap, its pose then); an impact
+                # in the gap may have sent it anywhere a fast vehicle goes
+                then = np.asarray(a.z[last - a.start] if gap >= 0 else a.pose[b.start - a.start][:3], float)
+                speed = max(float(np.linalg.norm(a.vel[last - a.start][:2])), self.physics.fast_speed)
+                d = float(np.linalg.norm(then - np.asarray(b.z[0])))
+                if d <= p["stitch_radius"] + speed * max(gap, 0) / self.fps:
+                    pairs.append((d, a, b, last))
+        taken = set()
+        for _, a, b, last in sorted(pairs, key=lambda x: x[0]):
+            if a.id in taken or b.id in taken:
+                continue
+            taken |= {a.id, b.id}
+            self._join(a, b, last)
+
+    def _join(self, a: Track, b: Track, last: int) -> None:
+        """Track a continues with b's frames from b's start; a gap between a's last detection and b's start is a
+        straight line (no detection; the motion breaks at both ends)."""
+        keep = min(b.start, last + 1) - a.start
+        gap = b.start - a.start - keep
+        p0, p1 = np.asarray(a.pose[keep - 1], float), np.asarray(b.pose[0], float)
+        v = np.zeros(3) if gap <= 0 else np.array([*(p1[:2] - p0[:2]) * self.fps / (gap + 1), 0.0])
+        fill = [p0 + (p1 - p0) * (j + 1) / (gap + 1) for j in range(gap)]
+        for name in ("pose", "quat", "vel", "acc", "ang", "engine", "floating", "seen", "fvels", "z", "scores"):
+            if not getattr(a, name):     # the filter's velocities, without the prior
+                continue
+            mid = {"pose": fill, "quat": [a.quat[keep - 1]] * gap, "vel": [v] * gap, "fvels": [v] * gap,
+                   "acc": [np.zeros(3)] * gap, "ang": [np.zeros(3)] * gap, "engine": [False] * gap,
+                   "floating": [a.floating[keep - 1]] * gap, "seen": [False] * gap,
+                   "z": [np.full(3, np.nan)] * gap, "scores": [0.0] * gap}[name]
+            setattr(a, name, getattr(a, name)[:keep] + mid + getattr(b, name))
+        a.breaks = [x for x in a.breaks if x < keep] + [keep, keep + gap] + [x + keep + gap for x in b.breaks]
+        # its static attributes: within the observed frames for an object seen in them
+        if b.start < self.observed or a.start >= self.observed:
+            a.subtype_logp, a.color_logp = a.subtype_logp + b.subtype_logp, a.color_logp + b.color_logp
+        a.end, b.confirmed = b.end, None
+        for table in (self.candidates.gap, self.candidates.engine):
+            for (x, y) in [key for key in table if b.id in key]:
+                frames = table.pop((x, y))
+                other = y if x == b.id else x
+                if other != a.id:
+                    table.setdefault((min(a.id, other), max(a.id, other)), {}).update(frames)
+
     def _scene(self, name: str, tracks: list[Track], T: int) -> Scene4D:
+        self._stitch(tracks)
         density = self.physics.density
         masses = [k.mass(density) for k in tracks]        # by track id (the contacts' ids)
         tracks = sorted((k for k in tracks if k.confirmed is not None), key=lambda k: (k.confirmed, k.id))
@@ -658,13 +732,18 @@ class SceneParser:
         floating = np.array(k.floating, bool)
         need = 2 * p["min_fit_frames"]
 
+        # In the air nothing but an engine changes a body's horizontal speed, floating or falling alike (a falling
+        # plane's horizontal motion is a floating one's); friction starts when it lands.
+        airborne = (pos[:, 2] > size[2] / 2 + 0.2) if category == "aeroplane" else np.zeros(len(z), bool)
+
         def rates(lo: int, hi: int) -> dict | None:
-            """Rate of change of speed with and without engine; None: it fell (or landed) in lo..hi."""
+            """Rate of change of speed with and without engine; None: it began or stopped floating, or landed, in
+            lo..hi."""
             if floating[lo:hi].any() != floating[lo:hi].all():
                 return None
-            if floating[lo]:
+            if floating[lo] or airborne[lo:hi].all():
                 return {False: 0.0, True: ph.engine_accel}
-            if category == "aeroplane" and (pos[lo:hi, 2] > size[2] / 2 + 0.2).any():
+            if airborne[lo:hi].any():
                 return None
             return {False: -self.friction_decel, True: ph.engine_accel - self.friction_decel}
 
@@ -683,12 +762,12 @@ class SceneParser:
                 f = dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"])
                 if f is None:
                     return None
-                if lo > 0 or not p["start_speeds"] or floating[lo]:
+                if lo > 0 or not p["start_speeds"] or airborne[lo]:
                     options.append((f[1], e, f[0]))
                     continue
                 # Before its first impact a body still has a start speed of the generator's (REFERENCE.md section 1:
                 # static, slow or fast at frame 0), changed since at the stretch's rate: a speed elsewhere costs
-                # start_speed_penalty (say it collided before it was found). Not for a floating plane: its distance
+                # start_speed_penalty (say it collided before it was found). Not for a plane in the air: its distance
                 # is the head's alone, too noisy for the few speeds to pick its engine (right at the cut for 69% of
                 # the first 40 full-test videos' aeroplanes with them, 77% without). A static start has no engine
                 # (the generator's rule): else in the half second before the cut a parked body's noisy detections
@@ -705,10 +784,16 @@ class SceneParser:
             if b - last > need:
                 edges.append(b)
             last = b
+        # a falling plane's landing ends its flight: a stretch of its own, which no fit moves or removes
+        landing = {int(f) + 1 for f in np.nonzero(airborne[:-1] & ~airborne[1:])[0]}
+        edges = sorted(set(edges) | landing)
         edges.append(len(z))
         i = 1
         while i < len(edges) - 1:
             lo, b, hi = edges[i - 1], edges[i], edges[i + 1]
+            if b in landing:
+                i += 1
+                continue
             best = None
             for s in range(max(lo + need, b - p["break_shift"]), min(hi - need, b + p["break_shift"]) + 1):
                 left, right = fit(lo, s, engines(lo)), fit(s, hi, engines(s))
