@@ -384,3 +384,15 @@ def test_no_track_joins_across_the_cut():
     _, dets = _bounced_car(range(cut - 12, cut + 12))
     est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
     assert len(est.objects) == 2
+
+
+@pytest.mark.parametrize("key, value, message", [("stitch_agreement", 1.5, "must lie in"),
+                                                 ("stitch_frames", -1, "non-negative integer"),
+                                                 ("stitch_radius", 0.0, "must be positive")])
+def test_a_bad_stitching_value_is_one_clear_line(key, value, message):
+    from dynclevr.config import ConfigError
+
+    cfg = Config.load()
+    cfg.data["parser"][key] = value
+    with pytest.raises(ConfigError, match=f"'parser.{key}' = .* {message}"):
+        SceneParser(ParserModel.load(), None, CAMERA, cfg)

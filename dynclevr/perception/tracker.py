@@ -55,7 +55,7 @@ POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
             "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
-            "angular_window")
+            "angular_window", "stitch_radius")
 
 
 def parser_params(cfg: Config) -> dict:
@@ -72,6 +72,11 @@ def parser_params(cfg: Config) -> dict:
     if not isinstance(p["smooth_window"], int) or isinstance(p["smooth_window"], bool) or p["smooth_window"] < 0:
         raise ConfigError(f"'parser.smooth_window' = {p['smooth_window']!r} must be a non-negative integer (frames; "
                           "0: the causal filter's velocities)")
+    if not 0 <= p["stitch_agreement"] <= 1:
+        raise ConfigError(f"'parser.stitch_agreement' = {p['stitch_agreement']!r} must lie in [0, 1]")
+    for key in ("stitch_frames", "stitch_overlap"):
+        if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
