@@ -388,7 +388,8 @@ def test_no_track_joins_across_the_cut():
 
 @pytest.mark.parametrize("key, value, message", [("stitch_agreement", 1.5, "must lie in"),
                                                  ("stitch_frames", -1, "non-negative integer"),
-                                                 ("stitch_radius", 0.0, "must be positive")])
+                                                 ("stitch_radius", 0.0, "must be positive"),
+                                                 ("stitch", "yes", "must be true or false")])
 def test_a_bad_stitching_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 

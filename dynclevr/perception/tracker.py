@@ -69,14 +69,16 @@ def parser_params(cfg: Config) -> dict:
     for key in ("detect_threshold", "new_track_score", "jump_rate", "outlier_rate"):
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
-    if not isinstance(p["smooth_window"], int) or isinstance(p["smooth_window"], bool) or p["smooth_window"] < 0:
-        raise ConfigError(f"'parser.smooth_window' = {p['smooth_window']!r} must be a non-negative integer (frames; "
-                          "0: the causal filter's velocities)")
+    for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
+                      ("stitch_overlap", "")):
+        if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
+    for key in ("physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion", "start_speeds",
+                "stitch"):
+        if not isinstance(p[key], bool):
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
     if not 0 <= p["stitch_agreement"] <= 1:
         raise ConfigError(f"'parser.stitch_agreement' = {p['stitch_agreement']!r} must lie in [0, 1]")
-    for key in ("stitch_frames", "stitch_overlap"):
-        if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
-            raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
