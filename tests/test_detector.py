@@ -114,3 +114,58 @@ def test_the_losses_train_the_net_and_fall_on_one_batch():
         loss.backward()
         opt.step()
     assert float(loss.detach()) < 0.5 * first
+
+
+def _checkpoint(tmp_path, net: DetectNet, step: int = 100):
+    from dynclevr.perception.detector_train import _save
+
+    opt = torch.optim.AdamW(net.parameters())
+    _save(net, opt, step, tmp_path, {"params": {}, "loss_curve": [], "heldout_curve": []})
+    return tmp_path
+
+
+def test_a_grown_head_computes_what_it_grew_from_and_then_learns_in_its_new_blocks(tmp_path):
+    from dynclevr.perception.detector_train import _grown, load_detector
+
+    torch.manual_seed(0)
+    small = DetectNet(16)
+    with torch.no_grad():          # BatchNorm statistics other than the defaults, as after training
+        for m in small.modules():
+            if isinstance(m, torch.nn.BatchNorm2d):
+                m.running_mean.uniform_(-0.5, 0.5)
+                m.running_var.uniform_(0.5, 2.0)
+    big, step = _grown(_checkpoint(tmp_path, small.eval()), 16, 2)
+    img = torch.rand(2, 3, 96, 128)
+    assert step == 100 and big.blocks == 2
+    assert torch.equal(small.eval()(img), big.eval()(img))
+    big.train()
+    big(img).square().mean().backward()
+    assert big.s16[-1].b[1].weight.grad.abs().sum() > 0      # the zero scale is where learning starts
+    # the grown head saves and loads as what it is
+    _checkpoint(tmp_path, big, step)
+    assert load_detector(tmp_path).blocks == 2
+
+
+def test_growing_a_head_into_another_width_is_one_clear_line(tmp_path):
+    import pytest
+
+    from dynclevr.config import ConfigError
+    from dynclevr.perception.detector_train import _grown
+
+    path = _checkpoint(tmp_path, DetectNet(16))
+    with pytest.raises(ConfigError, match="detector_width = 16"):
+        _grown(path, 32, 2)
+
+
+def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path):
+    import pytest
+
+    from dynclevr.config import Config, ConfigError
+    from dynclevr.perception.detector_train import train_detector
+
+    (tmp_path / "user.toml").write_text("[parser]\ndetector_blocks = -1\n")
+    with pytest.raises(ConfigError, match="'parser.detector_blocks' = -1 must be a non-negative integer"):
+        train_detector(Config.load(tmp_path / "user.toml"), tmp_path / "data", tmp_path / "out")
+    with pytest.raises(ConfigError, match="--resume and --grow-from exclude each other"):
+        train_detector(Config.load(), tmp_path / "data", tmp_path / "out", resume=True, grow_from=tmp_path)
+    assert not (tmp_path / "data").exists()

@@ -33,6 +33,9 @@ def register(app: typer.Typer) -> None:
                  resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint in --out"),
                  steps: Optional[int] = typer.Option(None, "--steps", help="total steps (default parser.detector_steps)"),
                  minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long"),
+                 grow_from: Optional[Path] = typer.Option(
+                     None, "--grow-from", help="start from the trained head in this directory, deepened to "
+                                               "parser.detector_blocks (it computes the same at first)"),
                  data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop")):
         """Detection head: centre heatmap, sub-type, colour, yaw, distance and height per cell (resumable)."""
         from dynclevr.config import Config
@@ -42,7 +45,7 @@ def register(app: typer.Typer) -> None:
         if data_only:
             generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
             return
-        train_detector(cfg, data_dir, out, workers, resume, steps, minutes, echo=typer.echo)
+        train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, echo=typer.echo)
 
     @train.command("collisions")
     def collisions(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

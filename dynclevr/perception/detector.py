@@ -40,15 +40,34 @@ def _conv(cin: int, cout: int, stride: int = 1, dilation: int = 1, k: int = 3) -
                          nn.BatchNorm2d(cout), nn.ReLU(inplace=True))
 
 
+class Residual(nn.Module):
+    """Two convolutions added to their input. The second's BatchNorm scale starts at zero, so a block appended to a
+    trained head leaves its function as it was (`DetectNet(blocks=...)` grows a head without starting over)."""
+
+    def __init__(self, c: int, dilation: int = 1):
+        super().__init__()
+        self.a = _conv(c, c, dilation=dilation)
+        self.b = nn.Sequential(nn.Conv2d(c, c, 3, padding=1, bias=False), nn.BatchNorm2d(c))
+        nn.init.zeros_(self.b[1].weight)
+
+    def forward(self, x: torch.Tensor) -> torch.Tensor:
+        return F.relu(x + self.b(self.a(x)))
+
+
 class DetectNet(nn.Module):
-    def __init__(self, width: int = 32):
+    """`blocks`: residual blocks appended at strides 8 and 16 each, where depth is cheap (a 40x30 and a 20x15 map)."""
+
+    def __init__(self, width: int = 32, blocks: int = 0):
         super().__init__()
         w = width
+        self.width, self.blocks = width, blocks
         self.s2 = _conv(3, w // 2, 2, k=5)                                        # 160x120
         self.s4 = nn.Sequential(_conv(w // 2, w, 2), _conv(w, w))                # 80x60
-        self.s8 = nn.Sequential(_conv(w, 2 * w, 2), _conv(2 * w, 2 * w))         # 40x30
+        self.s8 = nn.Sequential(_conv(w, 2 * w, 2), _conv(2 * w, 2 * w),         # 40x30
+                                *[Residual(2 * w) for _ in range(blocks)])
         self.s16 = nn.Sequential(_conv(2 * w, 3 * w, 2), _conv(3 * w, 3 * w, dilation=2),
-                                 _conv(3 * w, 3 * w, dilation=4), _conv(3 * w, 3 * w))   # 20x15
+                                 _conv(3 * w, 3 * w, dilation=4), _conv(3 * w, 3 * w),   # 20x15
+                                 *[Residual(3 * w, dilation=2 - k % 2) for k in range(blocks)])
         self.up8 = _conv(3 * w + 2 * w, 2 * w)
         self.up4 = _conv(2 * w + w, 3 * w // 2)
         self.head = nn.Sequential(_conv(3 * w // 2, 3 * w // 2), nn.Conv2d(3 * w // 2, OUT, 1))
