@@ -71,10 +71,12 @@ def _grown(source: Path, width: int, blocks: int) -> tuple[DetectNet, int]:
     if s["width"] != width or s.get("blocks", 0) > blocks:
         raise ConfigError(f"cannot grow the head in {source} (width {s['width']}, {s.get('blocks', 0)} blocks) into "
                           f"width {width}, {blocks} blocks: set parser.detector_width = {s['width']} and "
-                          f"parser.detector_blocks above {s.get('blocks', 0)}")
+                          f"parser.detector_blocks at least {s.get('blocks', 0)}")
     net = DetectNet(width, blocks)
     missing, unexpected = net.load_state_dict(s["net"], strict=False)
-    assert not unexpected and all(".a." in k or ".b." in k for k in missing), (missing, unexpected)
+    if unexpected or not all(".a." in k or ".b." in k for k in missing):
+        raise DetectorWeightsError(f"{path} is not a detection head of this design: retrain it with "
+                                   "`dynclevr train detector`")
     return net, int(s["step"])
 
 
@@ -311,7 +313,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
                    steps: int | None = None, minutes: float | None = None, grow_from: Path | None = None,
                    echo=print) -> dict:
     """`resume`: go on with the checkpoint in `out_dir` (its own width and blocks). `grow_from`: start a new run in
-    `out_dir` from the trained head there, deepened to `parser.detector_blocks` (function-preserving), with a fresh
+    `out_dir` from the trained head in `grow_from`, deepened to `parser.detector_blocks` (function-preserving), with a fresh
     optimiser and a cosine of its own from the head's step to `steps`."""
     p = cfg["parser"]
     for key in ("detector_shards", "detector_heldout_shards", "detector_batch", "detector_width"):
