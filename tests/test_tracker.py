@@ -10,7 +10,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth
-from dynclevr.perception.dynamics import segment_motion, slope, smoothed_motion
+from dynclevr.perception.dynamics import heading_motion, segment_motion, slope, smoothed_motion
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser
@@ -310,6 +310,32 @@ def test_segment_motion_recovers_the_start_speed_under_noise_and_a_bad_detection
     other = {-0.8: 2.2, 2.2: -0.8, 0.0: 3.0}[accel]        # the other hypothesis: an engine, or none
     assert cost < segment_motion(z, FPS, other, 8)[1]
     assert segment_motion(z[:10], FPS, accel, 8) is None          # 10 measurements < 2 x 8: no fit
+
+
+@pytest.mark.parametrize("v0, rate, flipped", [(6.0, 0.0, False), (3.0, 3.0, True), (0.0, 0.0, False)],
+                         ids=["fast-floating", "slow-engine-flipped-heading", "parked"])
+def test_heading_motion_reads_a_planes_speed_across_the_ray(v0, rate, flipped):
+    """A plane seen for the observed half second, 12 m away, flying at 45 degrees to the camera ray, whose
+    measured distance is 0.7 m noisy along the ray (the head's alone) and 6 cm across it: a line fitted to the
+    positions is decimetres per second off, but along the heading (its axis either way round: a flipped detection)
+    the start speed and the engine's rate that explain the measurements are the truth's, out of the generator's
+    few, and so is the velocity."""
+    rng = np.random.default_rng(0)
+    eye = np.array([0.0, 0.0, 3.0])
+    ray = np.array([1.0, 0.0])
+    u = np.array([np.cos(np.pi / 4), np.sin(np.pi / 4)])
+    t0 = 4 / FPS                                    # found at frame 4
+    t = t0 + np.arange(26) / FPS
+    travel = v0 * t + 0.5 * rate * t ** 2
+    z = np.concatenate([[12.0, 0.0] + np.outer(travel, u), np.full((26, 1), 2.5)], 1)
+    z[:, :2] += np.outer(rng.normal(0, 0.7, 26), ray) + np.outer(rng.normal(0, 0.06, 26), [0.0, 1.0])
+    starts = [(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (3.0, 3.0), (6.0, 3.0)]
+    axis = np.array([*(-u if flipped else u), 0.0])
+    vel, n = heading_motion(z, eye, FPS, axis, t0, starts, 0.06, 0.6, 8)
+    assert starts[n] == (v0, rate)
+    np.testing.assert_allclose(vel[-1, :2], (v0 + rate * t[-1]) * u, atol=1e-9)
+    assert np.linalg.norm(np.polyfit(t, z[:, :2], 1)[0] - (v0 + rate * t[-1]) * u) > 0.2
+    assert heading_motion(z[:10], eye, FPS, axis, t0, starts, 0.06, 0.6, 8) is None
 
 
 @pytest.mark.parametrize("speed, engine", [(3.0, True), (6.0, False), (3.0, False)])

@@ -173,6 +173,56 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
     return np.concatenate([speed[:, None] * u, np.zeros((len(z), 1))], 1), float((np.minimum(r, TRUNCATE) ** 2).sum())
 
 
+def heading_motion(z: np.ndarray, eye: np.ndarray, fps: int, axis: np.ndarray, t0: float,
+                   starts: list[tuple[float, float]], across: float, along: float, min_samples: int
+                   ) -> tuple[np.ndarray, int] | None:
+    """The physics prior for a body in the air before its first impact, whose distance is the head's alone: it
+    moves along its heading (the generator launches every vehicle forwards), from a start speed at frame 0 changed
+    since at a known rate. The heading fixes the line that `segment_motion` has to fit from the measurements, whose
+    error is mostly along the camera ray; so the speed is read where the measurements are tight (across the ray),
+    and the few start speeds (`starts`: (speed at frame 0, rate in m/s^2)) compete in the measurements' own metric
+    (`across` metres across the ray, `along` per 10 m of distance along it).
+
+    `z` [n, 3] measured positions (NaN: none) of frames t0 * fps + 0..n-1; `axis` [3] the heading's axis (either
+    way). -> (horizontal velocities [n, 3], the index of the start that explains them best); None: fewer than
+    2 x min_samples measurements."""
+    idx = np.nonzero(np.isfinite(z).all(1))[0]
+    if len(idx) < 2 * min_samples:
+        return None
+    xy = z[idx, :2]
+    ray = xy - eye[:2]
+    dist = np.linalg.norm(z[idx] - eye, axis=1)
+    ray /= np.linalg.norm(ray, axis=1, keepdims=True)
+    perp = np.stack([-ray[:, 1], ray[:, 0]], 1)
+    sd_along = along * np.maximum(dist, 1.0) / 10.0
+    # per measurement: the inverse covariance [k, 2, 2]
+    W = (ray[:, :, None] * ray[:, None, :] / sd_along[:, None, None] ** 2
+         + perp[:, :, None] * perp[:, None, :] / across ** 2)
+    tau = t0 + idx / fps
+    u = np.asarray(axis, float)[:2] / max(float(np.linalg.norm(axis[:2])), 1e-9)
+    best = None
+    for n, (v0, rate) in enumerate(starts):
+        travel = v0 * tau + 0.5 * rate * tau ** 2
+        for sign in ((1.0,) if v0 == 0 and rate == 0 else (1.0, -1.0)):
+            path = travel[:, None] * (sign * u)
+            keep = np.ones(len(idx), bool)
+            for _ in range(2):   # a bad detection out, as in segment_motion
+                x0 = np.linalg.solve(W[keep].sum(0), np.einsum("kij,kj->i", W[keep], (xy - path)[keep]))
+                r = xy - path - x0
+                d2 = np.einsum("ki,kij,kj->k", r, W, r)
+                ok = d2 <= max(9.0, 9.0 * float(np.median(d2)))
+                if (ok == keep).all() or ok.sum() < 2 * min_samples:
+                    break
+                keep = ok
+            cost = float(np.minimum(d2, 9.0 * max(1.0, float(np.median(d2)))).sum())
+            if best is None or cost < best[0]:
+                best = cost, n, sign
+    _, n, sign = best
+    v0, rate = starts[n]
+    speed = v0 + rate * (t0 + np.arange(len(z)) / fps)
+    return np.concatenate([speed[:, None] * (sign * u), np.zeros((len(z), 1))], 1), n
+
+
 OUTLIER_MADS, OUTLIER_FLOOR = 3.0, 0.15    # a residual above 3 robust sigmas (and 15 cm) is a bad detection
 
 
