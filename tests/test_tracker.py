@@ -10,7 +10,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth
-from dynclevr.perception.dynamics import heading_motion, segment_motion, slope, smoothed_motion
+from dynclevr.perception.dynamics import heading_motion, ray_weights, segment_motion, slope, smoothed_motion
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser
@@ -331,11 +331,12 @@ def test_heading_motion_reads_a_planes_speed_across_the_ray(v0, rate, flipped):
     z[:, :2] += np.outer(rng.normal(0, 0.7, 26), ray) + np.outer(rng.normal(0, 0.06, 26), [0.0, 1.0])
     starts = [(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (3.0, 3.0), (6.0, 3.0)]
     axis = np.array([*(-u if flipped else u), 0.0])
-    vel, n = heading_motion(z, eye, FPS, axis, t0, starts, 0.06, 0.6, 8)
+    W = ray_weights(z, eye, 0.06, 0.6)
+    vel, n = heading_motion(z, W, FPS, axis, t0, starts, 8)
     assert starts[n] == (v0, rate)
     np.testing.assert_allclose(vel[-1, :2], (v0 + rate * t[-1]) * u, atol=1e-9)
     assert np.linalg.norm(np.polyfit(t, z[:, :2], 1)[0] - (v0 + rate * t[-1]) * u) > 0.2
-    assert heading_motion(z[:10], eye, FPS, axis, t0, starts, 0.06, 0.6, 8) is None
+    assert heading_motion(z[:10], W[:10], FPS, axis, t0, starts, 8) is None
 
 
 @pytest.mark.parametrize("speed, engine", [(3.0, True), (6.0, False), (3.0, False)])

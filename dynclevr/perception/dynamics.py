@@ -132,8 +132,8 @@ SPEED_GRID = np.arange(0.0, 16.0, 0.02)    # m/s: the start speeds segment_motio
 TRUNCATE = 0.3                              # metres: segment_motion's cost of a measurement at most this far off
 
 
-def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, speeds: np.ndarray = SPEED_GRID
-                   ) -> tuple[np.ndarray, float] | None:
+def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, speeds: np.ndarray = SPEED_GRID,
+                   weights: np.ndarray | None = None) -> tuple[np.ndarray, float] | None:
     """The physics prior over a whole stretch between impacts: horizontal velocities [n, 3] (vz 0) for the frames
     of measured positions z [n, 3] (NaN: none), and its cost: the sum of the measurements' squared distances from
     the motion, each capped at TRUNCATE (a bad detection costs the same under every motion).
@@ -144,7 +144,10 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
     squares over `speeds` (the stop makes it non-linear) along the line of the measurements' linear fit, robust
     like `_robust_fit`. With local fits a few frames of depth noise read as a speed-up or a slow-down, and
     "accelerating" reads the change of speed over a sixth of a second. Comparing costs decides between two rates
-    (an engine or none) and where an impact split the motion. None: fewer than 2 x min_samples measurements."""
+    (an engine or none) and where an impact split the motion. `weights` [n, 2, 2] (`ray_weights`): the line's
+    direction is fitted in the measurements' own metric, tight across the camera ray and loose along it (an
+    unweighted line turns towards the ray: on 100 full-val videos the direction of vehicles not yet struck at the
+    cut is a mean 8.4 degrees off that way, 4.9 weighted). None: fewer than 2 x min_samples measurements."""
     idx = np.nonzero(np.isfinite(z).all(1))[0]
     if len(idx) < 2 * min_samples:
         return None
@@ -157,7 +160,8 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
         travel = v0s * tau + 0.5 * accel * tau ** 2
     keep = np.ones(len(idx), bool)
     for _ in range(3):
-        line = _fit(tau[keep], xy[keep], False)[1]
+        line = _fit(tau[keep], xy[keep], False)[1] if weights is None else _weighted_line(tau[keep], xy[keep],
+                                                                                            weights[idx][keep])
         u = line / max(float(np.linalg.norm(line)), 1e-9)
         along, across = xy @ u, xy @ np.array([-u[1], u[0]])
         offset = (along[keep] - travel[:, keep]).mean(1, keepdims=True)
@@ -173,15 +177,14 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
     return np.concatenate([speed[:, None] * u, np.zeros((len(z), 1))], 1), float((np.minimum(r, TRUNCATE) ** 2).sum())
 
 
-def heading_motion(z: np.ndarray, eye: np.ndarray, fps: int, axis: np.ndarray, t0: float,
-                   starts: list[tuple[float, float]], across: float, along: float, min_samples: int
-                   ) -> tuple[np.ndarray, int] | None:
+def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarray, t0: float,
+                   starts: list[tuple[float, float]], min_samples: int) -> tuple[np.ndarray, int] | None:
     """The physics prior for a body in the air before its first impact, whose distance is the head's alone: it
     moves along its heading (the generator launches every vehicle forwards), from a start speed at frame 0 changed
     since at a known rate. The heading fixes the line that `segment_motion` has to fit from the measurements, whose
     error is mostly along the camera ray; so the speed is read where the measurements are tight (across the ray),
     and the few start speeds (`starts`: (speed at frame 0, rate in m/s^2)) compete in the measurements' own metric
-    (`across` metres across the ray, `along` per 10 m of distance along it).
+    (`weights` [n, 2, 2], `ray_weights`).
 
     `z` [n, 3] measured positions (NaN: none) of frames t0 * fps + 0..n-1; `axis` [3] the heading's axis (either
     way). -> (horizontal velocities [n, 3], the index of the start that explains them best); None: fewer than
@@ -189,15 +192,7 @@ def heading_motion(z: np.ndarray, eye: np.ndarray, fps: int, axis: np.ndarray, t
     idx = np.nonzero(np.isfinite(z).all(1))[0]
     if len(idx) < 2 * min_samples:
         return None
-    xy = z[idx, :2]
-    ray = xy - eye[:2]
-    dist = np.linalg.norm(z[idx] - eye, axis=1)
-    ray /= np.linalg.norm(ray, axis=1, keepdims=True)
-    perp = np.stack([-ray[:, 1], ray[:, 0]], 1)
-    sd_along = along * np.maximum(dist, 1.0) / 10.0
-    # per measurement: the inverse covariance [k, 2, 2]
-    W = (ray[:, :, None] * ray[:, None, :] / sd_along[:, None, None] ** 2
-         + perp[:, :, None] * perp[:, None, :] / across ** 2)
+    xy, W = z[idx, :2], weights[idx]
     tau = t0 + idx / fps
     u = np.asarray(axis, float)[:2] / max(float(np.linalg.norm(axis[:2])), 1e-9)
     best = None
@@ -221,6 +216,27 @@ def heading_motion(z: np.ndarray, eye: np.ndarray, fps: int, axis: np.ndarray, t
     v0, rate = starts[n]
     speed = v0 + rate * (t0 + np.arange(len(z)) / fps)
     return np.concatenate([speed[:, None] * (sign * u), np.zeros((len(z), 1))], 1), n
+
+
+def ray_weights(z: np.ndarray, eye: np.ndarray, across: float, along: float) -> np.ndarray:
+    """Inverse covariances [n, 2, 2] of measured positions z [n, 3] on the ground plane: `across` metres of
+    standard deviation across the camera ray, `along` per 10 m of distance along it (place.Measurement)."""
+    ray = z[:, :2] - eye[:2]
+    ray /= np.maximum(np.linalg.norm(ray, axis=1, keepdims=True), 1e-9)
+    perp = np.stack([-ray[:, 1], ray[:, 0]], 1)
+    sd_along = along * np.maximum(np.linalg.norm(z - eye, axis=1), 1.0) / 10.0
+    return (ray[:, :, None] * ray[:, None, :] / sd_along[:, None, None] ** 2
+            + perp[:, :, None] * perp[:, None, :] / across ** 2)
+
+
+def _weighted_line(t: np.ndarray, xy: np.ndarray, W: np.ndarray) -> np.ndarray:
+    """Velocity [2] of the line x0 + v t that fits positions xy [k, 2] best under inverse covariances W [k, 2, 2]."""
+    J = np.zeros((len(t), 2, 4))
+    J[:, :, :2] = np.eye(2)
+    J[:, :, 2:] = t[:, None, None] * np.eye(2)
+    A = np.einsum("kji,kjl,klm->im", J, W, J)
+    b = np.einsum("kji,kjl,kl->i", J, W, xy)
+    return np.linalg.lstsq(A, b, rcond=None)[0][2:]
 
 
 OUTLIER_MADS, OUTLIER_FLOOR = 3.0, 0.15    # a residual above 3 robust sigmas (and 15 cm) is a bad detection

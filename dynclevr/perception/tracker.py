@@ -748,6 +748,8 @@ class SceneParser:
         # In the air nothing but an engine changes a body's horizontal speed, floating or falling alike (a falling
         # plane's horizontal motion is a floating one's); friction starts when it lands.
         airborne = (pos[:, 2] > size[2] / 2 + 0.2) if category == "aeroplane" else np.zeros(len(z), bool)
+        W = dynamics.ray_weights(z, np.asarray(self.camera.position, float), p["measure_across"],
+                                 p["measure_along_flying"] if category == "aeroplane" else p["measure_along"])
 
         def rates(lo: int, hi: int) -> dict | None:
             """Rate of change of speed with and without engine; None: it began or stopped floating, or landed, in
@@ -772,7 +774,7 @@ class SceneParser:
                 return None
             options = []
             for e in engines:
-                f = dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"])
+                f = dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"], weights=W[lo:hi])
                 if f is None:
                     return None
                 if lo > 0 or not p["start_speeds"] or airborne[lo]:
@@ -788,7 +790,7 @@ class SceneParser:
                 # fit "engine on from rest" about as well as "parked".
                 v = (classes[1:] if e else classes) + r[e] * k.start / self.fps
                 g = dynamics.segment_motion(z[lo:hi], self.fps, r[e], p["min_fit_frames"],
-                                            np.maximum(v, 0.0) if r[e] < 0 else v)
+                                            np.maximum(v, 0.0) if r[e] < 0 else v, W[lo:hi])
                 options += [(f[1] + p["start_speed_penalty"], e, f[0]), (g[1], e, g[0])]
             return min(options, key=lambda o: o[0])
 
@@ -825,7 +827,7 @@ class SceneParser:
             if f is None:
                 continue
             if cut and lo == 0 and p["start_speeds"] and airborne[lo:hi].all():
-                f = self._heading_motion(k, z[lo:hi], rates(lo, hi)) or f
+                f = self._heading_motion(k, z[lo:hi], W[lo:hi], rates(lo, hi)) or f
             engine[lo:hi] = f[1]
             # Before its first impact a body does not slow under static_speed within a video (from the generator's
             # slowest start speed friction takes seconds): slower speeds there are a parked body's wandering
@@ -838,7 +840,8 @@ class SceneParser:
                 v[speed < p["static_speed"]] = 0.0
             vel[lo:hi, :2] = v
 
-    def _heading_motion(self, k: Track, z: np.ndarray, rates: dict) -> tuple[float, bool, np.ndarray] | None:
+    def _heading_motion(self, k: Track, z: np.ndarray, W: np.ndarray, rates: dict
+                        ) -> tuple[float, bool, np.ndarray] | None:
         """A plane's flight before its first impact as `_segment_motion`'s fit gives it, (cost, engine,
         velocities), with no cost (the stretch's edges are decided): along its heading from one of the generator's
         start speeds (REFERENCE.md section 1: static, slow or fast at frame 0; a static start has no engine), at
@@ -850,9 +853,8 @@ class SceneParser:
         # the heading's axis: the mean of the doubled angle, so a front/back flip does not cancel it
         yaw = np.array([math.atan2(h[1], h[0]) for h in heading(np.array(k.quat[:len(z)]))])
         axis = 0.5 * math.atan2(np.sin(2 * yaw).mean(), np.cos(2 * yaw).mean())
-        g = dynamics.heading_motion(z, np.asarray(self.camera.position, float), self.fps,
-                                    np.array([math.cos(axis), math.sin(axis), 0.0]), k.start / self.fps, starts,
-                                    p["measure_across"], p["measure_along_flying"], p["min_fit_frames"])
+        g = dynamics.heading_motion(z, W, self.fps, np.array([math.cos(axis), math.sin(axis), 0.0]),
+                                    k.start / self.fps, starts, p["min_fit_frames"])
         if g is None:
             return None
         return 0.0, g[1] > 2, g[0]
