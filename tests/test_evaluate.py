@@ -6,6 +6,7 @@ import numpy as np
 
 from dynclevr.config import Config
 from dynclevr.perception.evaluate import scene_stats, summarise
+from dynclevr.scene import Collision
 from test_programs import known_scene
 
 
@@ -37,3 +38,34 @@ def test_the_cut_state_is_scored_for_the_objects_the_observed_frames_show():
     s = summarise([scene_stats(truth, est, Config.load()["labels"])])
     assert s["cut_speed_err_median"] == 1.0
     assert s["cut_engine_acc"] == 0.8
+
+
+def test_predicted_future_collisions_are_scored_by_pair_among_the_objects_seen_by_the_cut():
+    truth = known_scene()       # after the cut (frame 29): (1, 4) at 45; before it: (0, 1) at 20
+    cut = truth.observed_frames - 1
+    labels = Config.load()["labels"]
+    known = [e for e in truth.collisions if e.frame <= cut]
+    # the estimate knows (0, 1) from the observed frames, misses (1, 4), and predicts (2, 3), which never happens
+    est = replace(truth, cut_collisions=known, future_collisions=[Collision(60, 2, 3)])
+    s = summarise([scene_stats(truth, est, labels, future=True)])
+    assert (s["future_pair_precision"], s["future_pair_recall"], s["future_pair_f1"]) == (0.0, 0.0, 0.0)
+    # a contact that the observed frames show going on (0, 1 touching at frame 28) is no future collision
+    est = replace(est, cut_collisions=known + [Collision(28, 0, 1)],
+                  future_collisions=[Collision(46, 1, 4), Collision(31, 0, 1)])
+    s = summarise([scene_stats(truth, est, labels, future=True)])
+    assert (s["future_pair_precision"], s["future_pair_recall"]) == (1.0, 1.0)
+    # an object first seen after the cut takes no part: its pairs are neither predicted nor missed
+    visible = truth.visible.copy()
+    visible[:cut + 1, 4] = False
+    s = summarise([scene_stats(truth, replace(est, visible=visible, future_collisions=[]), labels, future=True)])
+    assert s["future_pair_recall"] == 0.0 and s["future_pair_f1"] == 0.0
+    assert np.isnan(summarise([scene_stats(truth, est, labels)])["future_pair_f1"])   # not simulated: no score
+
+
+def test_gross_cut_speed_errors_are_counted_apart():
+    truth = known_scene()
+    state = {k: np.array(v, copy=True) for k, v in truth.state_at(truth.observed_frames - 1).items()}
+    state["velocity"][0, 0] += 0.5               # noise
+    state["velocity"][1, 1] += 2.0               # a wrong motion
+    s = summarise([scene_stats(truth, replace(truth, cut_state=state), Config.load()["labels"])])
+    assert s["cut_speed_gross_rate"] == 1 / 6 and s["cut_speed_err_median"] == 0.0

@@ -17,15 +17,17 @@ def register(app: typer.Typer) -> None:
     @app.command("eval-parser")
     def eval_parser(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt,
                     config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt):
-        """Detection, identity, position, dynamics and collision metrics of parsed/ (and parsed-noprior/,
-        parsed-particle/, parsed-refine/: the detection head with render-and-compare) against sim/; runs simulate, render and
-        parse-scene first where they are not cached. Writes <split>/parser_eval.md and the sub-type confusion PNG."""
+        """Detection, identity, position, dynamics, collision and predicted-future metrics of parsed/ and future/
+        (and parsed-noprior/, parsed-particle/, parsed-refine/: the detection head with render-and-compare) against
+        sim/; runs simulate, render, parse-scene and simulate-future first where they are not cached. Writes
+        <split>/parser_eval.md and the sub-type confusion PNG."""
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
         from dynclevr.perception.evaluate import confusion_png, markdown, scene_stats, summarise
         from dynclevr.config import Config
         from dynclevr.pipeline import Runner, model_configs, parse_scenes
         from dynclevr.scene import Scene4D
+        from dynclevr.stages.simulate_future import attach
 
         results = {}
         base = load_config(config)
@@ -37,13 +39,15 @@ def register(app: typer.Typer) -> None:
         for name, cfg in variants:
             r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
             indices = parse_scenes(scenes, r.split)
-            for stage in ("simulate", "render", "parse-scene"):
+            for stage in ("simulate", "render", "parse-scene", "simulate-future"):
                 r.run(stage, indices)
             stats = []
             for i in indices:
                 scene = r.split.scene_names()[i]
-                stats.append(scene_stats(Scene4D.read(r.store.path("simulate", scene, ".mcap")),
-                                         Scene4D.read(r.store.path("parse-scene", scene, ".mcap")), cfg["labels"]))
+                est = attach(Scene4D.read(r.store.path("parse-scene", scene, ".mcap")),
+                             r.store.path("simulate-future", scene, ".parquet"))
+                stats.append(scene_stats(Scene4D.read(r.store.path("simulate", scene, ".mcap")), est, cfg["labels"],
+                                         future=True))
             results[name] = summarise(stats)
             if name == variants[0][0]:
                 confusion_png(stats, r.store.split_file("parser_confusion.png"))

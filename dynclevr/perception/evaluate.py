@@ -6,7 +6,10 @@ a pair further apart than MATCH_RADIUS is no match. The language labels (velocit
 are computed by the same function the dataset uses (dynclevr.questions.labels) on both scenes and compared
 where the truth's label is unambiguous, i.e. where a question could be asked. The state at the last observed frame,
 from which the predictive questions start (an estimate's cut state), is scored for the matched objects that the
-observed frames show: its horizontal speed error and whether its engine is right.
+observed frames show: its horizontal speed error, the share of gross errors (over CUT_GROSS: a parked body read
+as moving, a start speed picked wrong) and whether its engine is right. With `future`, the predicted future collisions
+(simulate-future's, from the cut state) are scored by pair among the matched objects that the observed frames show:
+a steadier yardstick for prediction than the few predictive questions, where a pair's yes flips with small changes.
 """
 
 from __future__ import annotations
@@ -16,7 +19,7 @@ from scipy.optimize import linear_sum_assignment
 
 from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
 from dynclevr.perception.detector_data import yaw_of
-from dynclevr.questions.labels import compute_labels, merge_events
+from dynclevr.questions.labels import compute_labels, future_events, merge_events
 from dynclevr.scene import Scene4D
 
 MATCH_RADIUS = 1.5      # metres
@@ -25,6 +28,7 @@ FLIP = np.deg2rad(135)  # a heading further off than this is a front/back flip
 MIN_VISIBLE = 5         # frames a true object must be in view to count as one to detect
 EVENT_TOLERANCE = 6     # frames between an estimated and a true collision of the same pair
 STRICT_EVENT_TOLERANCE = 3   # ... and issue 11's stricter bar
+CUT_GROSS = 1.5         # m/s: a cut speed this far off is a wrong motion, not noise (the line fit's is ~0.6 at worst)
 
 
 def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
@@ -41,7 +45,8 @@ def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
     return [(int(i), int(j)) for i, j in zip(rows, cols) if cost[i, j] <= MATCH_RADIUS]
 
 
-def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
+def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = False) -> dict:
+    """`future`: est carries its simulated future (simulate_future.attach), to be scored by pair."""
     pairs = match(truth, est)
     lt, le = compute_labels(truth, labels_cfg), compute_labels(est, labels_cfg)
     counted = truth.visible.sum(0) >= MIN_VISIBLE
@@ -100,6 +105,13 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict) -> dict:
                     break
         s[key] = tp
     s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)))
+    if future:
+        seen = {to_truth[est.objects[j].id] for _, j in pairs if est.visible[:cut + 1, j].any()}
+        true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
+        est_pairs = {frozenset((to_truth[e.a], to_truth[e.b])) for e in future_events(est, merge)
+                     if e.a in to_truth and e.b in to_truth and {to_truth[e.a], to_truth[e.b]} <= seen}
+        s.update(future_tp=len(true_pairs & est_pairs), future_fp=len(est_pairs - true_pairs),
+                 future_fn=len(true_pairs - est_pairs))
     return s
 
 
@@ -124,6 +136,12 @@ def summarise(stats: list[dict]) -> dict:
     ep = total("events_tp") / max(total("events_est"), 1)
     er = total("events_tp") / max(total("events_true"), 1)
     sp = total("events_tp_strict") / max(total("events_est"), 1)
+    if all("future_tp" in s for s in stats):
+        tp, fp, fn = total("future_tp"), total("future_fp"), total("future_fn")
+        fut = {"future_pair_precision": tp / max(tp + fp, 1), "future_pair_recall": tp / max(tp + fn, 1),
+               "future_pair_f1": 2 * tp / max(2 * tp + fp + fn, 1)}
+    else:
+        fut = {k: float("nan") for k in ("future_pair_precision", "future_pair_recall", "future_pair_f1")}
     sr = total("events_tp_strict") / max(total("events_true"), 1)
     return {
         "scenes": len(stats),
@@ -138,7 +156,8 @@ def summarise(stats: list[dict]) -> dict:
         "velocity_class_acc": mean("velocity"), "accelerating_acc": mean("accelerating"),
         "floating_acc": mean("floating"),
         "cut_speed_err_median": float(np.median(cut_speed)) if len(cut_speed) else float("nan"),
-        "cut_engine_acc": mean("cut_engine"),
+        "cut_speed_gross_rate": float((cut_speed > CUT_GROSS).mean()) if len(cut_speed) else float("nan"),
+        "cut_engine_acc": mean("cut_engine"), **fut,
         "collision_precision": ep, "collision_recall": er,
         "collision_f1": 2 * ep * er / (ep + er) if ep + er else 0.0,
         "collision_f1_strict": 2 * sp * sr / (sp + sr) if sp + sr else 0.0,
@@ -153,7 +172,11 @@ ROWS = [("detection_precision", "detection precision"), ("detection_recall", "de
         ("yaw_flip_rate", "yaw flips (> 135 deg)"),
         ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
         ("floating_acc", "floating accuracy"),
-        ("cut_speed_err_median", "speed error at the cut, median (m/s)"), ("cut_engine_acc", "engine at the cut"),
+        ("cut_speed_err_median", "speed error at the cut, median (m/s)"),
+        ("cut_speed_gross_rate", f"speed at the cut over {CUT_GROSS} m/s off"), ("cut_engine_acc", "engine at the cut"),
+        ("future_pair_precision", "predicted future collision pairs: precision"),
+        ("future_pair_recall", "predicted future collision pairs: recall"),
+        ("future_pair_f1", "predicted future collision pairs: F1"),
         ("collision_precision", f"collision-event precision (frame within {EVENT_TOLERANCE})"),
         ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1"),
         ("collision_f1_strict", f"collision-event F1, frame within {STRICT_EVENT_TOLERANCE}")]
