@@ -136,13 +136,13 @@ def summarise(stats: list[dict]) -> dict:
     ep = total("events_tp") / max(total("events_est"), 1)
     er = total("events_tp") / max(total("events_true"), 1)
     sp = total("events_tp_strict") / max(total("events_est"), 1)
+    sr = total("events_tp_strict") / max(total("events_true"), 1)
     if all("future_tp" in s for s in stats):
         tp, fp, fn = total("future_tp"), total("future_fp"), total("future_fn")
         fut = {"future_pair_precision": tp / max(tp + fp, 1), "future_pair_recall": tp / max(tp + fn, 1),
                "future_pair_f1": 2 * tp / max(2 * tp + fp + fn, 1)}
     else:
         fut = {k: float("nan") for k in ("future_pair_precision", "future_pair_recall", "future_pair_f1")}
-    sr = total("events_tp_strict") / max(total("events_true"), 1)
     return {
         "scenes": len(stats),
         "detection_precision": p, "detection_recall": r, **per_cat,
