@@ -69,3 +69,25 @@ def test_gross_cut_speed_errors_are_counted_apart():
     state["velocity"][1, 1] += 2.0               # a wrong motion
     s = summarise([scene_stats(truth, replace(truth, cut_state=state), Config.load()["labels"])])
     assert s["cut_speed_gross_rate"] == 1 / 6 and s["cut_speed_err_median"] == 0.0
+
+
+def test_cut_attribution_puts_the_truths_parts_into_the_estimate():
+    """An estimate whose cut state is the truth's but for the velocities (all read as parked, which predicts a
+    collision that does not come): putting the true velocities in gives what putting the whole true state in
+    gives, which is what the truth's own cut state predicts; the other parts leave its future as the estimate's
+    own."""
+    from dynclevr.perception.evaluate import ATTRIBUTION, attribution_markdown, cut_attribution
+    from dynclevr.physics import PhysicsParams
+
+    cfg = Config.load()
+    truth = known_scene()
+    cut = truth.observed_frames - 1
+    state = {k: np.array(v, copy=True) for k, v in truth.state_at(cut).items()}
+    state["velocity"][:] = 0.0                   # every body read as parked
+    rows = cut_attribution(truth, replace(truth, cut_state=state), cfg["labels"], PhysicsParams.from_config(cfg))
+    clean = cut_attribution(truth, truth, cfg["labels"], PhysicsParams.from_config(cfg))
+    assert set(rows) == {name for name, _ in ATTRIBUTION}
+    assert len(set(clean.values())) == 1
+    assert rows["velocity from the truth"] == rows["all of the state from the truth"] == clean["the estimate"]
+    assert rows["position from the truth"] == rows["the estimate"] != clean["the estimate"]
+    assert attribution_markdown([rows, clean]).count("\n") == len(ATTRIBUTION) + 2

@@ -19,11 +19,14 @@ def register(app: typer.Typer) -> None:
                     config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt):
         """Detection, identity, position, dynamics, collision and predicted-future metrics of parsed/ and future/
         (and parsed-noprior/, parsed-particle/, parsed-refine/: the detection head with render-and-compare) against
-        sim/; runs simulate, render, parse-scene and simulate-future first where they are not cached. Writes
-        <split>/parser_eval.md and the sub-type confusion PNG."""
+        sim/; runs simulate, render, parse-scene and simulate-future first where they are not cached. Then, for
+        the first model, the predicted future re-simulated with parts of the cut state from the truth (which part
+        carries the prediction's error). Writes <split>/parser_eval.md and the sub-type confusion PNG."""
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
-        from dynclevr.perception.evaluate import confusion_png, markdown, scene_stats, summarise
+        from dynclevr.perception.evaluate import (attribution_markdown, confusion_png, cut_attribution, markdown,
+                                                  scene_stats, summarise)
+        from dynclevr.physics import PhysicsParams
         from dynclevr.config import Config
         from dynclevr.pipeline import Runner, model_configs, parse_scenes
         from dynclevr.scene import Scene4D
@@ -41,21 +44,28 @@ def register(app: typer.Typer) -> None:
             indices = parse_scenes(scenes, r.split)
             for stage in ("simulate", "render", "parse-scene", "simulate-future"):
                 r.run(stage, indices)
-            stats = []
+            stats, attribution = [], []
+            first = name == variants[0][0]
             for i in indices:
                 scene = r.split.scene_names()[i]
                 est = attach(Scene4D.read(r.store.path("parse-scene", scene, ".mcap")),
                              r.store.path("simulate-future", scene, ".parquet"))
-                stats.append(scene_stats(Scene4D.read(r.store.path("simulate", scene, ".mcap")), est, cfg["labels"],
-                                         future=True))
+                truth = Scene4D.read(r.store.path("simulate", scene, ".mcap"))
+                stats.append(scene_stats(truth, est, cfg["labels"], future=True))
+                if first:
+                    attribution.append(cut_attribution(truth, est, cfg["labels"], PhysicsParams.from_config(cfg)))
             results[name] = summarise(stats)
-            if name == variants[0][0]:
+            if first:
                 confusion_png(stats, r.store.split_file("parser_confusion.png"))
+                where = attribution_markdown(attribution)
         table = markdown(results)
         out = r.store.split_file(REPORT)
         out.write_text(f"# Scene parser on split {r.split.name} ({len(indices)} scenes)\n\n"
                        f"`dynclevr eval-parser --split {r.split.name}"
-                       f"{f' --scenes {scenes}' if scenes else ''}`\n\n{table}")
+                       f"{f' --scenes {scenes}' if scenes else ''}`\n\n{table}\n"
+                       f"Where {variants[0][0]}'s predicted future collision pairs go wrong: the future re-simulated "
+                       f"with parts of the matched objects' cut state put in from the truth\n\n{where}")
         write_json_atomic(out.with_suffix(".json"), results)
         typer.echo(table)
+        typer.echo(where)
         typer.echo(f"written to {out}")

@@ -10,9 +10,13 @@ observed frames show: its horizontal speed error, the share of gross errors (ove
 as moving, a start speed picked wrong) and whether its engine is right. With `future`, the predicted future collisions
 (simulate-future's, from the cut state) are scored by pair among the matched objects that the observed frames show:
 a steadier yardstick for prediction than the few predictive questions, where a pair's yes flips with small changes.
+`cut_attribution` re-predicts that future with parts of the matched objects' cut state taken from the truth, one
+part at a time: how much of the prediction's error each part of the estimated state carries.
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 from scipy.optimize import linear_sum_assignment
@@ -20,7 +24,7 @@ from scipy.optimize import linear_sum_assignment
 from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
 from dynclevr.perception.detector_data import yaw_of
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
-from dynclevr.scene import Scene4D
+from dynclevr.scene import CUT_FIELDS, Scene4D
 
 MATCH_RADIUS = 1.5      # metres
 DUPLICATE_RADIUS = 1.5  # metres: an unmatched estimate this close to a matched true object is a duplicate of it
@@ -29,6 +33,12 @@ MIN_VISIBLE = 5         # frames a true object must be in view to count as one t
 EVENT_TOLERANCE = 6     # frames between an estimated and a true collision of the same pair
 STRICT_EVENT_TOLERANCE = 3   # ... and issue 11's stricter bar
 CUT_GROSS = 1.5         # m/s: a cut speed this far off is a wrong motion, not noise (the line fit's is ~0.6 at worst)
+# the cut state's parts that cut_attribution takes from the truth, one at a time, then all together
+ATTRIBUTION = (("the estimate", ()), ("velocity from the truth", ("velocity",)),
+               ("position from the truth", ("position",)),
+               ("heading and spin from the truth", ("orientation", "angular_velocity")),
+               ("engine and floating from the truth", ("engine", "floating")),
+               ("all of the state from the truth", CUT_FIELDS))
 
 
 def match(truth: Scene4D, est: Scene4D) -> list[tuple[int, int]]:
@@ -106,13 +116,60 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
         s[key] = tp
     s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)))
     if future:
-        seen = {to_truth[est.objects[j].id] for _, j in pairs if est.visible[:cut + 1, j].any()}
+        to_truth, seen = _seen_pairs(truth, est, pairs)
         true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
-        est_pairs = {frozenset((to_truth[e.a], to_truth[e.b])) for e in future_events(est, merge)
-                     if e.a in to_truth and e.b in to_truth and {to_truth[e.a], to_truth[e.b]} <= seen}
+        est_pairs = _future_pairs(est, to_truth, seen, merge)
         s.update(future_tp=len(true_pairs & est_pairs), future_fp=len(est_pairs - true_pairs),
                  future_fn=len(true_pairs - est_pairs))
     return s
+
+
+def _seen_pairs(truth: Scene4D, est: Scene4D, pairs: list[tuple[int, int]]) -> tuple[dict, set]:
+    """Estimated ids renamed to the true ids they matched, and the true ids of those the observed frames show."""
+    to_truth = {est.objects[j].id: truth.objects[i].id for i, j in pairs}
+    cut = est.observed_frames - 1
+    return to_truth, {to_truth[est.objects[j].id] for _, j in pairs if est.visible[:cut + 1, j].any()}
+
+
+def _future_pairs(est: Scene4D, to_truth: dict, seen: set, merge: int) -> set:
+    return {frozenset((to_truth[e.a], to_truth[e.b])) for e in future_events(est, merge)
+            if e.a in to_truth and e.b in to_truth and {to_truth[e.a], to_truth[e.b]} <= seen}
+
+
+def cut_attribution(truth: Scene4D, est: Scene4D, labels_cfg: dict, params) -> dict[str, tuple[int, int, int]]:
+    """Per ATTRIBUTION row, the predicted future collision pairs' (true positives, false positives, false
+    negatives), scored as `scene_stats` scores them, when the future is simulated (simulate_future.predict_future,
+    physics.PhysicsParams `params`) from est's cut state with those parts of every matched object's state put in
+    from the truth. Missed and spurious objects stay as the estimate has them, so the last row is what perfect
+    states of the objects found would give."""
+    from dynclevr.stages.simulate_future import predict_future
+
+    merge = labels_cfg["collision_merge_frames"]
+    pairs = match(truth, est)
+    to_truth, seen = _seen_pairs(truth, est, pairs)
+    true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
+    cut = est.observed_frames - 1
+    out = {}
+    for name, fields in ATTRIBUTION:
+        state = {k: np.array(v, copy=True) for k, v in est.state_at(cut).items()}
+        for i, j in pairs:
+            for f in fields:
+                state[f][j] = truth.state_at(cut)[f][i]
+        scene = replace(est, cut_state=state)
+        scene.future_collisions = predict_future(scene, params)
+        est_pairs = _future_pairs(scene, to_truth, seen, merge)
+        out[name] = (len(true_pairs & est_pairs), len(est_pairs - true_pairs), len(true_pairs - est_pairs))
+    return out
+
+
+def attribution_markdown(rows: list[dict[str, tuple[int, int, int]]]) -> str:
+    """cut_attribution's counts over scenes as a table of precision, recall and F1."""
+    lines = ["| future simulated from the cut state with | precision | recall | F1 |", "|---|---|---|---|"]
+    for name, _ in ATTRIBUTION:
+        tp, fp, fn = (sum(r[name][k] for r in rows) for k in range(3))
+        lines.append(f"| {name} | {tp / max(tp + fp, 1):.3f} | {tp / max(tp + fn, 1):.3f} | "
+                     f"{2 * tp / max(2 * tp + fp + fn, 1):.3f} |")
+    return "\n".join(lines) + "\n"
 
 
 def summarise(stats: list[dict]) -> dict:

@@ -71,18 +71,24 @@ def initial_bodies(scene: Scene4D) -> tuple[list[Body], list[int]]:
     return bodies, ids
 
 
+def predict_future(scene: Scene4D, params: PhysicsParams) -> list[Collision]:
+    """The collisions after the observed frames, simulated from the state at the last of them of every object they
+    show."""
+    last = scene.observed_frames - 1
+    seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
+    if not seen:
+        return []
+    bodies = _bodies(scene, np.full(len(seen), last), seen)
+    run = simulate(bodies, params, scene.num_frames - last, record=False)
+    return [e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames]
+
+
 def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True
             ) -> tuple[list[Collision], dict[tuple[int, str], list[Collision]]]:
     """The future after the observed frames, and every counterfactual run's collisions. `replay`: objects follow
     their estimated trajectories until the intervention reaches them (perception/imagine.py); False: the paper's
     re-simulation of everything from the estimated initial state."""
-    last = scene.observed_frames - 1
-    seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
-    future: list[Collision] = []
-    if seen:
-        bodies = _bodies(scene, np.full(len(seen), last), seen)
-        run = simulate(bodies, params, scene.num_frames - last, record=False)
-        future = [e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames]
+    future = predict_future(scene, params)
     outcomes: dict[tuple[int, str], list[Collision]] = {}
     bodies, ids = initial_bodies(scene)
     if bodies:
