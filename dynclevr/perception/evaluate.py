@@ -100,7 +100,7 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
                 s["duplicates"] += 1
                 break
     # collision events: estimated pairs renamed to the true ids they matched
-    to_truth = {est.objects[j].id: truth.objects[i].id for i, j in pairs}
+    to_truth, seen = _to_truth_and_seen(truth, est, pairs)
     merge = labels_cfg["collision_merge_frames"]
     true_events = merge_events(truth.collisions, merge)
     est_events = [e for e in merge_events(est.collisions, merge) if e.a in to_truth and e.b in to_truth]
@@ -116,7 +116,6 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
         s[key] = tp
     s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)))
     if future:
-        to_truth, seen = _seen_pairs(truth, est, pairs)
         true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
         est_pairs = _future_pairs(est, to_truth, seen, merge)
         s.update(future_tp=len(true_pairs & est_pairs), future_fp=len(est_pairs - true_pairs),
@@ -124,7 +123,7 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
     return s
 
 
-def _seen_pairs(truth: Scene4D, est: Scene4D, pairs: list[tuple[int, int]]) -> tuple[dict, set]:
+def _to_truth_and_seen(truth: Scene4D, est: Scene4D, pairs: list[tuple[int, int]]) -> tuple[dict, set]:
     """Estimated ids renamed to the true ids they matched, and the true ids of those the observed frames show."""
     to_truth = {est.objects[j].id: truth.objects[i].id for i, j in pairs}
     cut = est.observed_frames - 1
@@ -146,7 +145,7 @@ def cut_attribution(truth: Scene4D, est: Scene4D, labels_cfg: dict, params) -> d
 
     merge = labels_cfg["collision_merge_frames"]
     pairs = match(truth, est)
-    to_truth, seen = _seen_pairs(truth, est, pairs)
+    to_truth, seen = _to_truth_and_seen(truth, est, pairs)
     true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
     cut = est.observed_frames - 1
     out = {}
