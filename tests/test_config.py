@@ -20,6 +20,16 @@ def test_user_split_and_override(tmp_path):
     assert cfg.split("mine").scene_names() == ["000000", "000001", "000002", "000003"]
 
 
+def test_the_shipped_realistic_config_renders_the_small_scenes_path_traced():
+    """configs/realistic.toml (the README's realistic row) merges cleanly: the same scenes, another renderer."""
+    from pathlib import Path
+
+    base, real = Config.load(), Config.load(Path(__file__).parent.parent / "configs" / "realistic.toml")
+    assert real["render"]["backend"] == "mitsuba" and base["render"]["backend"] == "tiny"
+    assert real.split("small") == base.split("small")       # same seed and count: the same scenes
+    assert real["scene"] == base["scene"] and real["physics"] == base["physics"]
+
+
 def test_scene_seeds_depend_on_split_seed_and_index():
     assert scene_seed(1, 0) != scene_seed(2, 0)
     assert scene_seed(1, 0) != scene_seed(1, 1)

@@ -62,7 +62,7 @@ def register(app: typer.Typer) -> None:
         out = r.store.split_file(REPORT)
         out.write_text(f"# Scene parser on split {r.split.name} ({len(indices)} scenes)\n\n"
                        f"`dynclevr eval-parser --split {r.split.name}"
-                       f"{f' --scenes {scenes}' if scenes else ''}`\n\n{table}\n"
+                       f"{f' --scenes {scenes}' if scenes else ''}{f' --config {config}' if config else ''}`\n\n{table}\n"
                        f"Where {variants[0][0]}'s predicted future collision pairs go wrong: the future re-simulated "
                        f"with parts of the matched objects' cut state put in from the truth\n\n{where}")
         write_json_atomic(out.with_suffix(".json"), results)
