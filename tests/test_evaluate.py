@@ -38,6 +38,7 @@ def test_the_cut_state_is_scored_for_the_objects_the_observed_frames_show():
     s = summarise([scene_stats(truth, est, Config.load()["labels"])])
     assert s["cut_speed_err_median"] == 1.0
     assert s["cut_engine_acc"] == 0.8
+    assert s["cut_engine_moving_acc"] == 0.5      # objects 2 and 4 (1 is struck at frame 20, 0 and 3 parked)
 
 
 def test_predicted_future_collisions_are_scored_by_pair_among_the_objects_seen_by_the_cut():
