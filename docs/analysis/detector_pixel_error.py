@@ -1,10 +1,13 @@
 """How far the detection head's centres are from the true projected centres, and how those errors behave over time.
 
     .venv/bin/python docs/analysis/detector_pixel_error.py --split full-val --videos 30
+    .venv/bin/python docs/analysis/detector_pixel_error.py --split full-val --videos 40 --view-bins 8 12 24
 
 For each true object in view in the observed frames (0-29) of the split's first videos, the nearest detection within
 12 px: its error in pixels per category, split into a per-track bias (the mean over the track's frames) and the
-frame-to-frame rest, and the rest's lag-1 autocorrelation. An analysis (it reads the truth), not part of the model.
+frame-to-frame rest, and the rest's lag-1 autocorrelation. `--view-bins`: whether the error is a bias of the view,
+which a table could take off: the mean error per estimated sub-type and bin of the head's relative yaw, fitted on
+the even videos' detections, subtracted from the odd videos'. An analysis (it reads the truth), not part of the model.
 """
 
 import argparse
@@ -22,11 +25,12 @@ ap = argparse.ArgumentParser()
 ap.add_argument("--split", default="full-val")
 ap.add_argument("--videos", type=int, default=30)
 ap.add_argument("--data-dir", default="data")
+ap.add_argument("--view-bins", type=int, nargs="*", default=[])
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split
 
 net = load_detector()
-errors, tracks = collections.defaultdict(list), []
+errors, tracks, views = collections.defaultdict(list), [], []
 for k in range(args.videos):
     name = f"{k:06d}"
     truth = Scene4D.read(root / "sim" / f"{name}.mcap")
@@ -41,6 +45,7 @@ for k in range(args.videos):
                 continue
             series.append((best.u - u, best.v - v))
             errors[o.category].append(series[-1])
+            views.append((k % 2, int(np.argmax(best.subtype_logp)), best.alpha % (2 * np.pi), *series[-1]))
         tracks.append(np.array(series))
 
 for c, e in sorted(errors.items()):
@@ -59,3 +64,16 @@ for x in long:
     if ok.sum() > 10:
         ac.append(np.corrcoef(d[:-1][ok], d[1:][ok])[0, 1])
 print(f"lag-1 autocorrelation of the frame-to-frame dv: median {np.nanmedian(ac):.2f} over {len(ac)} tracks")
+
+for bins in args.view_bins:
+    def key(r):
+        return r[1], int(r[2] / (2 * np.pi) * bins) % bins
+    cells = collections.defaultdict(list)
+    for r in views:
+        if r[0] == 0:
+            cells[key(r)].append(r[3:])
+    mean = {k: np.mean(v, 0) for k, v in cells.items() if len(v) >= 5}
+    before = np.array([r[3:] for r in views if r[0] == 1])
+    after = np.array([np.subtract(r[3:], mean.get(key(r), 0.0)) for r in views if r[0] == 1])
+    print(f"{bins} view bins: the odd videos' sd du {before[:, 0].std():.2f} -> {after[:, 0].std():.2f}, "
+          f"dv {before[:, 1].std():.2f} -> {after[:, 1].std():.2f} px")
