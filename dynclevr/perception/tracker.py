@@ -43,7 +43,7 @@ from dynclevr.perception import collisions, dynamics, particles
 from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
-from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place
+from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place, resting_height
 from dynclevr.perception.pose import Evidence, fit
 from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler
 from dynclevr.physics import Body, PhysicsParams, World, heading
@@ -125,6 +125,7 @@ class Track:
     yaw_var: float = 0.0                             # ... and the variance of its heading
     engine_decided: bool | None = None               # the prior's engine, once decided
     floating_decided: bool | None = None             # ... and an aeroplane's floating
+    vertical: dynamics.VerticalMotion | None = None  # ... from its vertical motion under the prior
     measured: list = field(default_factory=list)     # (frame, measured position) while the engine is undecided
     z: list = field(default_factory=list)            # the measured position per frame (NaN: no detection)
     surprises: int = 0                               # consecutive measurements far outside the prediction
@@ -513,7 +514,7 @@ class SceneParser:
                 fit = dynamics.QuadraticFit(k.measured, self.fps, 2 * p["min_fit_frames"])
                 k.engine_decided = dynamics.engine_on(vel, fit.acceleration, quats[-1], p)
                 if category == "aeroplane" and fit.ok:
-                    self._decide_floating(k, fit, t)
+                    self._decide_floating(k, t)
                 k.measured = []
             k.engine.append(bool(k.engine_decided) and k.segment == 0)
         else:
@@ -522,23 +523,27 @@ class SceneParser:
             acc = np.array([0.0, 0.0, 0.0 if k.floating_decided else -self.physics.gravity])
         k.floating.append(dynamics.floating(category, pos[-1, 2], size[2] / 2, acc, self.physics.gravity))
 
-    def _decide_floating(self, k: Track, fit: dynamics.QuadraticFit, t: int) -> None:
+    def _decide_floating(self, k: Track, t: int) -> None:
         """Floating, like the engine, is a hidden state the prior drives: until decided an aeroplane is predicted
         floating (held at its height), so the filter follows a fall only slowly and a falling plane reads as
-        floating at the start. Decided once from the measured heights' quadratic: falling when it accelerates
-        down by more than g/2; then the frames so far get the fit's vertical velocity and the prior falls."""
-        k.floating_decided = bool(fit.acceleration[2] > -self.physics.gravity / 2)
+        floating at the start. Decided once, by which of the prior's two vertical motions (held, or fallen from
+        rest at frame 0) explains the measured heights better (`dynamics.VerticalMotion`); a falling plane's frames
+        so far then get the fall's vertical velocity and the prior falls."""
+        k.vertical = dynamics.VerticalMotion(k.measured, self.fps, self.physics.gravity, resting_height(k.shape))
+        k.floating_decided = k.vertical.floating
         if k.floating_decided:
             return
         for j in range(len(k.vel)):
-            vz = float(fit.velocity(k.start + j)[2])
-            k.vel[j] = np.array([*k.vel[j][:2], vz])
-            k.fvels[j] = np.array([*k.fvels[j][:2], vz])
+            vz = k.vertical.vz(k.start + j)
+            if vz is not None:
+                k.vel[j] = np.array([*k.vel[j][:2], vz])
+                k.fvels[j] = np.array([*k.fvels[j][:2], vz])
         k.floating[:] = [False] * len(k.floating)
-        vz = float(fit.velocity(t)[2])
-        if k.cloud is not None:
-            k.cloud.shift_velocity(np.array([0.0, 0.0, vz - k.fvel[2]]))
-        k.fvel = np.array([*k.fvel[:2], vz])
+        vz = k.vertical.vz(t)
+        if vz is not None:
+            if k.cloud is not None:
+                k.cloud.shift_velocity(np.array([0.0, 0.0, vz - k.fvel[2]]))
+            k.fvel = np.array([*k.fvel[:2], vz])
 
     # ---- the estimate as a Scene4D -------------------------------------------------------------------------------
 
@@ -650,6 +655,7 @@ class SceneParser:
             if k.start + settle < self.observed or k.start >= self.observed:
                 vel[k.start:k.start + settle, i] = vel[k.start + settle, i]
             v0 = np.array([*k.vel[a][:2], 0.0])
+            self._vertical(k, vel[sl, i])
             if self.p["smooth_window"]:
                 if k.start <= cut < k.start + n:
                     causal_cut[i] = pos[cut, i].copy(), vel[cut, i].copy(), bool(eng[cut, i])
@@ -660,6 +666,7 @@ class SceneParser:
                         self._segment_motion(k, np.array(k.z[:m]), pos[k.start:cut + 1, i], vc, ec, cut=True)
                         causal_cut[i] = pos[cut, i].copy(), vc[-1], bool(ec[-1])
                 v0 = self._smooth(k, pos[sl, i], vel[sl, i], eng[sl, i], v0)
+                self._vertical(k, vel[sl, i])
             back = (np.arange(k.start) - k.start)[:, None] / self.fps
             pos[:k.start, i], quat[:k.start, i] = pos[k.start, i] + back * v0, quat[k.start, i]
             vel[:k.start, i] = v0
@@ -691,6 +698,17 @@ class SceneParser:
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=events, observed_frames=self.observed, cut_state=cut_state,
                        cut_collisions=cut_events)
+
+    @staticmethod
+    def _vertical(k: Track, vel: np.ndarray) -> None:
+        """An aeroplane's vertical velocities [n, 3] (in place) before its first impact: its vertical motion's
+        under the prior (0 floating, the fall's until it lands), not the drift of its measured heights."""
+        if k.vertical is None:
+            return
+        for j in range(min([b for b in k.breaks if b > 0] + [len(vel)])):
+            vz = k.vertical.vz(k.start + j)
+            if vz is not None:
+                vel[j, 2] = vz
 
     def _smooth(self, k: Track, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray, v0: np.ndarray) -> np.ndarray:
         """Replace the track's causal positions [n, 3] (in place) by non-causal fits to its measurements where a
