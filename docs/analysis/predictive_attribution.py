@@ -1,0 +1,107 @@
+"""Which parts of the cut state the predictive answers depend on: the split's predictive questions answered with
+their gold programs on the parse (parsed/ and future/ of `dynclevr run`), then with parts of every matched object's
+state at the last observed frame put in from the truth and the future re-simulated from there
+(simulate_future.predict_future). Missed and spurious objects stay as the parse has them.
+
+    .venv/bin/python docs/analysis/predictive_attribution.py --split full-val
+
+Also `--margin`: the parse's own future again, with pairs whose hulls come within these many metres counted as
+colliding (are the predictions' misses near misses?). An analysis (it reads the truth), not part of the model.
+"""
+
+import argparse
+import collections
+from dataclasses import replace
+from multiprocessing import Pool
+from pathlib import Path
+
+import numpy as np
+import pyarrow.parquet as pq
+
+from dynclevr import DynclevrError
+from dynclevr.config import Config
+from dynclevr.perception.evaluate import match
+from dynclevr.physics import ContactEvents, PhysicsParams, World
+from dynclevr.questions.programs import Executor
+from dynclevr.scene import Collision, Scene4D
+from dynclevr.stages.simulate_future import _bodies, _events, attach, predict_future
+
+PARTS = {"velocity": ("velocity",), "position": ("position",), "heading and spin": ("orientation", "angular_velocity"),
+         "engine and floating": ("engine", "floating"), "velocity, position": ("velocity", "position"),
+         "velocity, position, heading": ("velocity", "position", "orientation"),
+         "velocity, position, heading, spin": ("velocity", "position", "orientation", "angular_velocity"),
+         "all of it": ("position", "orientation", "velocity", "angular_velocity", "engine", "floating")}
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--split", default="full-val")
+ap.add_argument("--data-dir", default="data")
+ap.add_argument("--margin", type=float, nargs="*", default=[])
+args = ap.parse_args()
+root = Path(args.data_dir) / args.split
+cfg = Config.load()
+params = PhysicsParams.from_config(cfg)
+
+
+def near_misses(est: Scene4D, margin: float) -> list[Collision]:
+    """The parse's future with pairs whose hulls come within `margin` counted as colliding, at the first such frame."""
+    last = est.observed_frames - 1
+    ids = [o.id for o in est.objects if est.visible[: last + 1, est.index(o.id)].any()]
+    if not ids:
+        return []
+    near = {}
+    with World(_bodies(est, np.full(len(ids), last), ids), params) as w:
+        contacts = ContactEvents(params.merge_frames, w.masses, params.min_impact_speed)
+        for t in range(1, est.num_frames - last):
+            contacts.add(t, w.step_frame())
+            for (a, b), gap in w.gaps(margin).items():
+                near.setdefault((min(ids[a], ids[b]), max(ids[a], ids[b])), t + last)
+        hits = _events(contacts.done()[0], ids, offset=last)
+    return [e for e in hits if e.frame >= est.observed_frames] + [
+        Collision(f, a, b, (0.0, 0.0, 0.0), 0.0) for (a, b), f in near.items() if f >= est.observed_frames]
+
+
+def scene(job):
+    name, questions = job
+    truth = Scene4D.read(root / "sim" / f"{name}.mcap")
+    est = attach(Scene4D.read(root / "parsed" / f"{name}.mcap"), root / "future" / f"{name}.parquet")
+    cut = est.observed_frames - 1
+    pairs = match(truth, est)
+    variants = {"the parse": est}
+    for label, fields in PARTS.items():
+        state = {k: np.array(v, copy=True) for k, v in est.state_at(cut).items()}
+        for i, j in pairs:
+            for f in fields:
+                state[f][j] = truth.state_at(cut)[f][i]
+        variants[f"{label} from the truth"] = s = replace(est, cut_state=state)
+        s.future_collisions = predict_future(s, params)
+    for m in args.margin:
+        variants[f"the parse, hulls within {m} m collide"] = s = replace(est)
+        s.future_collisions = near_misses(est, m)
+    out = {}
+    for label, s in variants.items():
+        ex = Executor(s, cfg["labels"])
+        right = []
+        for q in questions:
+            try:
+                right.append(ex.run(q["program"]) == q["answer"])
+            except DynclevrError:
+                right.append(False)
+        out[label] = right
+    return out
+
+
+if __name__ == "__main__":
+    by_scene = collections.defaultdict(list)
+    for q in pq.read_table(root / "questions.parquet").to_pylist():
+        if q["type"] == "predictive":
+            by_scene[q["scene"]].append(q)
+    with Pool(2) as pool:
+        results = pool.map(scene, sorted(by_scene.items()))
+    total = collections.defaultdict(list)
+    for r in results:
+        for label, right in r.items():
+            total[label] += right
+    print(f"| {args.split}: predictive questions ({len(total['the parse'])}), gold programs | accuracy % |")
+    print("|---|---|")
+    for label, right in total.items():
+        print(f"| {label} | {100 * np.mean(right):.2f} |")
