@@ -19,29 +19,6 @@ from dynclevr.physics import Body, PhysicsParams, ground_height, simulate, yaw_q
 
 from conftest import onehot
 
-@pytest.mark.parametrize("falls", [True, False], ids=["falling", "floating"])
-def test_vertical_motion_tells_a_fall_from_a_drifting_floating_plane(falls):
-    """The head's heights of a floating plane drift smoothly by decimetres (its distance error moves the centre
-    along the camera ray): a free quadratic reads that drift as a fall, the prior's two motions (held, or fallen
-    from rest at frame 0) do not; a falling plane's start height and velocity come out of the fall."""
-    rng = np.random.default_rng(0)
-    frames = np.arange(2, 26)
-    t = frames / FPS
-    rest = resting_height("jet")
-    if falls:
-        z = np.maximum(2.6 - 0.5 * 10.0 * t ** 2, rest) + rng.normal(0, 0.05, len(t))
-    else:   # held at 2.3 m, measured 0.5 m low at first and rising towards it (full-test's airliners look like this)
-        z = 2.3 - 0.5 * np.exp(-t / 0.1) + rng.normal(0, 0.02, len(t))
-    samples = [(int(f), np.array([0.0, 0.0, h])) for f, h in zip(frames, z)]
-    vm = VerticalMotion(samples, FPS, 10.0, rest)
-    assert vm.floating is not falls
-    if falls:
-        assert abs(vm.z0 - 2.6) < 0.1
-        assert vm.vz(12) == pytest.approx(-2.0, abs=0.2) and vm.vz(119) is None   # landed by then
-    else:
-        assert vm.vz(50) == 0.0
-        assert QuadraticFit(samples, FPS, 16).acceleration[2] < -5.0    # what the free fit would have said
-
 
 CAMERA = Camera((8.0, -7.0, 3.2), (0.0, 0.0, 1.3), 35.0, 32.0, 320, 240)
 FPS, T = 60, 90
@@ -193,6 +170,30 @@ def test_a_falling_plane_is_not_floating_at_the_start_and_a_floating_one_is(fall
     start = cfg["labels"]["start_frame"]
     assert bool(labels.floating[start, 0]) is not falls
     assert bool(est.floating[start, 0]) is not falls
+
+
+@pytest.mark.parametrize("falls", [True, False], ids=["falling", "floating"])
+def test_vertical_motion_tells_a_fall_from_a_drifting_floating_plane(falls):
+    """The head's heights of a floating plane drift smoothly by decimetres (its distance error moves the centre
+    along the camera ray): a free quadratic reads that drift as a fall, the prior's two motions (held, or fallen
+    from rest at frame 0) do not; a falling plane's start height and velocity come out of the fall."""
+    rng = np.random.default_rng(0)
+    frames = np.arange(2, 26)
+    t = frames / FPS
+    rest = resting_height("jet")
+    if falls:
+        z = np.maximum(2.6 - 0.5 * 10.0 * t ** 2, rest) + rng.normal(0, 0.05, len(t))
+    else:   # held at 2.3 m, measured 0.5 m low at first and rising towards it (full-test's airliners look like this)
+        z = 2.3 - 0.5 * np.exp(-t / 0.1) + rng.normal(0, 0.02, len(t))
+    samples = [(int(f), np.array([0.0, 0.0, h])) for f, h in zip(frames, z)]
+    vm = VerticalMotion(samples, FPS, 10.0, rest)
+    assert vm.floating is not falls
+    if falls:
+        assert abs(vm.z0 - 2.6) < 0.1
+        assert vm.vz(12) == pytest.approx(-2.0, abs=0.2) and vm.vz(119) is None   # landed by then
+    else:
+        assert vm.vz(50) == 0.0
+        assert QuadraticFit(samples, FPS, 16).acceleration[2] < -5.0    # what the free fit would have said
 
 
 def test_a_head_on_collision_is_found_at_its_frame_and_a_near_miss_is_not():

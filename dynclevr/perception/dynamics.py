@@ -105,8 +105,8 @@ class VerticalMotion:
     under gravity to its resting height. Which one, and the start height z0, are fitted to measured heights.
 
     The head's heights drift smoothly by decimetres over a track (its distance error moves the placed centre along
-    the camera ray), so a free quadratic reads a floating plane's drift as a fall about one time in five (full-test:
-    airliners "falling" at -6 m/s^2); the two physical motions differ by half a metre within 20 frames of a fall."""
+    the camera ray), so a free quadratic read 5 of full-test's 51 floating planes as falling (airliners at -5.5 to
+    -6.2 m/s^2); the two physical motions differ by half a metre within 20 frames of a fall."""
 
     def __init__(self, samples: list[tuple[int, np.ndarray]], fps: int, gravity: float, rest: float):
         """`samples`: (frame, measured position); `rest`: the sub-type's resting height."""

@@ -138,6 +138,10 @@ class Track:
     moving: int = 0                                  # frames since its reported velocity was last 0
     end: int | None = None
 
+    def first_break(self, n: int) -> int:
+        """The frame (from start) of its first impact or change of motion; n: none in its n frames."""
+        return min([b for b in self.breaks if b > 0] + [n])
+
     @property
     def mesh(self) -> int:
         return int(np.argmax(self.subtype_logp))
@@ -705,7 +709,7 @@ class SceneParser:
         under the prior (0 floating, the fall's until it lands), not the drift of its measured heights."""
         if k.vertical is None:
             return
-        for j in range(min([b for b in k.breaks if b > 0] + [len(vel)])):
+        for j in range(k.first_break(len(vel))):
             vz = k.vertical.vz(k.start + j)
             if vz is not None:
                 vel[j, 2] = vz
@@ -732,7 +736,7 @@ class SceneParser:
         if p["smooth_positions"]:
             pos[ok] = spos[ok]
         # The engine holds until the first impact (the generator's rule): its evidence is the whole stretch before it.
-        first = min([b for b in k.breaks if b > 0] + [len(z)])
+        first = k.first_break(len(z))
         samples = [(f, z[f]) for f in range(first) if np.isfinite(z[f]).all()]
         fit = dynamics.QuadraticFit(samples, self.fps, 2 * p["min_fit_frames"], robust=True)
         if fit.ok:
