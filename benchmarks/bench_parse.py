@@ -14,7 +14,7 @@ def parse(video_path: str, threads: int, filter_kind: str = "single") -> int:
 
     from dynclevr.config import Config
     from dynclevr.perception.collisions import CollisionModel
-    from dynclevr.perception.object_head_train import load_two_stage
+    from dynclevr.perception.detector_train import load_detector
     from dynclevr.perception.model import ParserModel
     from dynclevr.perception.tracker import parse_video
     from dynclevr.video import Video
@@ -23,7 +23,7 @@ def parse(video_path: str, threads: int, filter_kind: str = "single") -> int:
     video = Video.read(Path(video_path))
     cfg = Config.load()
     cfg.data["parser"]["filter"] = filter_kind
-    scene = parse_video(video.frames(), video.camera, ParserModel.load(), load_two_stage(cfg), cfg, "bench",
+    scene = parse_video(video.frames(), video.camera, ParserModel.load(), load_detector(), cfg, "bench",
                         CollisionModel.load())
     return len(scene.objects)
 

@@ -76,16 +76,14 @@ class Stage:
 
 def model_variant(cfg: Config) -> str:
     """'' for NS-4DPhysics, 'noprior' for the paper's ablation without the physics prior, 'particle' with the
-    particle filter, '...refine' with the render-and-compare refinement where it is not the default, '...headonly'
-    with the detection head's values alone (no object head); 'perframe' for the per-frame 3D baseline
-    (parser.filter = "none": no prior, no temporal filter; baselines/perframe.py)."""
+    particle filter, '...refine' with the render-and-compare refinement where it is not the default; 'perframe' for
+    the per-frame 3D baseline (parser.filter = "none": no prior, no temporal filter; baselines/perframe.py)."""
     p = cfg.data.get("parser", {})
-    head_only = ["headonly"] if not p.get("object_head", True) else []
     if p.get("filter") == "none":
-        return "-".join(["perframe"] + head_only)
+        return "perframe"
     prior = p.get("physics_prior", True)
     parts = (([] if prior else ["noprior"]) + (["particle"] if prior and p.get("filter") == "particle" else [])
-             + (["refine"] if p.get("refine", False) else []) + head_only)
+             + (["refine"] if p.get("refine", False) else []))
     return "-".join(parts)
 
 

@@ -12,7 +12,7 @@ from dynclevr.camera import Camera
 from dynclevr.config import Config
 from dynclevr.perception.features import FeatureNet
 from dynclevr.perception.collisions import CollisionModel
-from dynclevr.perception.object_head_train import load_two_stage
+from dynclevr.perception.detector_train import load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel
 from dynclevr.perception.neural_mesh import NeuralMeshes
 from dynclevr.perception.pose import Evidence, fit, score
@@ -160,7 +160,7 @@ def test_estimates_up_to_frame_30_ignore_later_frames(tiny):
     data, cfg, r = tiny
     video = Video.read(r.store.path("render", "000000", ".mcap"))
     frames = video.frames()
-    model, detector = ParserModel.load(DEFAULT_DIR), load_two_stage(cfg)
+    model, detector = ParserModel.load(DEFAULT_DIR), load_detector()
     est = parse_video(frames, video.camera, model, detector, cfg, "000000", CollisionModel.load())
     altered = frames.copy()
     altered[31:] = altered[31:][::-1] // 2 + 60          # later frames: another story entirely

@@ -41,7 +41,7 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception import dynamics
-from dynclevr.perception.detector import Detection
+from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place, resting_height
 from dynclevr.perception.render import euler_to_quat
 from dynclevr.physics import PhysicsParams, heading
@@ -59,7 +59,7 @@ def enabled(cfg: Config) -> bool:
 # The [parser] settings the per-frame model reads (the rest are the filter's): its cache key holds these only, so
 # that tuning the tracker does not rerun this baseline.
 PARSER_KEYS = ("detect_threshold", "max_detections", "new_track_score", "spawn_pixels", "merge_radius",
-               "appearance_weight", "static_speed", "engine_threshold", "object_head", "object_head_passes")
+               "appearance_weight", "static_speed", "engine_threshold")
 
 
 def parse_params(cfg: Config) -> dict:
@@ -175,7 +175,8 @@ def parse(frames: np.ndarray, camera: Camera, detector, cfg: Config, name: str,
     physics = PhysicsParams.from_config(cfg)
     fps, observed = int(cfg["video"]["fps"]), int(cfg["video"]["observed_frames"])
     if detections is None:
-        detections = detector(frames, camera.fx, parser["detect_threshold"], parser["max_detections"])
+        maps = run(detector, frames)
+        detections = [decode(m, parser["detect_threshold"], parser["max_detections"]) for m in maps]
     T = len(detections)
     meas = [frame_measurements(d, camera, parser["spawn_pixels"], parser["merge_radius"]) for d in detections]
     objects = sorted(associate(meas, p, parser, observed), key=lambda o: (o.start, min(o.dets)))

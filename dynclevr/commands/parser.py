@@ -18,8 +18,7 @@ def register(app: typer.Typer) -> None:
     def eval_parser(split: Optional[str] = SplitOpt, scenes: Optional[str] = ScenesOpt,
                     config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt):
         """Detection, identity, position, dynamics, collision and predicted-future metrics of parsed/ and future/
-        (and parsed-noprior/, parsed-particle/, parsed-refine/: with render-and-compare, parsed-headonly/: the
-        detection head's values without the object head's second look) against
+        (and parsed-noprior/, parsed-particle/, parsed-refine/: the detection head with render-and-compare) against
         sim/; runs simulate, render, parse-scene and simulate-future first where they are not cached. Then, for
         the first model, the predicted future re-simulated with parts of the cut state from the truth (which part
         carries the prediction's error). Writes <split>/parser_eval.md and the sub-type confusion PNG."""
@@ -40,10 +39,6 @@ def register(app: typer.Typer) -> None:
             refine = copy.deepcopy(base.data)
             refine["parser"]["refine"] = True
             variants.append(("with render-and-compare", Config(refine)))
-        if base["parser"]["object_head"]:   # what the object head's second look adds
-            alone = copy.deepcopy(base.data)
-            alone["parser"]["object_head"] = False
-            variants.append(("the detection head alone (no object head)", Config(alone)))
         for name, cfg in variants:
             r = Runner(cfg, cfg.split(split), data_dir, workers, echo=typer.echo)
             indices = parse_scenes(scenes, r.split)

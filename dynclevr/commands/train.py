@@ -1,4 +1,4 @@
-"""`dynclevr train parser | detector | object-head | collisions | qparser | cnnlstm`: reproduce the shipped weights from the train split."""
+"""`dynclevr train parser | detector | collisions | qparser | cnnlstm`: reproduce the shipped weights from the train split."""
 
 from __future__ import annotations
 
@@ -46,21 +46,6 @@ def register(app: typer.Typer) -> None:
             generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
             return
         train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, echo=typer.echo)
-
-    @train.command("object-head")
-    def object_head(config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt,
-                    out: Path = typer.Option(WEIGHTS_DIR / "object_head", "--out"),
-                    resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint in --out"),
-                    steps: Optional[int] = typer.Option(None, "--steps",
-                                                        help="total steps (default parser.object_head_steps)"),
-                    minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long")):
-        """Object head: a second look at every detection through a window scaled to its distance (resumable;
-        trains on the detection head's shards)."""
-        from dynclevr.config import Config
-        from dynclevr.perception.object_head_train import train_object_head
-
-        cfg = Config.load(config)
-        train_object_head(cfg, data_dir, out, workers, resume, steps, minutes, echo=typer.echo)
 
     @train.command("collisions")
     def collisions(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

@@ -15,6 +15,7 @@ import json
 import platform
 import time
 from concurrent.futures import ProcessPoolExecutor
+from functools import lru_cache
 from multiprocessing import get_context
 from pathlib import Path
 
@@ -34,13 +35,19 @@ WEIGHT_DECAY = 1e-2
 EPOCHS = 300
 
 
+@lru_cache(maxsize=1)
+def _models():
+    from dynclevr.stages.parse_scene import _model
+
+    return _model()
 
 
 def _rows_key(cfg: Config) -> str:
+    from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
+    from dynclevr.perception.detector_train import detector_digest
     from dynclevr.perception.model import DEFAULT_DIR, manifest_digest
-    from dynclevr.perception.object_head_train import two_stage_digest
 
-    text = "|".join([json.dumps(cfg.digest("parser", "physics", "video", "labels"), sort_keys=True), two_stage_digest(cfg),
+    text = "|".join([json.dumps(cfg.digest("parser", "physics", "video", "labels"), sort_keys=True), detector_digest(DETECTOR_DIR),
                      manifest_digest(DEFAULT_DIR), ",".join(collisions.FEATURES)])
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
@@ -63,9 +70,7 @@ def _scene_rows(job: tuple) -> Path:
     cfg = Config(cfg_data)
     store = Store(Path(store_root), split_name)
     video = Video.read(store.path("render", scene, ".mcap"))
-    from dynclevr.stages.parse_scene import _detector, _model
-
-    parser = SceneParser(_model(), _detector(cfg), video.camera, cfg)
+    parser = SceneParser(*_models(), video.camera, cfg)
     est = parser.parse(video.frames(), scene)
     truth = Scene4D.read(store.path("simulate", scene, ".mcap"))
     to_est = {truth.objects[i].id: est.objects[j].id for i, j in match(truth, est)}

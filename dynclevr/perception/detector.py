@@ -77,16 +77,14 @@ class DetectNet(nn.Module):
             self.head[-1].bias[CHANNELS["logdist"]] = float(np.log(11.0))
             self.head[-1].bias[CHANNELS["height"]] = 0.8
 
-    def forward(self, images: torch.Tensor, hidden: bool = False):
-        """images [B, 3, H, W] in [0, 1] (H, W multiples of 16) -> maps [B, OUT, H/4, W/4]; with `hidden`, also the
-        features the output layer reads [B, 3 * width / 2, H/4, W/4] (what the object head looks at again)."""
+    def forward(self, images: torch.Tensor) -> torch.Tensor:
+        """images [B, 3, H, W] in [0, 1] (H, W multiples of 16) -> maps [B, OUT, H/4, W/4]."""
         x4 = self.s4(self.s2((images - MEAN) / STD))
         x8 = self.s8(x4)
         x16 = self.s16(x8)
         y8 = self.up8(torch.cat([F.interpolate(x16, size=x8.shape[-2:], mode="bilinear", align_corners=False), x8], 1))
         y4 = self.up4(torch.cat([F.interpolate(y8, size=x4.shape[-2:], mode="bilinear", align_corners=False), x4], 1))
-        h = self.head[0](y4)
-        return (self.head[1](h), h) if hidden else self.head[1](h)
+        return self.head(y4)
 
 
 def to_tensor(frames: np.ndarray) -> torch.Tensor:
@@ -95,11 +93,10 @@ def to_tensor(frames: np.ndarray) -> torch.Tensor:
 
 
 @torch.no_grad()
-def run(net: DetectNet, frames: np.ndarray, batch: int = 16, hidden: bool = False):
-    """The head's maps for a whole video [T, OUT, H/4, W/4] (with `hidden`: and its features, DetectNet.forward)."""
+def run(net: DetectNet, frames: np.ndarray, batch: int = 16) -> torch.Tensor:
+    """The head's maps for a whole video [T, OUT, H/4, W/4]."""
     net.eval()
-    outs = [net(to_tensor(frames[i:i + batch]), hidden) for i in range(0, len(frames), batch)]
-    return (torch.cat([o[0] for o in outs]), torch.cat([o[1] for o in outs])) if hidden else torch.cat(outs)
+    return torch.cat([net(to_tensor(frames[i:i + batch])) for i in range(0, len(frames), batch)])
 
 
 @dataclass

@@ -208,22 +208,10 @@ def losses(maps: torch.Tensor, tg: list[dict]) -> dict:
 
 # ---- held-out metrics ----------------------------------------------------------------------------------------------
 
-def match(dets: list, lab: np.ndarray) -> list[tuple]:
-    """(detection, label row) pairs: each detection, most confident first, takes the nearest unmatched true centre
-    within max(8 px, half the object's projected size)."""
-    used, pairs = set(), []
-    for d in dets:
-        dist = np.hypot(lab[:, COL["u"]] - d.u, lab[:, COL["v"]] - d.v) if len(lab) else np.zeros(0)
-        ok = [j for j in np.argsort(dist) if j not in used and dist[j] <= max(8.0, lab[j, COL["radius"]] / 2)]
-        if ok:
-            used.add(ok[0])
-            pairs.append((d, lab[ok[0]]))
-    return pairs
-
-
 @torch.no_grad()
 def evaluate(net: DetectNet, frames: Frames, threshold: float = 0.3, limit: int | None = None) -> dict:
-    """Per-frame detection against the labels (`match`)."""
+    """Per-frame detection against the labels: a detection matches the nearest unmatched true centre within
+    max(8 px, half the object's projected size)."""
     n = len(frames) if limit is None else min(limit, len(frames))
     tp = fp = fn = 0
     sub, col, flip, dyaw, ddist, dh = [], [], [], [], [], []
@@ -233,16 +221,24 @@ def evaluate(net: DetectNet, frames: Frames, threshold: float = 0.3, limit: int 
         for (rgb, lab), m in zip(batch, maps):
             lab = lab[lab[:, COL["pixels"]] >= MIN_PIXELS]
             dets = decode(m, threshold)
-            pairs = match(dets, lab)
-            tp, fp, fn = tp + len(pairs), fp + len(dets) - len(pairs), fn + len(lab) - len(pairs)
-            for d, o in pairs:
-                sub.append(int(np.argmax(d.subtype_logp)) == int(o[COL["subtype"]]))
-                col.append(int(np.argmax(d.color_logp)) == int(o[COL["color"]]))
-                e = abs((d.alpha - o[COL["alpha"]] + math.pi) % (2 * math.pi) - math.pi)
+            used = set()
+            for d in dets:
+                dist = np.hypot(lab[:, COL["u"]] - d.u, lab[:, COL["v"]] - d.v) if len(lab) else np.zeros(0)
+                ok = [j for j in np.argsort(dist) if j not in used and dist[j] <= max(8.0, lab[j, COL["radius"]] / 2)]
+                if not ok:
+                    fp += 1
+                    continue
+                j = ok[0]
+                used.add(j)
+                tp += 1
+                sub.append(int(np.argmax(d.subtype_logp)) == int(lab[j, COL["subtype"]]))
+                col.append(int(np.argmax(d.color_logp)) == int(lab[j, COL["color"]]))
+                e = abs((d.alpha - lab[j, COL["alpha"]] + math.pi) % (2 * math.pi) - math.pi)
                 dyaw.append(math.degrees(e))
                 flip.append(e > math.radians(135))
-                ddist.append(d.dist - math.exp(o[COL["logdist"]]))
-                dh.append(d.height - o[COL["height"]])
+                ddist.append(d.dist - math.exp(lab[j, COL["logdist"]]))
+                dh.append(d.height - lab[j, COL["height"]])
+            fn += len(lab) - len(used)
     return {"frames": n, "precision": tp / max(tp + fp, 1), "recall": tp / max(tp + fn, 1),
             "subtype_acc": float(np.mean(sub)) if sub else float("nan"),
             "color_acc": float(np.mean(col)) if col else float("nan"),

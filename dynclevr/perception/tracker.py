@@ -40,7 +40,7 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception import collisions, dynamics, particles
-from dynclevr.perception.detector import Detection
+from dynclevr.perception.detector import Detection, decode, run
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place, resting_height
@@ -174,7 +174,8 @@ class SceneParser:
         self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
     def detect(self, frames: np.ndarray) -> list[list[Detection]]:
-        return self.detector(frames, self.camera.fx, self.p["detect_threshold"], self.p["max_detections"])
+        maps = run(self.detector, frames)
+        return [decode(m, self.p["detect_threshold"], self.p["max_detections"]) for m in maps]
 
     def parse(self, frames: np.ndarray, name: str, detections: list[list[Detection]] | None = None) -> Scene4D:
         """`detections`: per frame, in place of the head's (tests give synthetic ones)."""

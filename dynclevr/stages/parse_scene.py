@@ -18,7 +18,8 @@ from functools import lru_cache
 from dynclevr.baselines import perframe
 from dynclevr.perception.collisions import DEFAULT_DIR as COLLISION_DIR
 from dynclevr.perception.collisions import CollisionModel, collision_digest
-from dynclevr.perception.object_head_train import load_two_stage, two_stage_digest
+from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
+from dynclevr.perception.detector_train import detector_digest, load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel, manifest_digest
 from dynclevr.perception.tracker import parse_video
 from dynclevr.physics import catalogue_digest
@@ -38,7 +39,7 @@ VERSION = 19  # 5: collisions from the learned classifier (weights/collision/); 
 
 @lru_cache(maxsize=1)
 def _model():
-    return ParserModel.load(DEFAULT_DIR)
+    return ParserModel.load(DEFAULT_DIR), load_detector(DETECTOR_DIR)
 
 
 @lru_cache(maxsize=1)
@@ -52,22 +53,15 @@ def run_scene(job: SceneJob) -> None:
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
     if perframe.enabled(job.cfg):   # the per-frame 3D baseline (`--per-frame`): the detection head alone
-        scene = perframe.parse(video.frames(), video.camera, _detector(job.cfg), job.cfg, job.scene)
+        scene = perframe.parse(video.frames(), video.camera, _detector(), job.cfg, job.scene)
     else:
-        scene = parse_video(video.frames(), video.camera, _model(), _detector(job.cfg), job.cfg, job.scene,
-                            _collision_model())
+        scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene, _collision_model())
     scene.write(job.outputs[0], kind="estimate")
 
 
-_DETECTORS: dict = {}
-
-
-def _detector(cfg):
-    """The two heads as the config asks (one process runs one config, or the per-frame variant beside it)."""
-    key = (cfg["parser"]["object_head"], cfg["parser"]["object_head_passes"])
-    if key not in _DETECTORS:
-        _DETECTORS[key] = load_two_stage(cfg)
-    return _DETECTORS[key]
+@lru_cache(maxsize=1)
+def _detector():
+    return load_detector(DETECTOR_DIR)
 
 
 def _params(cfg) -> dict:
@@ -84,6 +78,6 @@ STAGE = Stage(
     outputs=(".mcap",),
     run_scene=run_scene,
     # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.
-    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "detector": two_stage_digest(cfg),
+    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "detector": detector_digest(DETECTOR_DIR),
                                      "collision": collision_digest(COLLISION_DIR), "assets": catalogue_digest(cfg)},
 )
