@@ -175,7 +175,7 @@ def test_assets_command_prints_the_table(tmp_path):
 
 
 def test_mesh_vertices_lie_on_a_micrometre_grid_so_every_cpu_builds_the_same_bytes():
-    """numpy's SIMD sin/cos differ in the last bit between CPUs; the collision shapes are checked against the mesh's
+    """numpy's SIMD math can differ in the last bit between CPUs; the collision shapes are checked against the mesh's
     bytes, so the builder rounds (and a -0.0 would still differ from 0.0)."""
     for name in SUBTYPES:
         for part in get_asset(name).parts.values():
