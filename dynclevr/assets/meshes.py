@@ -225,7 +225,7 @@ class _Parts:
         lo, hi = allv.min(0), allv.max(0)
         scale = np.asarray(size, float) / (hi - lo)
         centre = (lo + hi) / 2
-        # Micrometre vertices: numpy's SIMD math can differ in the last bit between CPUs (seen: AVX-512 or not), and the
+        # Micrometre vertices: numpy's SIMD math can differ in the last bit between CPUs (AVX-512 or not), and the
         # collision shapes are checked against the mesh's bytes; rounding (and + 0.0 for -0.0) makes them agree.
         return {p: trimesh.Trimesh(np.round((v - centre) * scale, 6) + 0.0, f, process=False)
                 for p, (v, f) in merged.items()}
