@@ -134,16 +134,18 @@ def test_a_grown_head_computes_what_it_grew_from_and_then_learns_in_its_new_bloc
             if isinstance(m, torch.nn.BatchNorm2d):
                 m.running_mean.uniform_(-0.5, 0.5)
                 m.running_var.uniform_(0.5, 2.0)
-    big, step = _grown(_checkpoint(tmp_path, small.eval()), 16, 2)
+    big, step = _grown(_checkpoint(tmp_path, small.eval()), 16, 2, 1)
     img = torch.rand(2, 3, 96, 128)
-    assert step == 100 and big.blocks == 2
+    assert step == 100 and big.blocks == 2 and big.fine_blocks == 1
     assert torch.equal(small.eval()(img), big.eval()(img))
     big.train()
     big(img).square().mean().backward()
     assert big.s16[-1].b[1].weight.grad.abs().sum() > 0      # the zero scale is where learning starts
+    assert big.fine[0].b[1].weight.grad.abs().sum() > 0
     # the grown head saves and loads as what it is
     _checkpoint(tmp_path, big, step)
-    assert load_detector(tmp_path).blocks == 2
+    loaded = load_detector(tmp_path)
+    assert (loaded.blocks, loaded.fine_blocks) == (2, 1)
 
 
 def test_growing_a_head_into_another_width_is_one_clear_line(tmp_path):
@@ -154,7 +156,10 @@ def test_growing_a_head_into_another_width_is_one_clear_line(tmp_path):
 
     path = _checkpoint(tmp_path, DetectNet(16))
     with pytest.raises(ConfigError, match="detector_width = 16"):
-        _grown(path, 32, 2)
+        _grown(path, 32, 2, 0)
+    _checkpoint(tmp_path, DetectNet(16, fine_blocks=1))
+    with pytest.raises(ConfigError, match="detector_fine_blocks at least 1"):
+        _grown(path, 16, 0, 0)
 
 
 def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path):
@@ -163,9 +168,10 @@ def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import train_detector
 
-    (tmp_path / "user.toml").write_text("[parser]\ndetector_blocks = -1\n")
-    with pytest.raises(ConfigError, match="'parser.detector_blocks' = -1 must be a non-negative integer"):
-        train_detector(Config.load(tmp_path / "user.toml"), tmp_path / "data", tmp_path / "out")
+    for key in ("detector_blocks", "detector_fine_blocks"):
+        (tmp_path / "user.toml").write_text(f"[parser]\n{key} = -1\n")
+        with pytest.raises(ConfigError, match=f"'parser.{key}' = -1 must be a non-negative integer"):
+            train_detector(Config.load(tmp_path / "user.toml"), tmp_path / "data", tmp_path / "out")
     with pytest.raises(ConfigError, match="--resume and --grow-from exclude each other"):
         train_detector(Config.load(), tmp_path / "data", tmp_path / "out", resume=True, grow_from=tmp_path)
     assert not (tmp_path / "data").exists()

@@ -35,7 +35,8 @@ def register(app: typer.Typer) -> None:
                  minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long"),
                  grow_from: Optional[Path] = typer.Option(
                      None, "--grow-from", help="start from the trained head in this directory, deepened to "
-                                               "parser.detector_blocks (it computes the same at first)"),
+                                               "parser.detector_blocks and detector_fine_blocks (it computes the same "
+                                               "at first)"),
                  data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop")):
         """Detection head: centre heatmap, sub-type, colour, yaw, distance and height per cell (resumable)."""
         from dynclevr.config import Config

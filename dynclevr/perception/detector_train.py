@@ -11,8 +11,8 @@ Augmentation keeps the geometry honest: horizontal flips (u -> W - u, alpha -> -
 saturation jitter (not hue: the colour is a target), blur, and JPEG re-coding at a random quality.
 Checkpoints every `checkpoint_minutes`: weights/detector/detector.pt (model, optimiser, step) with manifest.json
 (data, steps, wall time, loss curve, held-out metrics) and curve.png. `--resume` continues from there.
-`--grow-from DIR` starts a deeper head (`parser.detector_blocks` residual blocks at strides 8 and 16) from the
-trained one in DIR: it computes the same at first, so capacity grows on CPU without training from scratch.
+`--grow-from DIR` starts a deeper head (`parser.detector_blocks` residual blocks at strides 8 and 16,
+`parser.detector_fine_blocks` at stride 4) from the trained one in DIR: it computes the same at first, so capacity grows on CPU without training from scratch.
 """
 
 from __future__ import annotations
@@ -55,24 +55,26 @@ def load_detector(weights_dir: Path = DEFAULT_DIR) -> DetectNet:
     if m.get("weights_sha256") != file_digest(path):
         raise DetectorWeightsError(f"{path} does not match its manifest: rerun `dynclevr train detector --resume`")
     s = torch.load(path, weights_only=True)
-    net = DetectNet(s["width"], s.get("blocks", 0))
+    net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
     net.load_state_dict(s["net"])
     net.eval()
     return net
 
 
-def _grown(source: Path, width: int, blocks: int) -> tuple[DetectNet, int]:
-    """A head of `blocks` residual blocks per coarse stage that computes what the trained head in `source` does (its
-    weights, the new blocks' residuals at zero), and the step it was trained to."""
+def _grown(source: Path, width: int, blocks: int, fine_blocks: int) -> tuple[DetectNet, int]:
+    """A head of `blocks` residual blocks per coarse stage and `fine_blocks` at stride 4 that computes what the trained
+    head in `source` does (its weights, the new blocks' residuals at zero), and the step it was trained to."""
     path = Path(source) / WEIGHTS_FILE
     if not path.exists():
         raise DetectorWeightsError(f"nothing to grow from in {source}: --grow-from needs a trained head's directory")
     s = torch.load(path, weights_only=True)
-    if s["width"] != width or s.get("blocks", 0) > blocks:
-        raise ConfigError(f"cannot grow the head in {source} (width {s['width']}, {s.get('blocks', 0)} blocks) into "
-                          f"width {width}, {blocks} blocks: set parser.detector_width = {s['width']} and "
-                          f"parser.detector_blocks at least {s.get('blocks', 0)}")
-    net = DetectNet(width, blocks)
+    had = (s.get("blocks", 0), s.get("fine_blocks", 0))
+    if s["width"] != width or had[0] > blocks or had[1] > fine_blocks:
+        raise ConfigError(f"cannot grow the head in {source} (width {s['width']}, {had[0]} + {had[1]} fine blocks) "
+                          f"into width {width}, {blocks} + {fine_blocks} fine blocks: set parser.detector_width = "
+                          f"{s['width']}, parser.detector_blocks at least {had[0]} and parser.detector_fine_blocks "
+                          f"at least {had[1]}")
+    net = DetectNet(width, blocks, fine_blocks)
     missing, unexpected = net.load_state_dict(s["net"], strict=False)
     if unexpected or not all(".a." in k or ".b." in k for k in missing):
         raise DetectorWeightsError(f"{path} is not a detection head of this design: retrain it with "
@@ -279,7 +281,7 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
 def _save(net, opt, step, out_dir: Path, manifest: dict) -> None:
     buf = io.BytesIO()
     torch.save({"net": net.state_dict(), "opt": opt.state_dict(), "step": step, "width": net.width,
-                "blocks": net.blocks, "schedule_start": manifest.get("schedule_start", 0)}, buf)
+                "blocks": net.blocks, "fine_blocks": net.fine_blocks, "schedule_start": manifest.get("schedule_start", 0)}, buf)
     out = Path(out_dir) / WEIGHTS_FILE
     with atomic_path(out) as tmp:
         tmp.write_bytes(buf.getvalue())
@@ -313,15 +315,17 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
                    steps: int | None = None, minutes: float | None = None, grow_from: Path | None = None,
                    echo=print) -> dict:
     """`resume`: go on with the checkpoint in `out_dir` (its own width and blocks). `grow_from`: start a new run in
-    `out_dir` from the trained head in `grow_from`, deepened to `parser.detector_blocks` (function-preserving), with a fresh
+    `out_dir` from the trained head in `grow_from`, deepened to `parser.detector_blocks` and `detector_fine_blocks`
+    (function-preserving), with a fresh
     optimiser and a cosine of its own from the head's step to `steps`."""
     p = cfg["parser"]
     for key in ("detector_shards", "detector_heldout_shards", "detector_batch", "detector_width"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
-    blocks = p.get("detector_blocks", 0)
-    if not isinstance(blocks, int) or isinstance(blocks, bool) or blocks < 0:
-        raise ConfigError(f"'parser.detector_blocks' = {blocks!r} must be a non-negative integer")
+    blocks, fine_blocks = p.get("detector_blocks", 0), p.get("detector_fine_blocks", 0)
+    for key, value in (("detector_blocks", blocks), ("detector_fine_blocks", fine_blocks)):
+        if not isinstance(value, int) or isinstance(value, bool) or value < 0:
+            raise ConfigError(f"'parser.{key}' = {value!r} must be a non-negative integer")
     if resume and grow_from is not None:
         raise ConfigError("--resume and --grow-from exclude each other: grow once, then resume the grown head")
     if p["detector_heldout_shards"] >= p["detector_shards"]:
@@ -332,26 +336,26 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     echo(f"train detector: {len(train)} training frames, {len(val)} held-out frames")
     total = steps or p["detector_steps"]
     torch.manual_seed(p["seed"])
-    net = DetectNet(p["detector_width"], blocks)
+    net = DetectNet(p["detector_width"], blocks, fine_blocks)
     step, manifest, schedule_start, opt_state = 0, None, 0, None
     ckpt = Path(out_dir) / WEIGHTS_FILE
     if resume:
         if not ckpt.exists():
             raise DetectorWeightsError(f"nothing to resume in {out_dir}: run `dynclevr train detector` without --resume")
         s = torch.load(ckpt, weights_only=True)
-        net = DetectNet(s["width"], s.get("blocks", 0))
+        net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
         net.load_state_dict(s["net"])
         opt_state, step, schedule_start = s["opt"], s["step"], s.get("schedule_start", 0)
         manifest = json.loads((Path(out_dir) / MANIFEST).read_text())
         echo(f"train detector: resuming at step {step}")
     elif grow_from is not None:
-        net, step = _grown(grow_from, p["detector_width"], blocks)
+        net, step = _grown(grow_from, p["detector_width"], blocks, fine_blocks)
         schedule_start = step
         source = json.loads((Path(grow_from) / MANIFEST).read_text())
         manifest = {k: source[k] for k in ("loss_curve", "heldout_curve", "training_seconds", "runs")}
-        manifest["grown"] = {"from": str(grow_from), "step": step, "blocks": blocks,
+        manifest["grown"] = {"from": str(grow_from), "step": step, "blocks": blocks, "fine_blocks": fine_blocks,
                              "metrics_heldout_before": source.get("metrics_heldout")}
-        echo(f"train detector: {blocks} residual blocks per coarse stage grown onto the step-{step} head in {grow_from}")
+        echo(f"train detector: {blocks} residual blocks per coarse stage and {fine_blocks} at stride 4 grown onto the step-{step} head in {grow_from}")
     if step >= total:
         raise ConfigError(f"the head is at step {step} already: ask for more with --steps (now {total})")
     opt = torch.optim.AdamW(net.parameters(), lr=p["detector_learning_rate"], weight_decay=1e-4)
@@ -363,7 +367,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         "split": p["detector_split"], "split_seed": cfg.split(p["detector_split"]).seed,
         "shards_train": [str(x.name) for x in paths[:n - held]], "shards_heldout": [str(x.name) for x in paths[n - held:]],
         "frames_train": len(train), "frames_heldout": len(val), "steps_planned": total,
-        "params": {"width": net.width, "blocks": net.blocks, "batch": p["detector_batch"],
+        "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks, "batch": p["detector_batch"],
                    "lr": p["detector_learning_rate"],
                    "frames_per_video": p["detector_frames_per_video"], "min_pixels": MIN_PIXELS},
         "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads",
