@@ -25,6 +25,28 @@ def test_collision_events_count_by_pair_and_frame_tolerance():
     assert abs(s["collision_f1_strict"] - 2 * (1 / 3) * 0.5 / (1 / 3 + 0.5)) < 1e-9   # within 3: only (1, 4)
 
 
+def test_recall_of_what_a_viewer_can_see_leaves_out_the_hidden():
+    truth = known_scene()       # events: (0, 1) at frame 20 (and 22), (1, 4) at 45
+    labels = Config.load()["labels"]
+    # the estimate misses object 5, which is hidden behind others in all but 3 frames, and object 4, in sight
+    keep = [i for i, o in enumerate(truth.objects) if o.id not in (4, 5)]
+    est = replace(truth, objects=[truth.objects[i] for i in keep], position=truth.position[:, keep],
+                  orientation=truth.orientation[:, keep], velocity=truth.velocity[:, keep],
+                  angular_velocity=truth.angular_velocity[:, keep], acceleration=truth.acceleration[:, keep],
+                  engine=truth.engine[:, keep], floating=truth.floating[:, keep], visible=truth.visible[:, keep],
+                  collisions=[truth.collisions[0]], cut_state=None)
+    pixels = np.full(truth.visible.shape, 1000)
+    pixels[3:, truth.index(5)] = 20
+    pixels[45, truth.index(1)] = 0           # at (1, 4)'s collision, object 1 is out of sight
+    s = summarise([scene_stats(truth, est, labels, pixels=pixels)])
+    assert s["detection_recall"] == 4 / 6 and s["shown_recall"] == 4 / 5
+    assert s["shown_recall_" + truth.objects[truth.index(4)].category] < 1.0
+    assert (s["collision_recall"], s["collision_recall_in_sight"]) == (0.5, 1.0)
+    # without the masks, in sight is in view
+    s = summarise([scene_stats(truth, est, labels)])
+    assert s["shown_recall"] == s["detection_recall"] and s["collision_recall_in_sight"] == 0.5
+
+
 def test_the_cut_state_is_scored_for_the_objects_the_observed_frames_show():
     truth = known_scene()
     cut = truth.observed_frames - 1

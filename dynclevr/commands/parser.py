@@ -27,12 +27,14 @@ def register(app: typer.Typer) -> None:
         from dynclevr.perception.evaluate import (attribution_markdown, confusion_png, cut_attribution, markdown,
                                                   scene_stats, summarise)
         from dynclevr.physics import PhysicsParams
+        from dynclevr.questions.evidence import pixel_counts
+        from dynclevr.video import Video
         from dynclevr.config import Config
         from dynclevr.pipeline import Runner, model_configs, parse_scenes
         from dynclevr.scene import Scene4D
         from dynclevr.stages.simulate_future import attach
 
-        results = {}
+        results, pixels = {}, {}
         base = load_config(config)
         variants = model_configs(base)
         if not base["parser"]["refine"]:   # (the default already refines: the first row is this one)
@@ -51,7 +53,10 @@ def register(app: typer.Typer) -> None:
                 est = attach(Scene4D.read(r.store.path("parse-scene", scene, ".mcap")),
                              r.store.path("simulate-future", scene, ".parquet"))
                 truth = Scene4D.read(r.store.path("simulate", scene, ".mcap"))
-                stats.append(scene_stats(truth, est, cfg["labels"], future=True))
+                if scene not in pixels:
+                    masks = Video.read(r.store.path("render", scene, ".mcap")).masks()
+                    pixels[scene] = pixel_counts(masks, [o.id for o in truth.objects])
+                stats.append(scene_stats(truth, est, cfg["labels"], future=True, pixels=pixels[scene]))
                 if first:
                     attribution.append(cut_attribution(truth, est, cfg["labels"], PhysicsParams.from_config(cfg)))
             results[name] = summarise(stats)
