@@ -20,7 +20,7 @@ import numpy as np
 from dynclevr.perception.evaluate import CUT_GROSS, match
 from dynclevr.scene import Scene4D
 
-BINS = ((0, 3), (4, 7), (8, 12), (13, 20), (21, 10 ** 6))
+BINS = ((0, 3), (4, 7), (8, 12), (13, 10 ** 6))
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--split", default="full-val")
