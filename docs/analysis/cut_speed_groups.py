@@ -63,13 +63,23 @@ for path in sorted((root / "sim").glob("*.mcap")):
 
 total_gross = sum(int((np.array(v) > CUT_GROSS).sum()) for v in errors.values())
 n = sum(len(v) for v in errors.values())
-print(f"split {args.split}, {n} matched objects in view by the cut, {total_gross} cut speeds over {CUT_GROSS} m/s off\n")
+print(f"split {args.split}, {n} matched objects in view by the cut, {total_gross} cut speeds over {CUT_GROSS} m/s "
+      "off\n")
 print("| objects | n | median error (m/s) | over 1.5 m/s | share of those |")
 print("|---|---|---|---|---|")
-for key in sorted(errors, key=lambda k: (k[0], BINS.index(next((b for b in BINS if f"struck {b[0]}" in k[1]), BINS[0]))
-                                        if "struck " in k[1] and "not" not in k[1] else -1, k[1])):
+
+
+def order(key: tuple[str, str]) -> tuple:
+    """Category, then parked and moving bodies before the struck ones, these by how recently."""
+    kind, group = key
+    struck = group.startswith("struck ")
+    return kind, struck, int(group.split()[1].split("-")[0].rstrip("+")) if struck else 0, group
+
+
+for key in sorted(errors, key=order):
     v = np.array(errors[key])
     g = int((v > CUT_GROSS).sum())
-    print(f"| {key[0]}, {key[1]} | {len(v)} | {np.median(v):.2f} | {g} ({g / len(v):.0%}) | {g / max(total_gross, 1):.0%} |")
+    print(f"| {key[0]}, {key[1]} | {len(v)} | {np.median(v):.2f} | {g} ({g / len(v):.0%}) | "
+          f"{g / max(total_gross, 1):.0%} |")
 if plane_gross:
     print("\nmoving planes not yet struck, gross errors: " + ", ".join(f"{k} {v}" for k, v in plane_gross.items()))

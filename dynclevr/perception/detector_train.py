@@ -12,7 +12,8 @@ saturation jitter (not hue: the colour is a target), blur, and JPEG re-coding at
 Checkpoints every `checkpoint_minutes`: weights/detector/detector.pt (model, optimiser, step) with manifest.json
 (data, steps, wall time, loss curve, held-out metrics) and curve.png. `--resume` continues from there.
 `--grow-from DIR` starts a deeper head (`parser.detector_blocks` residual blocks at strides 8 and 16,
-`parser.detector_fine_blocks` at stride 4) from the trained one in DIR: it computes the same at first, so capacity grows on CPU without training from scratch.
+`parser.detector_fine_blocks` at stride 4) from the trained one in DIR: it computes the same at first, so capacity
+grows on CPU without training from scratch.
 """
 
 from __future__ import annotations
@@ -281,7 +282,8 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
 def _save(net, opt, step, out_dir: Path, manifest: dict) -> None:
     buf = io.BytesIO()
     torch.save({"net": net.state_dict(), "opt": opt.state_dict(), "step": step, "width": net.width,
-                "blocks": net.blocks, "fine_blocks": net.fine_blocks, "schedule_start": manifest.get("schedule_start", 0)}, buf)
+                "blocks": net.blocks, "fine_blocks": net.fine_blocks,
+                "schedule_start": manifest.get("schedule_start", 0)}, buf)
     out = Path(out_dir) / WEIGHTS_FILE
     with atomic_path(out) as tmp:
         tmp.write_bytes(buf.getvalue())
@@ -355,7 +357,8 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         manifest = {k: source[k] for k in ("loss_curve", "heldout_curve", "training_seconds", "runs")}
         manifest["grown"] = {"from": str(grow_from), "step": step, "blocks": blocks, "fine_blocks": fine_blocks,
                              "metrics_heldout_before": source.get("metrics_heldout")}
-        echo(f"train detector: {blocks} residual blocks per coarse stage and {fine_blocks} at stride 4 grown onto the step-{step} head in {grow_from}")
+        echo(f"train detector: {blocks} residual blocks per coarse stage and {fine_blocks} at stride 4 grown onto the "
+             f"step-{step} head in {grow_from}")
     if step >= total:
         raise ConfigError(f"the head is at step {step} already: ask for more with --steps (now {total})")
     opt = torch.optim.AdamW(net.parameters(), lr=p["detector_learning_rate"], weight_decay=1e-4)
@@ -367,8 +370,8 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         "split": p["detector_split"], "split_seed": cfg.split(p["detector_split"]).seed,
         "shards_train": [str(x.name) for x in paths[:n - held]], "shards_heldout": [str(x.name) for x in paths[n - held:]],
         "frames_train": len(train), "frames_heldout": len(val), "steps_planned": total,
-        "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks, "batch": p["detector_batch"],
-                   "lr": p["detector_learning_rate"],
+        "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks,
+                   "batch": p["detector_batch"], "lr": p["detector_learning_rate"],
                    "frames_per_video": p["detector_frames_per_video"], "min_pixels": MIN_PIXELS},
         "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads",
         "command": "dynclevr train detector [--resume | --grow-from DIR]"})
