@@ -125,8 +125,8 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
     est_events = [e for e in merge_events(est.collisions, merge) if e.a in to_truth and e.b in to_truth]
     column = {o.id: i for i, o in enumerate(truth.objects)}
     # the events a viewer sees: both vehicles in sight at the event's frame (the dataset asks only about these)
-    in_sight = [k for k, g in enumerate(true_events) 
-                if sighted[g.frame, column[g.a]] and sighted[g.frame, column[g.b]]]
+    in_sight = {k for k, g in enumerate(true_events)
+                if sighted[g.frame, column[g.a]] and sighted[g.frame, column[g.b]]}
     for key, tolerance in (("events_tp", EVENT_TOLERANCE), ("events_tp_strict", STRICT_EVENT_TOLERANCE)):
         used, tp = set(), 0
         for e in est_events:
@@ -137,7 +137,7 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
                     tp += 1
                     break
         s[key] = tp
-        s[key + "_in_sight"] = len(used & set(in_sight))
+        s[key + "_in_sight"] = len(used & in_sight)
     s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)),
              events_in_sight=len(in_sight))
     if future:
@@ -212,7 +212,6 @@ def summarise(stats: list[dict]) -> dict:
     for c in CATEGORIES:
         n = sum(s["true_by_category"][c] for s in stats)
         per_cat[f"recall_{c}"] = sum(s["found_by_category"][c] for s in stats) / n if n else float("nan")
-    for c in CATEGORIES:
         n = sum(s["shown_by_category"][c] for s in stats)
         per_cat[f"shown_recall_{c}"] = sum(s["shown_found_by_category"][c] for s in stats) / n if n else float("nan")
     shown = sum(sum(s["shown_by_category"].values()) for s in stats)
