@@ -175,3 +175,48 @@ def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path
     with pytest.raises(ConfigError, match="--resume and --grow-from exclude each other"):
         train_detector(Config.load(), tmp_path / "data", tmp_path / "out", resume=True, grow_from=tmp_path)
     assert not (tmp_path / "data").exists()
+
+
+def _shard(path, frames: int = 3):
+    import cv2
+
+    rng = np.random.default_rng(0)
+    jpegs = [cv2.imencode(".jpg", rng.integers(0, 255, (48, 64, 3), dtype=np.uint8))[1].tobytes()
+             for _ in range(frames)]
+    labels = [[k, 20.0 + k, 30.0, 400, 1, 2, 0.3, np.log(9.0), 0.5, 6.0] for k in range(frames)]
+    with open(path, "wb") as f:
+        np.savez(f, jpeg=np.frombuffer(b"".join(jpegs), np.uint8), offsets=np.cumsum([0] + [len(j) for j in jpegs]),
+                 labels=np.array(labels, np.float32))
+    return path
+
+
+def test_the_batches_are_the_same_whatever_the_number_of_loader_processes(tmp_path):
+    from dynclevr.perception.detector_train import Frames, Samples, _batches
+
+    samples = Samples(Frames([_shard(tmp_path / "s.npz")]), seed=3, h=12, w=16)
+    here = list(_batches(samples, 2, 4, batch=2, workers=0))
+    loaders = list(_batches(samples, 2, 4, batch=2, workers=2))
+    assert len(here) == len(loaders) == 2
+    for (x, tg), (y, tg2) in zip(here, loaders):
+        assert x.dtype == torch.uint8 and x.shape == (2, 48, 64, 3)
+        assert torch.equal(x, y)
+        for a, b in zip(tg, tg2):
+            np.testing.assert_array_equal(a["heat"], b["heat"])
+            np.testing.assert_array_equal(a["regs"], b["regs"])
+    # a later step draws other samples
+    assert not torch.equal(here[0][0], here[1][0])
+
+
+def test_a_device_that_is_not_here_is_one_clear_line(tmp_path):
+    import pytest
+
+    from dynclevr.config import Config, ConfigError
+    from dynclevr.perception.detector_train import train_detector
+
+    if torch.cuda.is_available():
+        pytest.skip("this machine has a GPU")
+    with pytest.raises(ConfigError, match="--device cuda: no such device here; use cpu"):
+        train_detector(Config.load(), tmp_path / "data", tmp_path / "out", device="cuda")
+    with pytest.raises(ConfigError, match="--loader-workers -1"):
+        train_detector(Config.load(), tmp_path / "data", tmp_path / "out", loader_workers=-1)
+    assert not (tmp_path / "data").exists()

@@ -37,7 +37,10 @@ def register(app: typer.Typer) -> None:
                      None, "--grow-from", help="start from the trained head in this directory, deepened to "
                                                "parser.detector_blocks and detector_fine_blocks (it computes the same "
                                                "at first)"),
-                 data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop")):
+                 data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop"),
+                 device: str = typer.Option("cpu", "--device", help="where the head trains: cpu or cuda"),
+                 loader_workers: int = typer.Option(0, "--loader-workers",
+                                                    help="processes decoding and augmenting the frames (0: this one)")):
         """Detection head: centre heatmap, sub-type, colour, yaw, distance and height per cell (resumable)."""
         from dynclevr.config import Config
         from dynclevr.perception.detector_train import generate, train_detector
@@ -46,7 +49,8 @@ def register(app: typer.Typer) -> None:
         if data_only:
             generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
             return
-        train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, echo=typer.echo)
+        train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, device, loader_workers,
+                       echo=typer.echo)
 
     @train.command("collisions")
     def collisions(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

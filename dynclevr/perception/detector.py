@@ -82,7 +82,7 @@ class DetectNet(nn.Module):
 
     def forward(self, images: torch.Tensor) -> torch.Tensor:
         """images [B, 3, H, W] in [0, 1] (H, W multiples of 16) -> maps [B, OUT, H/4, W/4]."""
-        x4 = self.s4(self.s2((images - MEAN) / STD))
+        x4 = self.s4(self.s2((images - MEAN.to(images.device)) / STD.to(images.device)))
         x8 = self.s8(x4)
         x16 = self.s16(x8)
         y8 = self.up8(torch.cat([F.interpolate(x16, size=x8.shape[-2:], mode="bilinear", align_corners=False), x8], 1))
@@ -97,9 +97,10 @@ def to_tensor(frames: np.ndarray) -> torch.Tensor:
 
 @torch.no_grad()
 def run(net: DetectNet, frames: np.ndarray, batch: int = 16) -> torch.Tensor:
-    """The head's maps for a whole video [T, OUT, H/4, W/4]."""
+    """The head's maps for a whole video [T, OUT, H/4, W/4] (on the CPU, wherever the head runs)."""
     net.eval()
-    return torch.cat([net(to_tensor(frames[i:i + batch])) for i in range(0, len(frames), batch)])
+    dev = next(net.parameters()).device
+    return torch.cat([net(to_tensor(frames[i:i + batch]).to(dev)).cpu() for i in range(0, len(frames), batch)])
 
 
 @dataclass

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import cv2
 import numpy as np
@@ -33,8 +34,9 @@ from dynclevr.artifacts import atomic_path
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, Split, scene_seed
-from dynclevr.scene import Scene4D
-from dynclevr.video import encode_rgb
+
+if TYPE_CHECKING:   # training reads shards alone: a machine without the generator's packages (mcap) trains too
+    from dynclevr.scene import Scene4D
 
 LABEL_COLUMNS = ("frame", "u", "v", "pixels", "subtype", "color", "alpha", "logdist", "height", "radius")
 SUBTYPE_INDEX = {s: i for i, s in enumerate(SUBTYPES)}
@@ -75,8 +77,10 @@ def render_frames(cfg: Config, seed: int, frames_per_video: int) -> tuple[list[b
     from dynclevr.physics import PhysicsParams, simulate
     from dynclevr.render import make_renderer
     from dynclevr.render.environments import environment
+    from dynclevr.scene import Scene4D
     from dynclevr.stages.render import appearance, check
     from dynclevr.stages.simulate import sample_scene, visibility
+    from dynclevr.video import encode_rgb
 
     params = PhysicsParams.from_config(cfg)
     T = cfg["video"]["frames"]

@@ -14,6 +14,9 @@ Checkpoints every `checkpoint_minutes`: weights/detector/detector.pt (model, opt
 `--grow-from DIR` starts a deeper head (`parser.detector_blocks` residual blocks at strides 8 and 16,
 `parser.detector_fine_blocks` at stride 4) from the trained one in DIR: it computes the same at first, so capacity
 grows on CPU without training from scratch.
+`--device cuda --loader-workers N` trains on a GPU, N processes decoding and augmenting the frames. Each training
+sample is drawn and augmented from its own seed (the run's seed and its number), so a run's batches are the same
+whatever the device or the number of loader processes.
 """
 
 from __future__ import annotations
@@ -35,7 +38,7 @@ from torch.nn import functional as F
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import atomic_path, file_digest, write_json_atomic
 from dynclevr.config import Config, ConfigError
-from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run, to_tensor
+from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run
 from dynclevr.perception.detector_data import LABEL_COLUMNS, make_shard, shard_path
 
 DEFAULT_DIR = WEIGHTS_DIR / "detector"
@@ -55,7 +58,7 @@ def load_detector(weights_dir: Path = DEFAULT_DIR) -> DetectNet:
     m = json.loads(manifest.read_text())
     if m.get("weights_sha256") != file_digest(path):
         raise DetectorWeightsError(f"{path} does not match its manifest: rerun `dynclevr train detector --resume`")
-    s = torch.load(path, weights_only=True)
+    s = torch.load(path, weights_only=True, map_location="cpu")
     net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
     net.load_state_dict(s["net"])
     net.eval()
@@ -68,7 +71,7 @@ def _grown(source: Path, width: int, blocks: int, fine_blocks: int) -> tuple[Det
     path = Path(source) / WEIGHTS_FILE
     if not path.exists():
         raise DetectorWeightsError(f"nothing to grow from in {source}: --grow-from needs a trained head's directory")
-    s = torch.load(path, weights_only=True)
+    s = torch.load(path, weights_only=True, map_location="cpu")
     had = (s.get("blocks", 0), s.get("fine_blocks", 0))
     if s["width"] != width or had[0] > blocks or had[1] > fine_blocks:
         raise ConfigError(f"cannot grow the head in {source} (width {s['width']}, {had[0]} + {had[1]} fine blocks) "
@@ -160,6 +163,34 @@ def targets(lab: np.ndarray, h: int, w: int) -> dict:
             "regs": np.array(regs, np.float32).reshape(-1, 8)}
 
 
+class Samples(torch.utils.data.Dataset):
+    """Training sample g (step x batch + slot): a frame drawn, augmented and given its targets from seed (seed, g)."""
+
+    def __init__(self, frames: Frames, seed: int, h: int, w: int):
+        self.frames, self.seed, self.h, self.w = frames, seed, h, w
+
+    def __len__(self) -> int:
+        return 2 ** 62
+
+    def __getitem__(self, g: int) -> tuple[np.ndarray, dict]:
+        rng = np.random.default_rng([self.seed, g])
+        rgb, lab = augment(*self.frames.get(int(rng.integers(len(self.frames)))), rng)
+        return rgb, targets(lab, self.h, self.w)
+
+
+def _collate(items: list) -> tuple[torch.Tensor, list[dict]]:
+    """uint8 images [B, H, W, 3] (made [0, 1] floats where the head trains) and the targets."""
+    return torch.from_numpy(np.stack([rgb for rgb, _ in items])), [t for _, t in items]
+
+
+def _batches(samples: Samples, first: int, last: int, batch: int, workers: int):
+    """(uint8 images [B, H, W, 3], targets) of steps first..last-1."""
+    loader = torch.utils.data.DataLoader(samples, batch_size=batch, sampler=range(first * batch, last * batch),
+                                         num_workers=workers, collate_fn=_collate,
+                                         persistent_workers=False, prefetch_factor=4 if workers else None)
+    yield from loader
+
+
 def focal_loss(logits: torch.Tensor, target: torch.Tensor, ignore: torch.Tensor) -> torch.Tensor:
     p = torch.sigmoid(logits).clamp(1e-4, 1 - 1e-4)
     pos = target >= 1.0
@@ -174,8 +205,9 @@ NEIGHBOURS = [(dr, dc) for dr in (-1, 0, 1) for dc in (-1, 0, 1)]
 
 def losses(maps: torch.Tensor, tg: list[dict]) -> dict:
     B, _, h, w = maps.shape
-    heat = torch.from_numpy(np.stack([t["heat"] for t in tg]))
-    ignore = torch.from_numpy(np.stack([t["ignore"] for t in tg]))
+    dev = maps.device
+    heat = torch.from_numpy(np.stack([t["heat"] for t in tg])).to(dev)
+    ignore = torch.from_numpy(np.stack([t["ignore"] for t in tg])).to(dev)
     out = {"heat": focal_loss(maps[:, 0], heat, ignore)}
     idx, reg, wts = [], [], []
     for b, t in enumerate(tg):
@@ -191,10 +223,10 @@ def losses(maps: torch.Tensor, tg: list[dict]) -> dict:
     if not idx:
         zero = maps.sum() * 0
         return {**out, **{k: zero for k in ("offset", "subtype", "color", "alpha", "logdist", "height")}}
-    ix = torch.tensor(idx)
+    ix = torch.tensor(idx, device=dev)
     v = maps[ix[:, 0], :, ix[:, 1], ix[:, 2]]                         # [K, OUT]
-    g = torch.from_numpy(np.array(reg, np.float32))
-    wt = torch.tensor(wts)
+    g = torch.from_numpy(np.array(reg, np.float32)).to(dev)
+    wt = torch.tensor(wts, device=dev)
     wt = wt / wt.sum()
 
     def wmean(x):
@@ -280,8 +312,13 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
 
 
 def _save(net, opt, step, out_dir: Path, manifest: dict) -> None:
+    def cpu(x):     # a checkpoint loads on any machine, whatever device trained it
+        if isinstance(x, torch.Tensor):
+            return x.cpu()
+        return {k: cpu(v) for k, v in x.items()} if isinstance(x, dict) else x
+
     buf = io.BytesIO()
-    torch.save({"net": net.state_dict(), "opt": opt.state_dict(), "step": step, "width": net.width,
+    torch.save({"net": cpu(net.state_dict()), "opt": cpu(opt.state_dict()), "step": step, "width": net.width,
                 "blocks": net.blocks, "fine_blocks": net.fine_blocks,
                 "schedule_start": manifest.get("schedule_start", 0)}, buf)
     out = Path(out_dir) / WEIGHTS_FILE
@@ -315,11 +352,17 @@ def _plot(manifest: dict, path: Path) -> None:
 
 def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, workers: int = 1, resume: bool = False,
                    steps: int | None = None, minutes: float | None = None, grow_from: Path | None = None,
-                   echo=print) -> dict:
+                   device: str = "cpu", loader_workers: int = 0, echo=print) -> dict:
     """`resume`: go on with the checkpoint in `out_dir` (its own width and blocks). `grow_from`: start a new run in
     `out_dir` from the trained head in `grow_from`, deepened to `parser.detector_blocks` and `detector_fine_blocks`
     (function-preserving), with a fresh
-    optimiser and a cosine of its own from the head's step to `steps`."""
+    optimiser and a cosine of its own from the head's step to `steps`. `device`: where the head trains ("cpu",
+    "cuda"); `loader_workers`: processes making the batches (0: this one)."""
+    if loader_workers < 0:
+        raise ConfigError(f"--loader-workers {loader_workers}: use 0 (this process) or more")
+    if device != "cpu" and not (device.startswith("cuda") and torch.cuda.is_available()):
+        raise ConfigError(f"--device {device}: no such device here; use cpu"
+                          + (" or cuda" if torch.cuda.is_available() else ""))
     p = cfg["parser"]
     for key in ("detector_shards", "detector_heldout_shards", "detector_batch", "detector_width"):
         if p[key] <= 0:
@@ -344,7 +387,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     if resume:
         if not ckpt.exists():
             raise DetectorWeightsError(f"nothing to resume in {out_dir}: run `dynclevr train detector` without --resume")
-        s = torch.load(ckpt, weights_only=True)
+        s = torch.load(ckpt, weights_only=True, map_location="cpu")
         net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
         net.load_state_dict(s["net"])
         opt_state, step, schedule_start = s["opt"], s["step"], s.get("schedule_start", 0)
@@ -361,6 +404,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
              f"step-{step} head in {grow_from}")
     if step >= total:
         raise ConfigError(f"the head is at step {step} already: ask for more with --steps (now {total})")
+    net = net.to(device)
     opt = torch.optim.AdamW(net.parameters(), lr=p["detector_learning_rate"], weight_decay=1e-4)
     if opt_state is not None:
         opt.load_state_dict(opt_state)
@@ -373,11 +417,14 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks,
                    "batch": p["detector_batch"], "lr": p["detector_learning_rate"],
                    "frames_per_video": p["detector_frames_per_video"], "min_pixels": MIN_PIXELS},
-        "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads",
-        "command": "dynclevr train detector [--resume | --grow-from DIR]"})
+        "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads"
+                   + (f", {torch.cuda.get_device_name(device)}" if device != "cpu" else ""),
+        "command": "dynclevr train detector [--resume | --grow-from DIR]"
+                   + (f" --device {device} --loader-workers {loader_workers}" if device != "cpu" else "")})
     B = p["detector_batch"]
     first_step = step
-    rng = np.random.default_rng([p["seed"], step])
+    h, w = (x // STRIDE for x in train.get(0)[0].shape[:2])
+    batches = _batches(Samples(train, p["seed"], h, w), step, total, B, loader_workers)
     start = time.perf_counter()
     last_save = start
     base_seconds = manifest["training_seconds"]
@@ -391,19 +438,16 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
               * min(1.0, (done + 1) / 200))
         for g in opt.param_groups:
             g["lr"] = lr
-        batch = [augment(*train.get(int(k)), rng) for k in rng.integers(len(train), size=B)]
-        x = to_tensor(np.stack([b[0] for b in batch]))
-        maps = net(x)
-        tg = [targets(lab, maps.shape[2], maps.shape[3]) for _, lab in batch]
-        parts = losses(maps, tg)
+        x, tg = next(batches)
+        parts = losses(net(x.to(device).permute(0, 3, 1, 2).float().div_(255.0)), tg)
         loss = sum(parts.values())
         opt.zero_grad()
         loss.backward()
         opt.step()
         step += 1
-        running.append({k: float(v.detach()) for k, v in parts.items()})
+        running.append(torch.stack([v.detach() for v in parts.values()]))   # no device sync every step
         if step % 50 == 0:
-            mean = {k: float(np.mean([r[k] for r in running])) for k in running[0]}
+            mean = dict(zip(parts, torch.stack(running).mean(0).tolist()))
             manifest["loss_curve"].append({"step": step, "loss": sum(mean.values()), **mean})
             echo(f"  step {step}/{total}: loss {sum(mean.values()):.3f} ("
                  + ", ".join(f"{k} {v:.3f}" for k, v in mean.items()) + f") lr {lr:.5f}")
