@@ -169,9 +169,6 @@ class Samples(torch.utils.data.Dataset):
     def __init__(self, frames: Frames, seed: int, h: int, w: int):
         self.frames, self.seed, self.h, self.w = frames, seed, h, w
 
-    def __len__(self) -> int:
-        return 2 ** 62
-
     def __getitem__(self, g: int) -> tuple[np.ndarray, dict]:
         rng = np.random.default_rng([self.seed, g])
         rgb, lab = augment(*self.frames.get(int(rng.integers(len(self.frames)))), rng)
@@ -187,8 +184,8 @@ def _batches(samples: Samples, first: int, last: int, batch: int, workers: int):
     """(uint8 images [B, H, W, 3], targets) of steps first..last-1."""
     loader = torch.utils.data.DataLoader(samples, batch_size=batch, sampler=range(first * batch, last * batch),
                                          num_workers=workers, collate_fn=_collate,
-                                         persistent_workers=False, prefetch_factor=4 if workers else None)
-    yield from loader
+                                         prefetch_factor=4 if workers else None)
+    return iter(loader)
 
 
 def focal_loss(logits: torch.Tensor, target: torch.Tensor, ignore: torch.Tensor) -> torch.Tensor:
