@@ -21,8 +21,10 @@ $(STAMP): pyproject.toml
 	$(BIN)/pip install -q --disable-pip-version-check -e '.[test]'
 	touch $(STAMP)
 
+# One process per worker (WORKERS, one per core); a file's tests stay together, so its module fixtures (the smoke
+# runs) are made once.
 test: $(STAMP)
-	$(BIN)/pytest
+	$(BIN)/pytest -n $(WORKERS) --dist loadfile
 
 smoke: $(STAMP)
 	$(BIN)/dynclevr run --split tiny --workers $(WORKERS) --data-dir data

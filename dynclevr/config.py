@@ -142,6 +142,15 @@ class Config:
         if self.data["imagine"]["counterfactuals"] not in ("replay", "resimulate"):
             raise ConfigError(f"'imagine.counterfactuals' = {self.data['imagine']['counterfactuals']!r}: use 'replay' "
                               "or 'resimulate'")
+        im = self.data["imagine"]
+        if not isinstance(im["future_samples"], int) or isinstance(im["future_samples"], bool) or \
+                im["future_samples"] < 1:
+            raise ConfigError(f"'imagine.future_samples' = {im['future_samples']!r} must be a positive integer")
+        if not 0 < im["future_vote"] <= 1:
+            raise ConfigError(f"'imagine.future_vote' = {im['future_vote']!r} must lie in (0, 1]")
+        for key in ("future_velocity_sigma", "future_position_sigma", "future_yaw_sigma"):
+            if im[key] < 0:
+                raise ConfigError(f"'imagine.{key}' = {im[key]!r} must not be negative")
         if self.data["render"]["backend"] not in ("tiny", "mitsuba"):
             raise ConfigError(f"'render.backend' = {self.data['render']['backend']!r}: use 'tiny' or 'mitsuba'")
 

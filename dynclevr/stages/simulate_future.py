@@ -2,7 +2,8 @@
 
 The estimated state is put into the same physics engine that made the data and simulated forward:
 - predictive: from the state estimated at the last observed frame from the frames up to there only (the
-  estimate's cut state), simulated to the end of the video; the collisions after the observed frames are the prediction;
+  estimate's cut state), simulated to the end of the video; the collisions after the observed frames are the prediction,
+  voted over runs from that state perturbed by its uncertainty (`Ensemble`, [imagine] future_*);
 - counterfactual: from the estimated initial state with one intervention on one object, over the whole video;
   objects follow their estimated trajectories until the intervention reaches them (perception/imagine.py).
 Reads only parsed/ (the model's estimate); never the truth. The per-frame baseline (`--per-frame`) has no physics
@@ -12,10 +13,13 @@ engine: its future and counterfactuals are its contact rule on positions extrapo
 
 from __future__ import annotations
 
+import zlib
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 import pyarrow as pa
+from scipy.spatial.transform import Rotation
 
 from dynclevr.artifacts import read_parquet, write_parquet
 from dynclevr.perception.imagine import counterfactual_run
@@ -25,6 +29,7 @@ from dynclevr.scene import INTERVENTIONS, Collision, Scene4D
 
 FUTURE_SCHEMA = "dynclevr.future"
 FUTURE_VERSION = 2   # 2: scene column; nulls, not -1 and ""
+ENSEMBLE_STREAM = 7   # the ensemble's own stream of random draws
 FUTURE_FIELDS = pa.schema([
     ("scene", pa.string()),
     ("run", pa.string()),             # future / counterfactual
@@ -71,24 +76,68 @@ def initial_bodies(scene: Scene4D) -> tuple[list[Body], list[int]]:
     return bodies, ids
 
 
-def predict_future(scene: Scene4D, params: PhysicsParams) -> list[Collision]:
+@dataclass(frozen=True)
+class Ensemble:
+    """The predictive future as a vote over perturbed runs. The cut state is an estimate, and whether two bodies meet
+    seconds later flips with small errors in it: the future is simulated `samples` times, the first from the estimate
+    and the rest from it perturbed by the parser's typical errors at the cut (horizontal velocity and position,
+    heading), and a pair collides in the prediction when it does in at least `vote` of the runs (Monte Carlo over the
+    cut state's uncertainty instead of one point estimate). `samples` 1 is the single run from the estimate."""
+
+    samples: int = 1
+    vote: float = 0.5
+    velocity_sigma: float = 0.0   # m/s
+    position_sigma: float = 0.0   # m
+    yaw_sigma: float = 0.0        # radians
+
+    @classmethod
+    def from_config(cls, cfg) -> "Ensemble":
+        im = cfg["imagine"]
+        return cls(int(im["future_samples"]), float(im["future_vote"]), float(im["future_velocity_sigma"]),
+                   float(im["future_position_sigma"]), float(np.deg2rad(im["future_yaw_sigma"])))
+
+    def perturb(self, b: Body, rng: np.random.Generator) -> Body:
+        v, p = np.array(b.velocity, float), np.array(b.position, float)
+        v[:2] += rng.normal(0.0, self.velocity_sigma, 2)
+        p[:2] += rng.normal(0.0, self.position_sigma, 2)
+        q = Rotation.from_euler("z", rng.normal(0.0, self.yaw_sigma)) * Rotation.from_quat(b.orientation)
+        return replace(b, position=tuple(p), orientation=tuple(q.as_quat()), velocity=tuple(v))
+
+
+def predict_future(scene: Scene4D, params: PhysicsParams, ensemble: Ensemble = Ensemble(),
+                   rng: np.random.Generator | None = None) -> list[Collision]:
     """The collisions after the observed frames, simulated from the state at the last of them of every object they
-    show."""
+    show; with an ensemble (`rng` draws its perturbations), each pair that collides in enough of its runs, at the
+    median of its first contacts' frames."""
     last = scene.observed_frames - 1
     seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
     if not seen:
         return []
     bodies = _bodies(scene, np.full(len(seen), last), seen)
-    run = simulate(bodies, params, scene.num_frames - last, record=False)
-    return [e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames]
+    runs = []
+    with World([], params) as world:
+        for k in range(ensemble.samples):
+            run = simulate(bodies if k == 0 else [ensemble.perturb(b, rng) for b in bodies], params,
+                           scene.num_frames - last, world=world, record=False)
+            runs.append([e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames])
+    if ensemble.samples == 1:
+        return runs[0]
+    firsts: dict[tuple[int, int], list[Collision]] = {}
+    for events in runs:
+        for pair, e in {(e.a, e.b): e for e in reversed(events)}.items():
+            firsts.setdefault(pair, []).append(e)
+    voted = [sorted(events, key=lambda e: e.frame)[len(events) // 2] for events in firsts.values()
+             if len(events) >= ensemble.vote * ensemble.samples]
+    return sorted(voted, key=lambda e: (e.frame, e.a, e.b))
 
 
-def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True
+def predict(scene: Scene4D, params: PhysicsParams, replay: bool = True, ensemble: Ensemble = Ensemble(),
+            rng: np.random.Generator | None = None
             ) -> tuple[list[Collision], dict[tuple[int, str], list[Collision]]]:
     """The future after the observed frames, and every counterfactual run's collisions. `replay`: objects follow
     their estimated trajectories until the intervention reaches them (perception/imagine.py); False: the paper's
     re-simulation of everything from the estimated initial state."""
-    future = predict_future(scene, params)
+    future = predict_future(scene, params, ensemble, rng)
     outcomes: dict[tuple[int, str], list[Collision]] = {}
     bodies, ids = initial_bodies(scene)
     if bodies:
@@ -113,8 +162,10 @@ def run_scene(job: SceneJob) -> None:
     if perframe.enabled(job.cfg):   # the per-frame baseline: constant velocity, no physics engine
         future, outcomes = perframe.imagine(scene, job.cfg)
     else:
+        # The ensemble's draws are seeded by the scene's name, not its seed: the model never holds what made the truth.
+        rng = np.random.default_rng([ENSEMBLE_STREAM, zlib.crc32(job.scene.encode())])
         future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg),
-                                   job.cfg["imagine"]["counterfactuals"] == "replay")
+                                   job.cfg["imagine"]["counterfactuals"] == "replay", Ensemble.from_config(job.cfg), rng)
     rows = [("future", None, None, e) for e in future]
     rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
     rows += [("counterfactual", oid, iv, None) for (oid, iv), events in sorted(outcomes.items()) if not events]
@@ -151,8 +202,9 @@ def _params(cfg) -> dict:
     return cfg.digest("physics", "video", "labels", "imagine")
 
 
-# 4: a scene column and nulls in future/; 5: the counterfactual replay moves only the bodies it has not reached
-STAGE = Stage("simulate-future", 5, inputs=("parse-scene",),
+# 4: a scene column and nulls in future/; 5: the counterfactual replay moves only the bodies it has not reached;
+# 6: the predictive future voted over an ensemble of perturbed runs
+STAGE = Stage("simulate-future", 6, inputs=("parse-scene",),
               params=_params, outputs=(".parquet",), run_scene=run_scene,
               # The bodies are the catalogue's collision shapes: new meshes change the predictions.
               extra_inputs=lambda store, cfg: {"assets": catalogue_digest(cfg)})
