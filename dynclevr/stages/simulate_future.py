@@ -122,9 +122,12 @@ def predict_future(scene: Scene4D, params: PhysicsParams, ensemble: Ensemble = E
             runs.append([e for e in _events(run.collisions, seen, offset=last) if e.frame >= scene.observed_frames])
     if ensemble.samples == 1:
         return runs[0]
-    firsts: dict[tuple[int, int], list[Collision]] = {}
+    firsts: dict[tuple[int, int], list[Collision]] = {}   # each pair's first contact in each run
     for events in runs:
-        for pair, e in {(e.a, e.b): e for e in reversed(events)}.items():
+        first: dict[tuple[int, int], Collision] = {}
+        for e in events:
+            first.setdefault((e.a, e.b), e)
+        for pair, e in first.items():
             firsts.setdefault(pair, []).append(e)
     voted = [sorted(events, key=lambda e: e.frame)[len(events) // 2] for events in firsts.values()
              if len(events) >= ensemble.vote * ensemble.samples]
