@@ -32,7 +32,7 @@ def register(app: typer.Typer) -> None:
         from dynclevr.config import Config
         from dynclevr.pipeline import Runner, model_configs, parse_scenes
         from dynclevr.scene import Scene4D
-        from dynclevr.stages.simulate_future import attach
+        from dynclevr.stages.simulate_future import Ensemble, attach
 
         results, pixels = {}, {}
         base = load_config(config)
@@ -58,7 +58,8 @@ def register(app: typer.Typer) -> None:
                     pixels[scene] = pixel_counts(masks, [o.id for o in truth.objects])
                 stats.append(scene_stats(truth, est, cfg["labels"], future=True, pixels=pixels[scene]))
                 if first:
-                    attribution.append(cut_attribution(truth, est, cfg["labels"], PhysicsParams.from_config(cfg)))
+                    attribution.append(cut_attribution(truth, est, cfg["labels"], PhysicsParams.from_config(cfg),
+                                                       Ensemble.from_config(cfg)))
             results[name] = summarise(stats)
             if first:
                 confusion_png(stats, r.store.split_file("parser_confusion.png"))

@@ -160,13 +160,15 @@ def _future_pairs(est: Scene4D, to_truth: dict, seen: set, merge: int) -> set:
             if e.a in to_truth and e.b in to_truth and {to_truth[e.a], to_truth[e.b]} <= seen}
 
 
-def cut_attribution(truth: Scene4D, est: Scene4D, labels_cfg: dict, params) -> dict[str, tuple[int, int, int]]:
+def cut_attribution(truth: Scene4D, est: Scene4D, labels_cfg: dict, params, ensemble=None
+                    ) -> dict[str, tuple[int, int, int]]:
     """Per ATTRIBUTION row, the predicted future collision pairs' (true positives, false positives, false
     negatives), scored as `scene_stats` scores them, when the future is simulated (simulate_future.predict_future,
-    physics.PhysicsParams `params`) from est's cut state with those parts of every matched object's state put in
-    from the truth. Missed and spurious objects stay as the estimate has them, so the last row is what perfect
-    states of the objects found would give."""
-    from dynclevr.stages.simulate_future import predict_future
+    physics.PhysicsParams `params`, simulate_future.Ensemble `ensemble`, by default the single run; every row with
+    the stage's draws) from est's cut state with those parts of every matched object's state put in from the truth.
+    Missed and spurious objects stay as the estimate has them, so the last row is what perfect states of the
+    objects found would give."""
+    from dynclevr.stages.simulate_future import Ensemble, future_rng, predict_future
 
     merge = labels_cfg["collision_merge_frames"]
     pairs = match(truth, est)
@@ -180,7 +182,7 @@ def cut_attribution(truth: Scene4D, est: Scene4D, labels_cfg: dict, params) -> d
             for f in fields:
                 state[f][j] = truth.state_at(cut)[f][i]
         scene = replace(est, cut_state=state)
-        scene.future_collisions = predict_future(scene, params)
+        scene.future_collisions = predict_future(scene, params, ensemble or Ensemble(), future_rng(est.name))
         est_pairs = _future_pairs(scene, to_truth, seen, merge)
         out[name] = (len(true_pairs & est_pairs), len(est_pairs - true_pairs), len(true_pairs - est_pairs))
     return out

@@ -104,6 +104,11 @@ class Ensemble:
         return replace(b, position=tuple(p), orientation=tuple(q.as_quat()), velocity=tuple(v))
 
 
+def future_rng(scene: str) -> np.random.Generator:
+    """The ensemble's draws for a scene, seeded by its name, not its seed: the model never holds what made the truth."""
+    return np.random.default_rng([ENSEMBLE_STREAM, zlib.crc32(scene.encode())])
+
+
 def predict_future(scene: Scene4D, params: PhysicsParams, ensemble: Ensemble = Ensemble(),
                    rng: np.random.Generator | None = None) -> list[Collision]:
     """The collisions after the observed frames, simulated from the state at the last of them of every object they
@@ -165,10 +170,9 @@ def run_scene(job: SceneJob) -> None:
     if perframe.enabled(job.cfg):   # the per-frame baseline: constant velocity, no physics engine
         future, outcomes = perframe.imagine(scene, job.cfg)
     else:
-        # The ensemble's draws are seeded by the scene's name, not its seed: the model never holds what made the truth.
-        rng = np.random.default_rng([ENSEMBLE_STREAM, zlib.crc32(job.scene.encode())])
         future, outcomes = predict(scene, PhysicsParams.from_config(job.cfg),
-                                   job.cfg["imagine"]["counterfactuals"] == "replay", Ensemble.from_config(job.cfg), rng)
+                                   job.cfg["imagine"]["counterfactuals"] == "replay", Ensemble.from_config(job.cfg),
+                                   future_rng(job.scene))
     rows = [("future", None, None, e) for e in future]
     rows += [("counterfactual", oid, iv, e) for (oid, iv), events in sorted(outcomes.items()) for e in events]
     rows += [("counterfactual", oid, iv, None) for (oid, iv), events in sorted(outcomes.items()) if not events]
