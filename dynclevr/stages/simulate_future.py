@@ -112,8 +112,9 @@ def future_rng(scene: str) -> np.random.Generator:
 def predict_future(scene: Scene4D, params: PhysicsParams, ensemble: Ensemble = Ensemble(),
                    rng: np.random.Generator | None = None) -> list[Collision]:
     """The collisions after the observed frames, simulated from the state at the last of them of every object they
-    show; with an ensemble (`rng` draws its perturbations), each pair that collides in enough of its runs, at the
-    median of its first contacts' frames."""
+    show; with an ensemble (`rng` draws its perturbations, by default the scene's own stream), each pair that
+    collides in enough of its runs, at the median of its first contacts' frames."""
+    rng = future_rng(scene.name) if rng is None else rng
     last = scene.observed_frames - 1
     seen = [o.id for o in scene.objects if scene.visible[: last + 1, scene.index(o.id)].any()]
     if not seen:
