@@ -44,6 +44,17 @@ def test_an_aeroplane_is_placed_at_the_heads_distance_in_the_air():
     assert m.flying and abs(m.yaw + 2.5) < 1e-6
 
 
+def test_a_knocked_over_two_wheeler_is_placed_at_its_own_height():
+    pos = np.array([1.5, -1.0, 0.26])    # a dirt bike on its side: its centre well under its resting height
+    det = _detection(pos, 0.3, "dirtbike")
+    standing = place(CAMERA, det, "dirtbike")
+    lying = place(CAMERA, det, "dirtbike", height=0.26)
+    np.testing.assert_allclose(lying.position, pos, atol=1e-6)
+    assert lying.lying and not standing.lying
+    # placed at the resting height, the ray meets that plane too far from the camera
+    assert np.linalg.norm(standing.position - pos) > 0.5
+
+
 def test_measurement_covariance_is_loose_along_the_ray_only():
     m = place(CAMERA, _detection(np.array([0.0, 0.0, resting_height("suv")]), 0.0, "suv"))
     C = m.covariance(0.04, 0.25)

@@ -22,6 +22,7 @@ from dynclevr.perception.detector import Detection
 
 SUBTYPE_NAMES = list(SUBTYPES)
 IS_PLANE = np.array([SUBTYPES[s][0] == "aeroplane" for s in SUBTYPE_NAMES])
+TIPS_OVER = ("bicycle", "motorbike")   # two wheels: a knock lays them on their side, below their resting height
 
 
 @lru_cache(maxsize=None)
@@ -39,6 +40,7 @@ class Measurement:
     flying: bool
     detection: Detection
     confidence: float | None = None   # the rendering likelihood, where render-and-compare refined it
+    lying: bool = False       # a ground vehicle placed at a height of its own, not its resting height
 
     def covariance(self, across: float, along: float) -> np.ndarray:
         """3x3: `across` metres of standard deviation across the ray, `along` (per 10 m of distance) along it."""
@@ -53,21 +55,26 @@ def camera_ray(camera: Camera, u: float, v: float) -> np.ndarray:
     return w / np.linalg.norm(w)
 
 
-def place(camera: Camera, det: Detection, shape: str | None = None) -> Measurement:
-    """`shape`: the sub-type to place it as (a track's, from all its frames); None: the detection's own."""
+def detection_shape(det: Detection) -> str:
+    """The detection's own sub-type: the likeliest plane where planes hold over half its belief, else the likeliest
+    ground vehicle."""
+    flying = float(np.exp(det.subtype_logp)[IS_PLANE].sum()) > 0.5
+    return SUBTYPE_NAMES[int(np.argmax(np.where(IS_PLANE == flying, det.subtype_logp, -np.inf)))]
+
+
+def place(camera: Camera, det: Detection, shape: str | None = None, height: float | None = None) -> Measurement:
+    """`shape`: the sub-type to place it as (a track's, from all its frames); None: the detection's own.
+    `height`: a ground vehicle's centre height where it is not its resting height (a track's, knocked over)."""
     eye = np.asarray(camera.position, float)
     ray = camera_ray(camera, det.u, det.v)
-    if shape is None:
-        flying = float(np.exp(det.subtype_logp)[IS_PLANE].sum()) > 0.5
-        if not flying:
-            shape = SUBTYPE_NAMES[int(np.argmax(np.where(IS_PLANE, -np.inf, det.subtype_logp)))]
-    else:
-        flying = SUBTYPES[shape][0] == "aeroplane"
+    shape = detection_shape(det) if shape is None else shape
+    flying = SUBTYPES[shape][0] == "aeroplane"
     if flying:
         centre = eye + ray * det.dist
     else:
-        reach = (resting_height(shape) - eye[2]) / min(ray[2], -1e-3)
+        reach = ((resting_height(shape) if height is None else height) - eye[2]) / min(ray[2], -1e-3)
         # a ray that never meets the plane in front (the centre above the horizon) falls back to the distance
         centre = eye + ray * (reach if 0 < reach < 3 * det.dist else det.dist)
     yaw = det.alpha + math.atan2(centre[1] - eye[1], centre[0] - eye[0])
-    return Measurement(centre, math.atan2(math.sin(yaw), math.cos(yaw)), ray, flying, det)
+    return Measurement(centre, math.atan2(math.sin(yaw), math.cos(yaw)), ray, flying, det,
+                       lying=not flying and height is not None)
