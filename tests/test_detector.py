@@ -55,6 +55,25 @@ def test_a_knocked_over_two_wheeler_is_placed_at_its_own_height():
     assert np.linalg.norm(standing.position - pos) > 0.5
 
 
+def test_a_landed_aeroplane_is_pinned_by_the_ground_not_its_distance():
+    pos = np.array([-1.0, 2.5, resting_height("biplane")])
+    det = _detection(pos, 1.1, "biplane")
+    det.dist *= 0.9                      # a tenth too near: a metre along the ray, above the floor
+    flying, landed = place(CAMERA, det, "biplane"), place(CAMERA, det, "biplane", height=resting_height("biplane"))
+    assert np.linalg.norm(flying.position - pos) > 0.5 and not flying.landed
+    np.testing.assert_allclose(landed.position, pos, atol=1e-6)
+    assert landed.landed and landed.flying and not landed.lying
+
+
+def test_an_aeroplane_is_never_placed_under_the_floor():
+    pos = np.array([0.5, 1.0, resting_height("jet") + 0.05])
+    det = _detection(pos, 0.0, "jet")
+    det.dist *= 1.3                      # the camera looks down: that far along the ray is under the floor
+    m = place(CAMERA, det, "jet")
+    assert abs(m.position[2] - resting_height("jet")) < 1e-6 and m.landed
+    assert np.linalg.norm(m.position - pos) < 0.5
+
+
 def test_measurement_covariance_is_loose_along_the_ray_only():
     m = place(CAMERA, _detection(np.array([0.0, 0.0, resting_height("suv")]), 0.0, "suv"))
     C = m.covariance(0.04, 0.25)

@@ -467,3 +467,23 @@ def test_a_two_wheeler_lying_still_is_placed_and_held_where_it_lies():
     late = slice(30, T)
     assert np.linalg.norm(est.position[late, 0] - pos[late], axis=1).max() < 0.2
     assert est.objects[0].speed_class == "static" and np.linalg.norm(est.velocity[late, 0], axis=1).max() < 0.3
+
+
+def test_a_landed_plane_is_placed_on_the_ground_though_its_distance_is_biased():
+    """A fighter on the ground, its distances read 8% too near in every frame (the head's bias per object is a few
+    percent; too far would put it under the floor): the head's heights at its resting height put it on the ground
+    plane, where the ray pins it; a plane the heights show in the air stays at the head's distance."""
+    cfg = Config.load()
+    rng = np.random.default_rng(5)
+    for height, within in ((resting_height("fighter"), 0.2), (2.4, None)):
+        pos = np.tile([0.5, 2.0, height], (T, 1))
+        dets = _detections(pos, -0.6, "fighter", rng)
+        for d in dets:
+            d[0].dist *= 0.92
+            d[0].height += rng.normal(0, 0.03)
+        est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+        err = np.median(np.linalg.norm(est.position[10:, 0] - pos[10:], axis=1))
+        if within is None:
+            assert err > 0.5          # no ground to pin it: the distance's bias stays
+        else:
+            assert err < within

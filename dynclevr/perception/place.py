@@ -3,7 +3,8 @@ measurement (DESIGN.md: place).
 
 The centre pixel fixes the camera ray. A ground vehicle rests on the ground plane, so its centre is where the ray
 meets the plane z = its resting height (a sub-pixel centre pins it to centimetres across the ray and about a
-decimetre along it); an aeroplane flies, so its centre is at the head's distance along the ray. The heading is
+decimetre along it); an aeroplane flies, so its centre is at the head's distance along the ray, until it has landed
+on the ground, where its resting-height plane pins it as a ground vehicle's. The heading is
 the head's yaw relative to the ray plus the ray's azimuth. The measurement's uncertainty is anisotropic: tight
 across the ray, looser along it (`Measurement.covariance`).
 """
@@ -41,11 +42,18 @@ class Measurement:
     detection: Detection
     confidence: float | None = None   # the rendering likelihood, where render-and-compare refined it
     lying: bool = False       # a ground vehicle placed at a height of its own, not its resting height
+    landed: bool = False      # an aeroplane on the ground, placed on its resting-height plane
 
     def covariance(self, across: float, along: float) -> np.ndarray:
         """3x3: `across` metres of standard deviation across the ray, `along` (per 10 m of distance) along it."""
         along_sd = along * max(self.detection.dist, 1.0) / 10.0
         return across ** 2 * np.eye(3) + (along_sd ** 2 - across ** 2) * np.outer(self.ray, self.ray)
+
+    def noise(self, p: dict) -> np.ndarray:
+        """The covariance with the parser's noise along the ray: a standing ground vehicle's, or the looser one of
+        a centre the ground plane does not pin (in the air, or at a height read from the head)."""
+        standing = not self.flying and not self.lying
+        return self.covariance(p["measure_across"], p["measure_along"] if standing else p["measure_along_flying"])
 
 
 def camera_ray(camera: Camera, u: float, v: float) -> np.ndarray:
@@ -64,17 +72,19 @@ def detection_shape(det: Detection) -> str:
 
 def place(camera: Camera, det: Detection, shape: str | None = None, height: float | None = None) -> Measurement:
     """`shape`: the sub-type to place it as (a track's, from all its frames); None: the detection's own.
-    `height`: a ground vehicle's centre height where it is not its resting height (a track's, knocked over)."""
+    `height`: the plane its centre lies in where it is not a standing ground vehicle's resting height (a track's
+    own height: a two-wheeler knocked over, an aeroplane landed; `tracker.own_height`)."""
     eye = np.asarray(camera.position, float)
     ray = camera_ray(camera, det.u, det.v)
     shape = detection_shape(det) if shape is None else shape
     flying = SUBTYPES[shape][0] == "aeroplane"
-    if flying:
-        centre = eye + ray * det.dist
-    else:
+    centre = eye + ray * det.dist
+    if flying and height is None and centre[2] < resting_height(shape):
+        height = resting_height(shape)   # under the floor: the distance is too long, and the ray meets the ground first
+    if not flying or height is not None:
         reach = ((resting_height(shape) if height is None else height) - eye[2]) / min(ray[2], -1e-3)
         # a ray that never meets the plane in front (the centre above the horizon) falls back to the distance
         centre = eye + ray * (reach if 0 < reach < 3 * det.dist else det.dist)
     yaw = det.alpha + math.atan2(centre[1] - eye[1], centre[0] - eye[0])
     return Measurement(centre, math.atan2(math.sin(yaw), math.cos(yaw)), ray, flying, det,
-                       lying=not flying and height is not None)
+                       lying=not flying and height is not None, landed=flying and height is not None)

@@ -86,23 +86,29 @@ def parser_params(cfg: Config) -> dict:
     return p
 
 
-# a knocked-over two-wheeler: LIE_VOTES of its last LIE_FRAMES detections' heights over LIE_OFF metres off its
-# resting height (upright, the head's height is 0.013 m off at the median; tilted, 0.08 m; 40 full-val videos)
-LIE_FRAMES, LIE_VOTES, LIE_OFF = 7, 5, 0.12
+# A height of its own (`own_height`) from the head's heights of a track's last LIE_FRAMES detections, LIE_VOTES of
+# them agreeing. A knocked-over two-wheeler: over LIE_OFF metres off its resting height (upright, the head's height
+# is 0.013 m off at the median; tilted, 0.08 m; 40 full-val videos). A landed aeroplane: within LAND_OFF of it
+# (on the ground, 88% of the head's heights are; in the air, 5%; 100 full-val videos).
+LIE_FRAMES, LIE_VOTES, LIE_OFF, LAND_OFF = 7, 5, 0.12, 0.15
 
 
-def lying_height(shape: str, heights: list[float]) -> float | None:
-    """A knocked-over two-wheeler's centre height from the head's heights of its detections (the latest last): the
-    median of the last LIE_FRAMES where LIE_VOTES of them are over LIE_OFF off its resting height (all of them, for a
-    track younger than that); None where it stands. One frame's height is centimetres off, which is decimetres along
-    a ray this flat: the median holds still."""
-    if SUBTYPES[shape][0] not in TIPS_OVER:
+def own_height(shape: str, heights: list[float]) -> float | None:
+    """The height of the plane that the next detection's centre lies in, from the head's heights of the track's
+    detections (the latest last), where it is not where its sub-type's placement puts it (None): a knocked-over
+    two-wheeler's, the median of the last LIE_FRAMES where LIE_VOTES of them are over LIE_OFF off its resting height;
+    a landed aeroplane's, its resting height where LIE_VOTES of them are within LAND_OFF of it (all of them, for a
+    track younger than LIE_FRAMES). One frame's height is centimetres off, which is decimetres along a ray this flat:
+    the median holds still. A plane on the ground is pinned by the ground as a car is, where its distance is the
+    head's guess from its size."""
+    category, recent, rest = SUBTYPES[shape][0], heights[-LIE_FRAMES:], resting_height(shape)
+    if category not in TIPS_OVER and category != "aeroplane":
         return None
-    recent, rest = heights[-LIE_FRAMES:], resting_height(shape)
-    off = sum(abs(h - rest) > LIE_OFF for h in recent)
-    if off < (LIE_VOTES if len(recent) >= LIE_FRAMES else len(recent)):
+    off = [abs(h - rest) > (LAND_OFF if category == "aeroplane" else LIE_OFF) for h in recent]
+    agree = sum(off) if category in TIPS_OVER else len(off) - sum(off)
+    if agree < (LIE_VOTES if len(recent) >= LIE_FRAMES else len(recent)):
         return None
-    return float(np.median(recent))
+    return rest if category == "aeroplane" else float(np.median(recent))
 
 
 CATEGORY_OF = np.array([[SUBTYPES[s][0] == c for s in SUBTYPES] for c in CATEGORIES], float)   # [5, 21]
@@ -149,7 +155,7 @@ class Track:
     measured: list = field(default_factory=list)     # (frame, measured position) while the engine is undecided
     z: list = field(default_factory=list)            # the measured position per frame (NaN: no detection)
     heights: list = field(default_factory=list)      # the head's centre heights of its detections
-    lying: bool = False                              # a two-wheeler knocked onto its side (lying_height)
+    lying: bool = False                              # a two-wheeler knocked onto its side (own_height)
     surprises: int = 0                               # consecutive measurements far outside the prediction
     scores: list = field(default_factory=list)       # its confidence (head score, or the rendering likelihood)
     lost: int = 0
@@ -213,7 +219,7 @@ class SceneParser:
                     mu, mu_vel = self._predict(t, active)
                     pairs = self._associate(active, mu, dets)
                     meas = {i: place(self.camera, dets[j], active[i].shape,
-                                     lying_height(active[i].shape, active[i].heights + [dets[j].height]))
+                                     own_height(active[i].shape, active[i].heights + [dets[j].height]))
                             for i, j in pairs.items()}
                     if feats is not None and meas:
                         self._refine(active, mu, meas, feats[t])
@@ -228,7 +234,7 @@ class SceneParser:
                     if self._second_peak(d, taken):
                         continue
                     shape = detection_shape(d)
-                    m = place(self.camera, d, shape, lying_height(shape, [d.height]))
+                    m = place(self.camera, d, shape, own_height(shape, [d.height]))
                     k = Track(len(tracks), t, np.zeros(len(SUBTYPES)), np.zeros(len(COLOR_NAMES)), heights=[d.height])
                     self._init_filter(k, m)
                     self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), m, t)
@@ -357,7 +363,7 @@ class SceneParser:
     def _init_filter(self, k: Track, m: Measurement) -> None:
         p = self.p
         cov = np.zeros((6, 6))
-        cov[:3, :3] = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying or m.lying else p["measure_along"])
+        cov[:3, :3] = m.noise(p)
         cov[3:, 3:] = p["initial_speed"] ** 2 * np.eye(3)
         k.cov = cov
         k.yaw_var = p["measure_yaw"] ** 2
@@ -397,7 +403,7 @@ class SceneParser:
         if not prior:
             self._record(k, np.array([*z, m.yaw, 0.0, 0.0]), m, t)
             return
-        R = m.covariance(p["measure_across"], p["measure_along_flying"] if m.flying or m.lying else p["measure_along"])
+        R = m.noise(p)
         if k.cloud is not None:
             x = self._particle_update(k, z, R)
         else:
