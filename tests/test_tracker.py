@@ -14,7 +14,7 @@ from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, heading_
                                           slope, smoothed_motion)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
-from dynclevr.perception.tracker import SceneParser
+from dynclevr.perception.tracker import SceneParser, own_height
 from dynclevr.physics import Body, PhysicsParams, ground_height, simulate, yaw_quaternion
 
 from conftest import onehot
@@ -487,3 +487,14 @@ def test_a_landed_plane_is_placed_on_the_ground_though_its_distance_is_biased():
             assert err > 0.5          # no ground to pin it: the distance's bias stays
         else:
             assert err < within
+
+
+def test_own_height_votes_over_the_last_detections():
+    plane, bike = resting_height("jet"), resting_height("dirtbike")
+    assert own_height("sedan", [0.1] * 7) is None                       # four wheels never lie nor land
+    assert own_height("jet", [plane + 0.05] * 3) == plane               # a young track: all of them agree
+    assert own_height("jet", [plane + 0.05] * 2 + [plane + 1.0]) is None
+    assert own_height("jet", [plane + 1.0] * 9 + [plane] * 5 + [plane + 1.0] * 2) == plane   # 5 of the last 7
+    assert own_height("jet", [plane] * 4 + [plane + 1.0] * 3) is None
+    assert abs(own_height("dirtbike", [bike - 0.3, bike - 0.28, bike - 0.32]) - (bike - 0.3)) < 1e-9
+    assert own_height("dirtbike", [bike] * 7) is None

@@ -102,10 +102,12 @@ def own_height(shape: str, heights: list[float]) -> float | None:
     the median holds still. A plane on the ground is pinned by the ground as a car is, where its distance is the
     head's guess from its size."""
     category, recent, rest = SUBTYPES[shape][0], heights[-LIE_FRAMES:], resting_height(shape)
-    if category not in TIPS_OVER and category != "aeroplane":
+    if category in TIPS_OVER:
+        agree = sum(abs(h - rest) > LIE_OFF for h in recent)
+    elif category == "aeroplane":
+        agree = sum(abs(h - rest) <= LAND_OFF for h in recent)
+    else:
         return None
-    off = [abs(h - rest) > (LAND_OFF if category == "aeroplane" else LIE_OFF) for h in recent]
-    agree = sum(off) if category in TIPS_OVER else len(off) - sum(off)
     if agree < (LIE_VOTES if len(recent) >= LIE_FRAMES else len(recent)):
         return None
     return rest if category == "aeroplane" else float(np.median(recent))
