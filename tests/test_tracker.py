@@ -172,6 +172,31 @@ def test_a_falling_plane_is_not_floating_at_the_start_and_a_floating_one_is(fall
     assert bool(est.floating[start, 0]) is not falls
 
 
+def test_two_floating_planes_struck_in_the_air_float_on_at_a_constant_vertical_speed():
+    """Two floating planes collide at different heights and leave the impact climbing and sinking: nothing but
+    an impact changes a floating body's vertical velocity, so after it the estimate's is constant and its labels
+    say "floating" (local fits to noisy heights read a vertical acceleration there, and "not floating")."""
+    from dynclevr.questions.labels import compute_labels
+
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    bodies = [Body("jet", (-3.0, 0.0, 2.6), yaw_quaternion(0.0), (4.0, 0.0, 0.0), floating=True),
+              Body("fighter", (3.0, 0.0, 3.4), yaw_quaternion(math.pi), (-4.0, 0.0, 0.0), floating=True)]
+    tr = simulate(bodies, params, T)
+    impact = tr.collisions[0].frame
+    assert all(abs(tr.velocity[-1, i, 2]) > 1.0 for i in range(2))     # one sinks, one climbs
+    rng = np.random.default_rng(3)
+    per = [_detections(tr.position[:, i], yaw, b.shape, rng) for i, (b, yaw) in enumerate(zip(bodies, (0.0, math.pi)))]
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn",
+                                                                   [a + b for a, b in zip(*per)])
+    labels = compute_labels(est, cfg["labels"])
+    after = slice(impact + 8, T)
+    for i in range(2):
+        j = int(np.argmin([np.linalg.norm(est.position[0, j] - tr.position[0, i]) for j in range(len(est.objects))]))
+        assert np.abs(est.velocity[after, j, 2] - tr.velocity[after, i, 2]).max() < 0.2
+        assert labels.floating[after, j].mean() > 0.9
+
+
 @pytest.mark.parametrize("falls", [True, False], ids=["falling", "floating"])
 def test_vertical_motion_tells_a_fall_from_a_drifting_floating_plane(falls):
     """The head's heights of a floating plane drift smoothly by decimetres (its distance error moves the centre

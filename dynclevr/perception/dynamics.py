@@ -134,6 +134,17 @@ class VerticalMotion:
         return -self.gravity * t if self.z0 - 0.5 * self.gravity * t * t > self.rest else None
 
 
+def floating_vz(heights: np.ndarray, fps: int, min_samples: int) -> float | None:
+    """A floating body's vertical speed over a stretch between impacts from its measured heights [n] (NaN: no
+    detection): its force cancels gravity, so nothing but an impact changes its vertical velocity and its heights
+    lie on a line (fitted robust to bad detections). None with fewer than min_samples measurements."""
+    seen = np.isfinite(heights)
+    if seen.sum() < min_samples:
+        return None
+    t = np.arange(len(heights))[seen] / fps
+    return float(_robust_fit(t, heights[seen, None], min_samples, quadratic=False)[1, 0])
+
+
 def speed_class(speed: float, slow: float, fast: float) -> str:
     centres = {"static": 0.0, "slow": slow, "fast": fast}
     return min(centres, key=lambda k: abs(centres[k] - speed))
@@ -277,12 +288,15 @@ def _weighted_line(t: np.ndarray, xy: np.ndarray, W: np.ndarray) -> np.ndarray:
 OUTLIER_MADS, OUTLIER_FLOOR = 3.0, 0.15    # a residual above 3 robust sigmas (and 15 cm) is a bad detection
 
 
-def _robust_fit(t: np.ndarray, z: np.ndarray, min_samples: int, rounds: int = 3) -> np.ndarray:
-    """`_fit` (quadratic from 2 x min_samples samples, else linear) without the measurements it explains worst: a
-    detection placed on a neighbour, or with its depth metres off, would otherwise bend every fit it is in."""
+def _robust_fit(t: np.ndarray, z: np.ndarray, min_samples: int, rounds: int = 3, quadratic: bool = True
+                ) -> np.ndarray:
+    """`_fit` (quadratic from 2 x min_samples samples where `quadratic`, else linear) without the measurements it
+    explains worst: a detection placed on a neighbour, or with its depth metres off, would otherwise bend every fit
+    it is in."""
     keep = np.ones(len(t), bool)
+    allow = quadratic
     for _ in range(rounds):
-        quadratic = keep.sum() >= 2 * min_samples
+        quadratic = allow and keep.sum() >= 2 * min_samples
         coef = _fit(t[keep], z[keep], quadratic)
         basis = np.stack([np.ones_like(t), t] + ([0.5 * t * t] if quadratic else []), 1)
         r = np.linalg.norm(z - basis @ coef, axis=1)
@@ -290,4 +304,4 @@ def _robust_fit(t: np.ndarray, z: np.ndarray, min_samples: int, rounds: int = 3)
         if (ok == keep).all() or ok.sum() < min_samples:
             return coef
         keep = ok
-    return _fit(t[keep], z[keep], keep.sum() >= 2 * min_samples)
+    return _fit(t[keep], z[keep], allow and keep.sum() >= 2 * min_samples)

@@ -810,6 +810,8 @@ class SceneParser:
         # In the air nothing but an engine changes a body's horizontal speed, floating or falling alike (a falling
         # plane's horizontal motion is a floating one's); friction starts when it lands.
         airborne = (pos[:, 2] > size[2] / 2 + 0.2) if category == "aeroplane" else np.zeros(len(z), bool)
+        floats = category == "aeroplane" and (k.floating_decided if k.floating_decided is not None
+                                              else floating.mean() > 0.5)
         W = dynamics.ray_weights(z, np.asarray(self.camera.position, float), p["measure_across"],
                                  p["measure_along_flying"] if category == "aeroplane" else p["measure_along"])
 
@@ -885,6 +887,12 @@ class SceneParser:
                 edges[i] = best[1]
             i += 1
         for lo, hi in zip(edges[:-1], edges[1:]):
+            if floats and airborne[lo:hi].all() and (lo > 0 or k.floating_decided is None):
+                # a floating plane's vertical velocity changes at impacts only (before the first, `_vertical` gives
+                # it where floating was decided); local fits to the head's heights read a vertical acceleration
+                vz = dynamics.floating_vz(z[lo:hi, 2], self.fps, need)
+                if vz is not None:
+                    vel[lo:hi, 2] = vz
             f = fit(lo, hi, engines(lo))
             if f is None:
                 continue
