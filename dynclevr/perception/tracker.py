@@ -887,9 +887,9 @@ class SceneParser:
                 edges[i] = best[1]
             i += 1
         for lo, hi in zip(edges[:-1], edges[1:]):
-            if floats and airborne[lo:hi].all() and (lo > 0 or k.floating_decided is None):
+            if floats and airborne[lo:hi].all() and lo > 0:
                 # a floating plane's vertical velocity changes at impacts only (before the first, `_vertical` gives
-                # it where floating was decided); local fits to the head's heights read a vertical acceleration
+                # it); local fits to the head's heights read a vertical acceleration
                 vz = dynamics.floating_vz(z[lo:hi, 2], self.fps, need)
                 if vz is not None:
                     vel[lo:hi, 2] = vz
