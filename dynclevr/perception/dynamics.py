@@ -294,14 +294,13 @@ def _robust_fit(t: np.ndarray, z: np.ndarray, min_samples: int, rounds: int = 3,
     explains worst: a detection placed on a neighbour, or with its depth metres off, would otherwise bend every fit
     it is in."""
     keep = np.ones(len(t), bool)
-    allow = quadratic
     for _ in range(rounds):
-        quadratic = allow and keep.sum() >= 2 * min_samples
-        coef = _fit(t[keep], z[keep], quadratic)
-        basis = np.stack([np.ones_like(t), t] + ([0.5 * t * t] if quadratic else []), 1)
+        curved = quadratic and keep.sum() >= 2 * min_samples
+        coef = _fit(t[keep], z[keep], curved)
+        basis = np.stack([np.ones_like(t), t] + ([0.5 * t * t] if curved else []), 1)
         r = np.linalg.norm(z - basis @ coef, axis=1)
         ok = r <= max(OUTLIER_MADS * 1.4826 * float(np.median(r[keep])), OUTLIER_FLOOR)
         if (ok == keep).all() or ok.sum() < min_samples:
             return coef
         keep = ok
-    return _fit(t[keep], z[keep], allow and keep.sum() >= 2 * min_samples)
+    return _fit(t[keep], z[keep], quadratic and keep.sum() >= 2 * min_samples)
