@@ -8,7 +8,7 @@ import torch
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.perception.detector import CHANNELS, OUT, STRIDE, Detection, DetectNet, decode
+from dynclevr.perception.detector import CHANNELS, OUT, STRIDE, Detection, DetectNet, decode, mirror, run
 from dynclevr.perception.detector_data import LABEL_COLUMNS, azimuth
 from dynclevr.perception.detector_train import COL, losses, targets
 from dynclevr.perception.place import place, resting_height
@@ -102,6 +102,19 @@ def test_targets_decode_back_to_the_labels():
     tg = targets(lab, h, w)
     assert len(tg["cells"]) == 2                       # the third is hidden (10 pixels): neither positive ...
     assert tg["ignore"][round(40 / STRIDE - 0.5), round(40 / STRIDE - 0.5)]   # ... nor negative
+    maps = _maps(tg, h, w)
+    dets = sorted(decode(maps, 0.5), key=lambda d: d.u)
+    assert len(dets) == 2
+    for d, row in zip(dets, lab[:2]):
+        assert abs(d.u - row[COL["u"]]) < 1e-4 and abs(d.v - row[COL["v"]]) < 1e-4
+        assert int(np.argmax(d.subtype_logp)) == int(row[COL["subtype"]])
+        assert int(np.argmax(d.color_logp)) == int(row[COL["color"]])
+        assert abs(d.alpha - row[COL["alpha"]]) < 1e-5
+        assert abs(math.log(d.dist) - row[COL["logdist"]]) < 1e-5 and abs(d.height - row[COL["height"]]) < 1e-5
+
+
+def _maps(tg: dict, h: int, w: int) -> torch.Tensor:
+    """The maps [OUT, h, w] a perfect head would give for `targets`' output."""
     maps = torch.full((OUT, h, w), 0.0)
     maps[0] = torch.logit(torch.from_numpy(tg["heat"]).clamp(1e-4, 1 - 1e-4) * 0.999)
     for (r, c), g in zip(tg["cells"], tg["regs"]):
@@ -111,14 +124,33 @@ def test_targets_decode_back_to_the_labels():
         maps[CHANNELS["alpha"], r, c] = torch.tensor(g[4:6])
         maps[CHANNELS["logdist"], r, c] = float(g[6])
         maps[CHANNELS["height"], r, c] = float(g[7])
-    dets = sorted(decode(maps, 0.5), key=lambda d: d.u)
+    return maps
+
+
+def test_the_maps_of_a_mirrored_frame_mirror_back_to_the_frames_objects():
+    lab = _labels([
+        dict(u=101.3, v=77.9, pixels=900, subtype=5, color=2, alpha=1.0, logdist=math.log(9.0), height=0.6, radius=30),
+        dict(u=250.6, v=160.2, pixels=400, subtype=17, color=7, alpha=-2.0, logdist=math.log(14.0), height=2.4,
+             radius=20)])
+    h, w = 240 // STRIDE, 320 // STRIDE
+    seen = lab.copy()                      # the mirrored frame's labels, as detector_train.augment mirrors them
+    seen[:, COL["u"]] = 320 - seen[:, COL["u"]]
+    seen[:, COL["alpha"]] = -seen[:, COL["alpha"]]
+    dets = sorted(decode(mirror(_maps(targets(seen, h, w), h, w)[None])[0], 0.5), key=lambda d: d.u)
     assert len(dets) == 2
-    for d, row in zip(dets, lab[:2]):
+    for d, row in zip(dets, lab):
         assert abs(d.u - row[COL["u"]]) < 1e-4 and abs(d.v - row[COL["v"]]) < 1e-4
-        assert int(np.argmax(d.subtype_logp)) == int(row[COL["subtype"]])
-        assert int(np.argmax(d.color_logp)) == int(row[COL["color"]])
         assert abs(d.alpha - row[COL["alpha"]]) < 1e-5
-        assert abs(math.log(d.dist) - row[COL["logdist"]]) < 1e-5 and abs(d.height - row[COL["height"]]) < 1e-5
+        assert int(np.argmax(d.subtype_logp)) == int(row[COL["subtype"]])
+
+
+def test_the_head_read_both_ways_is_mirror_symmetric():
+    torch.manual_seed(0)
+    net = DetectNet(width=8)
+    frames = np.random.default_rng(0).integers(0, 256, (3, 48, 64, 3), dtype=np.uint8)
+    maps = run(net, frames, flip=True)
+    assert torch.allclose(run(net, frames[:, :, ::-1], flip=True), mirror(maps), atol=1e-5)
+    assert not torch.allclose(run(net, frames[:, :, ::-1]), mirror(run(net, frames)), atol=1e-3)
 
 
 def test_an_out_of_view_centre_is_reached_through_the_offset():

@@ -175,7 +175,7 @@ def parse(frames: np.ndarray, camera: Camera, detector, cfg: Config, name: str,
     physics = PhysicsParams.from_config(cfg)
     fps, observed = int(cfg["video"]["fps"]), int(cfg["video"]["observed_frames"])
     if detections is None:
-        maps = run(detector, frames)
+        maps = run(detector, frames, flip=parser["detector_flip"])
         detections = [decode(m, parser["detect_threshold"], parser["max_detections"]) for m in maps]
     T = len(detections)
     meas = [frame_measurements(d, camera, parser["spawn_pixels"], parser["merge_radius"]) for d in detections]

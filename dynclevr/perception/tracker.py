@@ -74,7 +74,7 @@ def parser_params(cfg: Config) -> dict:
                       ("stitch_overlap", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
-    for key in ("physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion", "start_speeds",
+    for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion", "start_speeds",
                 "stitch"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
@@ -204,7 +204,7 @@ class SceneParser:
         self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
     def detect(self, frames: np.ndarray) -> list[list[Detection]]:
-        maps = run(self.detector, frames)
+        maps = run(self.detector, frames, flip=self.p["detector_flip"])
         return [decode(m, self.p["detect_threshold"], self.p["max_detections"]) for m in maps]
 
     def parse(self, frames: np.ndarray, name: str, detections: list[list[Detection]] | None = None) -> Scene4D:
