@@ -74,8 +74,8 @@ def parser_params(cfg: Config) -> dict:
                       ("stitch_overlap", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
-    for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion", "start_speeds",
-                "stitch"):
+    for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion",
+                "start_speeds", "stitch"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
     if not 0 <= p["stitch_agreement"] <= 1:
