@@ -41,7 +41,8 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception import dynamics
-from dynclevr.perception.detector import Detection, decode, run
+from dynclevr.perception.detections import detect
+from dynclevr.perception.detector import Detection
 from dynclevr.perception.place import SUBTYPE_NAMES, Measurement, place, resting_height
 from dynclevr.perception.render import euler_to_quat
 from dynclevr.physics import PhysicsParams, heading
@@ -175,8 +176,7 @@ def parse(frames: np.ndarray, camera: Camera, detector, cfg: Config, name: str,
     physics = PhysicsParams.from_config(cfg)
     fps, observed = int(cfg["video"]["fps"]), int(cfg["video"]["observed_frames"])
     if detections is None:
-        maps = run(detector, frames, flip=parser["detector_flip"])
-        detections = [decode(m, parser["detect_threshold"], parser["max_detections"]) for m in maps]
+        detections = detect(detector, frames, parser)
     T = len(detections)
     meas = [frame_measurements(d, camera, parser["spawn_pixels"], parser["merge_radius"]) for d in detections]
     objects = sorted(associate(meas, p, parser, observed), key=lambda o: (o.start, min(o.dets)))

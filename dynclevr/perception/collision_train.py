@@ -65,13 +65,15 @@ def _scene_rows(job: tuple) -> Path:
     from dynclevr.perception.tracker import SceneParser
     from dynclevr.questions.labels import merge_events
     from dynclevr.scene import Scene4D
+    from dynclevr.stages.parse_scene import scene_detections
     from dynclevr.video import Video
 
     cfg = Config(cfg_data)
     store = Store(Path(store_root), split_name)
     video = Video.read(store.path("render", scene, ".mcap"))
+    frames = video.frames()
     parser = SceneParser(*_models(), video.camera, cfg)
-    est = parser.parse(video.frames(), scene)
+    est = parser.parse(frames, scene, scene_detections(store, scene, frames, cfg))
     truth = Scene4D.read(store.path("simulate", scene, ".mcap"))
     to_est = {truth.objects[i].id: est.objects[j].id for i, j in match(truth, est)}
     true_events = merge_events(truth.collisions, cfg["labels"]["collision_merge_frames"])

@@ -40,7 +40,8 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception import collisions, dynamics, particles
-from dynclevr.perception.detector import Detection, decode, run
+from dynclevr.perception.detections import detect
+from dynclevr.perception.detector import Detection
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import (SUBTYPE_NAMES, TIPS_OVER, Measurement, detection_shape, place,
@@ -203,14 +204,10 @@ class SceneParser:
         self.rows: list = []                          # the collision classifier's inputs (collision_train.py)
         self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
-    def detect(self, frames: np.ndarray) -> list[list[Detection]]:
-        maps = run(self.detector, frames, flip=self.p["detector_flip"])
-        return [decode(m, self.p["detect_threshold"], self.p["max_detections"]) for m in maps]
-
     def parse(self, frames: np.ndarray, name: str, detections: list[list[Detection]] | None = None) -> Scene4D:
         """`detections`: per frame, in place of the head's (tests give synthetic ones)."""
         p = self.p
-        detections = self.detect(frames) if detections is None else detections
+        detections = detect(self.detector, frames, p) if detections is None else detections
         feats = extract(self.model.net, frames)[0] if p["refine"] else None
         tracks: list[Track] = []
         try:
@@ -947,5 +944,7 @@ class SceneParser:
 
 
 def parse_video(frames: np.ndarray, camera: Camera, model: ParserModel, detector, cfg: Config, name: str,
-                collision_model: collisions.CollisionModel | None = None) -> Scene4D:
-    return SceneParser(model, detector, camera, cfg, collision_model).parse(frames, name)
+                collision_model: collisions.CollisionModel | None = None,
+                detections: list[list[Detection]] | None = None) -> Scene4D:
+    """`detections`: the head's, already computed (detections.cached); None: run it."""
+    return SceneParser(model, detector, camera, cfg, collision_model).parse(frames, name, detections)

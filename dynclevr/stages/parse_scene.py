@@ -15,7 +15,9 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+from dynclevr.artifacts import Store
 from dynclevr.baselines import perframe
+from dynclevr.perception import detections
 from dynclevr.perception.collisions import DEFAULT_DIR as COLLISION_DIR
 from dynclevr.perception.collisions import CollisionModel, collision_digest
 from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
@@ -43,7 +45,7 @@ VERSION = 24  # 5: collisions from the learned classifier (weights/collision/); 
 
 @lru_cache(maxsize=1)
 def _model():
-    return ParserModel.load(DEFAULT_DIR), load_detector(DETECTOR_DIR)
+    return ParserModel.load(DEFAULT_DIR), _detector()
 
 
 @lru_cache(maxsize=1)
@@ -56,11 +58,22 @@ def run_scene(job: SceneJob) -> None:
 
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
-    if perframe.enabled(job.cfg):   # the per-frame 3D baseline (`--per-frame`): the detection head alone
-        scene = perframe.parse(video.frames(), video.camera, _detector(), job.cfg, job.scene)
+    frames, cfg = video.frames(), job.cfg
+    dets = scene_detections(job.store, job.scene, frames, cfg)
+    if perframe.enabled(cfg):   # the per-frame 3D baseline (`--per-frame`): the detection head alone
+        scene = perframe.parse(frames, video.camera, _detector(), cfg, job.scene, dets)
     else:
-        scene = parse_video(video.frames(), video.camera, *_model(), job.cfg, job.scene, _collision_model())
+        scene = parse_video(frames, video.camera, *_model(), cfg, job.scene, _collision_model(), dets)
     scene.write(job.outputs[0], kind="estimate")
+
+
+def scene_detections(store: Store, scene: str, frames, cfg) -> list:
+    """The head's detections of a video, shared by every row of the model and the per-frame baseline
+    (perception/detections.py)."""
+    parser = cfg["parser"]
+    key = detections.cache_key(store.path("render", scene, ".mcap"), detector_digest(DETECTOR_DIR), parser)
+    return detections.cached(detections.cache_path(store, scene), key,
+                             lambda: detections.detect(_detector(), frames, parser))
 
 
 @lru_cache(maxsize=1)
