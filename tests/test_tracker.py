@@ -453,20 +453,48 @@ def test_a_track_lost_and_found_again_is_one_object(stitch):
     assert float(np.median(np.linalg.norm(est.position[late, 0] - pos[late], axis=1))) < 0.15
 
 
-def test_no_track_joins_across_the_cut():
-    """The predictive questions' state at the last observed frame reads no later frame: a car lost before the cut
-    and found again after it stays two objects (joining them would put later frames into the observed ones)."""
+def test_a_track_joined_across_the_cut_keeps_the_cut_state_of_the_observed_frames():
+    """A car lost before the cut and found again after it is one object, and the predictive questions' state at the
+    last observed frame reads no later frame: it is the state a parse of the observed frames alone gives."""
     cfg = Config.load()
     cfg.data["parser"]["reacquire"] = 1.0
     cut = cfg["video"]["observed_frames"] - 1
     _, dets = _bounced_car(range(cut - 12, cut + 12))
     est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
-    assert len(est.objects) == 2
+    assert len(est.objects) == 1
+    seen = np.nonzero(est.visible[:, 0])[0]
+    assert seen[-1] == T - 1 and not est.visible[cut - 12:cut + 12, 0].any()
+    early = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((cut + 1, 1, 1, 3), np.uint8), "syn",
+                                                                     dets[:cut + 1])
+    assert set(est.cut_state) == set(early.cut_state)
+    for key, value in early.cut_state.items():
+        np.testing.assert_array_equal(est.cut_state[key], value, err_msg=key)
+
+
+def _hidden_car(shape_after: str) -> list:
+    """A parked sedan hidden (no detection) for frames 20-79; from frame 80 the detections there read
+    `shape_after`."""
+    pos = np.tile([1.0, 1.5, resting_height("sedan")], (T, 1))
+    dets = _detections(pos, 0.4, "sedan", np.random.default_rng(4))
+    late = _detections(pos, 0.4, shape_after, np.random.default_rng(5))
+    return [d if f < 20 else [] if f < 80 else late[f] for f, d in enumerate(dets)]
+
+
+@pytest.mark.parametrize("shape_after, objects", [("sedan", 1), ("suv", 2)])
+def test_after_a_long_gap_only_the_same_vehicle_joins(shape_after, objects):
+    """Hidden for a second (60 frames, beyond stitch_frames), a vehicle seen again is re-identified when sub-type
+    and colour agree; the same category (another car) is not enough after so long."""
+    cfg = Config.load()
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn",
+                                                                   _hidden_car(shape_after))
+    assert len(est.objects) == objects
 
 
 @pytest.mark.parametrize("key, value, message", [("stitch_agreement", 1.5, "must lie in"),
                                                  ("stitch_frames", -1, "non-negative integer"),
                                                  ("stitch_radius", 0.0, "must be positive"),
+                                                 ("stitch_length_share", -0.5, "must be positive"),
+                                                 ("reid_agreement", -0.1, "must lie in"),
                                                  ("stitch", "yes", "must be true or false")])
 def test_a_bad_stitching_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError

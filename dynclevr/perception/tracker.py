@@ -57,7 +57,7 @@ POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
             "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
-            "angular_window", "stitch_radius")
+            "angular_window", "stitch_radius", "stitch_length_share")
 
 
 def parser_params(cfg: Config) -> dict:
@@ -79,8 +79,9 @@ def parser_params(cfg: Config) -> dict:
                 "start_speeds", "stitch"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
-    if not 0 <= p["stitch_agreement"] <= 1:
-        raise ConfigError(f"'parser.stitch_agreement' = {p['stitch_agreement']!r} must lie in [0, 1]")
+    for key in ("stitch_agreement", "reid_agreement"):
+        if not 0 <= p[key] <= 1:
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in [0, 1]")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
@@ -127,6 +128,14 @@ def _appearance(subtype_logp: np.ndarray, color_logp: np.ndarray) -> tuple[np.nd
 def _agreement(cat_a, col_a, cat_b, col_b) -> float:
     """Mean Bhattacharyya coefficient of the category and colour distributions: 1 alike, 0 disjoint."""
     return 0.5 * float(np.sqrt(cat_a * cat_b).sum() + np.sqrt(col_a * col_b).sum())
+
+
+def _identity(a: "Track", b: "Track") -> float:
+    """_agreement over sub-types instead of categories: the same vehicle, not only the same kind."""
+    def dist(logp):
+        e = np.exp(logp - logp.max())
+        return e / e.sum()
+    return _agreement(dist(a.subtype_logp), dist(a.color_logp), dist(b.subtype_logp), dist(b.color_logp))
 
 
 def _wrap(a: float) -> float:
@@ -596,9 +605,13 @@ class SceneParser:
 
         Joined when alike (category and colour agreement >= stitch_agreement), the younger starting within
         stitch_frames after the older's last detection (or up to stitch_overlap frames before it), near where the
-        older was (within stitch_radius, plus a fast vehicle's travel over the gap); the closest such pair first.
-        Causal at the cut: the predictive questions' state at the last observed frame reads no later frame, so a
-        track found by then joins on the observed frames alone, and none joins across a gap that spans the cut."""
+        older was: within stitch_radius plus stitch_length_share of the vehicle's length (a long vehicle's centre
+        wanders along it while part of it is hidden), plus a fast vehicle's travel over the gap; the closest such
+        pair first. After a longer gap (a vehicle hidden behind another for a second, or gone out of view and
+        back) the two must be the same vehicle, not only the same kind: sub-type and colour agreement >=
+        reid_agreement. Causal at the cut: the predictive questions' state at the last observed frame reads no
+        later frame, so a track found by then joins on the observed frames alone, and a join across the cut keeps
+        the older's estimate up to it (which it still coasts on there)."""
         p, cut = self.p, self.observed - 1
         if not p["stitch"]:
             return
@@ -607,8 +620,7 @@ class SceneParser:
         for a in live:
             pa, ca = _appearance(a.subtype_logp, a.color_logp)
             for b in live:
-                if b.start <= a.start or _agreement(pa, ca, *_appearance(b.subtype_logp, b.color_logp)) \
-                        < p["stitch_agreement"]:
+                if b.start <= a.start:
                     continue
                 # a younger track found by the cut joins on what the observed frames show
                 horizon = cut if b.start <= cut else len(a.seen) + a.start
@@ -617,15 +629,27 @@ class SceneParser:
                 seen = [a.start + i for i, v in enumerate(a.seen[:horizon + 1 - a.start]) if v]
                 last = seen[-1] if seen else -1
                 gap = b.start - last
-                if not seen or not -p["stitch_overlap"] <= gap <= p["stitch_frames"] or last < cut < b.start:
+                if not seen or gap < -p["stitch_overlap"]:
                     continue
+                if gap <= p["stitch_frames"]:
+                    if _agreement(pa, ca, *_appearance(b.subtype_logp, b.color_logp)) < p["stitch_agreement"]:
+                        continue
+                elif _identity(a, b) < p["reid_agreement"]:
+                    continue
+                if last < cut < b.start:     # keep the older's estimate through the cut, where it still has one
+                    if a.start + len(a.pose) <= cut:
+                        continue
+                    last_kept = cut
+                else:
+                    last_kept = last
                 # where the older one was when the younger started (while they overlap, its pose then); an impact
                 # in the gap may have sent it anywhere a fast vehicle goes
                 then = np.asarray(a.z[last - a.start] if gap >= 0 else a.pose[b.start - a.start][:3], float)
                 speed = max(float(np.linalg.norm(a.vel[last - a.start][:2])), self.physics.fast_speed)
                 d = float(np.linalg.norm(then - np.asarray(b.z[0])))
-                if d <= p["stitch_radius"] + speed * max(gap, 0) / self.fps:
-                    pairs.append((d, a, b, last))
+                reach = p["stitch_radius"] + p["stitch_length_share"] * max(SUBTYPES[a.shape][1])
+                if d <= reach + speed * max(gap, 0) / self.fps:
+                    pairs.append((d, a, b, last_kept))
         taken = set()
         for _, a, b, last in sorted(pairs, key=lambda x: x[0]):
             if a.id in taken or b.id in taken:
