@@ -118,11 +118,16 @@ def own_height(shape: str, heights: list[float]) -> float | None:
 CATEGORY_OF = np.array([[SUBTYPES[s][0] == c for s in SUBTYPES] for c in CATEGORIES], float)   # [5, 21]
 
 
+def _distribution(logp: np.ndarray) -> np.ndarray:
+    """Summed log evidence -> probabilities."""
+    e = np.exp(logp - logp.max())
+    return e / e.sum()
+
+
 def _appearance(subtype_logp: np.ndarray, color_logp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(category, colour) distributions from summed log evidence. Categories, not sub-types: the head confuses a
     tandem with a road bike far more often than a bike with a bus."""
-    ps, pc = np.exp(subtype_logp - subtype_logp.max()), np.exp(color_logp - color_logp.max())
-    return CATEGORY_OF @ (ps / ps.sum()), pc / pc.sum()
+    return CATEGORY_OF @ _distribution(subtype_logp), _distribution(color_logp)
 
 
 def _agreement(cat_a, col_a, cat_b, col_b) -> float:
@@ -132,10 +137,8 @@ def _agreement(cat_a, col_a, cat_b, col_b) -> float:
 
 def _identity(a: "Track", b: "Track") -> float:
     """_agreement over sub-types instead of categories: the same vehicle, not only the same kind."""
-    def dist(logp):
-        e = np.exp(logp - logp.max())
-        return e / e.sum()
-    return _agreement(dist(a.subtype_logp), dist(a.color_logp), dist(b.subtype_logp), dist(b.color_logp))
+    return _agreement(_distribution(a.subtype_logp), _distribution(a.color_logp),
+                      _distribution(b.subtype_logp), _distribution(b.color_logp))
 
 
 def _wrap(a: float) -> float:
