@@ -453,6 +453,26 @@ def test_a_track_lost_and_found_again_is_one_object(stitch):
     assert float(np.median(np.linalg.norm(est.position[late, 0] - pos[late], axis=1))) < 0.15
 
 
+def _thrice_lost_car() -> list:
+    """A sedan seen in three stretches (frames 0-19, 35-49, 65-89), each time 2.5 m further along (pushed while no
+    detection saw it): the tracker alone makes three tracks of it."""
+    x = np.where(np.arange(T) < 35, -4.0, np.where(np.arange(T) < 65, -1.5, 1.0))
+    pos = np.stack([x, np.full(T, 0.5), np.full(T, resting_height("sedan"))], 1)
+    dets = _detections(pos, 0.0, "sedan", np.random.default_rng(6))
+    return [[] if 20 <= f < 35 or 50 <= f < 65 else d for f, d in enumerate(dets)]
+
+
+@pytest.mark.parametrize("stitch, objects", [(False, 3), (True, 1)])
+def test_a_vehicle_lost_twice_is_one_object(stitch, objects):
+    """Stitching joins one pair at a time and then looks again: the first two fragments, once joined, join the
+    third (joining each track at most once left two objects)."""
+    cfg = Config.load()
+    cfg.data["parser"].update(stitch=stitch, reacquire=1.0)
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn",
+                                                                   _thrice_lost_car())
+    assert len(est.objects) == objects
+
+
 def test_a_track_joined_across_the_cut_keeps_the_cut_state_of_the_observed_frames():
     """A car lost before the cut and found again after it is one object, and the predictive questions' state at the
     last observed frame reads no later frame: it is the state a parse of the observed frames alone gives."""

@@ -610,15 +610,23 @@ class SceneParser:
         stitch_frames after the older's last detection (or up to stitch_overlap frames before it), near where the
         older was: within stitch_radius plus stitch_length_share of the vehicle's length (a long vehicle's centre
         wanders along it while part of it is hidden), plus a fast vehicle's travel over the gap; the closest such
-        pair first. After a longer gap (a vehicle hidden behind another for a second, or gone out of view and
-        back) the two must be the same vehicle, not only the same kind: sub-type and colour agreement >=
-        reid_agreement. Causal at the cut: the predictive questions' state at the last observed frame reads no
+        pair first, then again with the joined track (a vehicle lost three times is one object). After a longer
+        gap (a vehicle hidden behind another for a second, or gone out of view and back) the two must be the same
+        vehicle, not only the same kind: sub-type and colour agreement >= reid_agreement. Causal at the cut: the predictive questions' state at the last observed frame reads no
         later frame, so a track found by then joins on the observed frames alone, and a join across the cut keeps
         the older's estimate up to it (which it still coasts on there)."""
-        p, cut = self.p, self.observed - 1
-        if not p["stitch"]:
+        if not self.p["stitch"]:
             return
-        live = [k for k in tracks if k.confirmed is not None]
+        while True:     # one join at a time: the joined track may join the next fragment of the same vehicle
+            pairs = self._stitch_pairs([k for k in tracks if k.confirmed is not None])
+            if not pairs:
+                return
+            _, a, b, last = min(pairs, key=lambda x: x[0])
+            self._join(a, b, last)
+
+    def _stitch_pairs(self, live: list[Track]) -> list[tuple[float, Track, Track, int]]:
+        """(distance, older, younger, the older's last frame kept) of every pair _stitch may join."""
+        p, cut = self.p, self.observed - 1
         pairs = []
         for a in live:
             pa, ca = _appearance(a.subtype_logp, a.color_logp)
@@ -653,12 +661,7 @@ class SceneParser:
                 reach = p["stitch_radius"] + p["stitch_length_share"] * max(SUBTYPES[a.shape][1])
                 if d <= reach + speed * max(gap, 0) / self.fps:
                     pairs.append((d, a, b, last_kept))
-        taken = set()
-        for _, a, b, last in sorted(pairs, key=lambda x: x[0]):
-            if a.id in taken or b.id in taken:
-                continue
-            taken |= {a.id, b.id}
-            self._join(a, b, last)
+        return pairs
 
     def _join(self, a: Track, b: Track, last: int) -> None:
         """Track a continues with b's frames from b's start; a gap between a's last detection and b's start is a
