@@ -612,9 +612,10 @@ class SceneParser:
         wanders along it while part of it is hidden), plus a fast vehicle's travel over the gap; the closest such
         pair first, then again with the joined track (a vehicle lost three times is one object). After a longer
         gap (a vehicle hidden behind another for a second, or gone out of view and back) the two must be the same
-        vehicle, not only the same kind: sub-type and colour agreement >= reid_agreement. Causal at the cut: the predictive questions' state at the last observed frame reads no
-        later frame, so a track found by then joins on the observed frames alone, and a join across the cut keeps
-        the older's estimate up to it (which it still coasts on there)."""
+        vehicle, not only the same kind: sub-type and colour agreement >= reid_agreement. Causal at the cut: the
+        predictive questions' state at the last observed frame reads no later frame, so a track found by then joins
+        on the observed frames alone, and a join across the cut keeps the older's estimate up to it (which it
+        still coasts on there)."""
         if not self.p["stitch"]:
             return
         while True:     # one join at a time: the joined track may join the next fragment of the same vehicle
