@@ -46,9 +46,11 @@ def _rows_key(cfg: Config) -> str:
     from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
     from dynclevr.perception.detector_train import detector_digest
     from dynclevr.perception.model import DEFAULT_DIR, manifest_digest
+    from dynclevr.stages.parse_scene import VERSION
 
+    # the parser's version too: a change to the tracker changes the rows
     text = "|".join([json.dumps(cfg.digest("parser", "physics", "video", "labels"), sort_keys=True), detector_digest(DETECTOR_DIR),
-                     manifest_digest(DEFAULT_DIR), ",".join(collisions.FEATURES)])
+                     manifest_digest(DEFAULT_DIR), ",".join(collisions.FEATURES), f"parse-scene {VERSION}"])
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
