@@ -21,9 +21,6 @@ object's last contact in the physics engine.
 
 from __future__ import annotations
 
-import itertools
-import math
-
 import numpy as np
 from scipy.spatial.transform import Rotation
 
@@ -227,18 +224,13 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
 
 
 def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarray, t0: float,
-                   starts: list[tuple[float, float]], min_samples: int, axis_sigma: float = 0.0
-                   ) -> tuple[np.ndarray, int] | None:
+                   starts: list[tuple[float, float]], min_samples: int) -> tuple[np.ndarray, int] | None:
     """The physics prior for a body in the air before its first impact, whose distance is the head's alone: it
     moves along its heading (the generator launches every vehicle forwards), from a start speed at frame 0 changed
     since at a known rate. The heading fixes the line that `segment_motion` has to fit from the measurements, whose
     error is mostly along the camera ray; so the speed is read where the measurements are tight (across the ray),
     and the few start speeds (`starts`: (speed at frame 0, rate in m/s^2)) compete in the measurements' own metric
     (`weights` [n, 2, 2], `ray_weights`).
-
-    The heading is itself an estimate: with `axis_sigma` (radians, its error's standard deviation) the line may
-    turn off it, up to 3 sigma, at a cost of (turn / axis_sigma)^2 in the same chi-square metric, so the
-    measurements across the ray correct the heading where they are clear.
 
     `z` [n, 3] measured positions (NaN: none) of frames t0 * fps + 0..n-1; `axis` [3] the heading's axis (either
     way). -> (horizontal velocities [n, 3], the index of the start that explains them best); None: fewer than
@@ -248,14 +240,11 @@ def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarra
         return None
     xy, W = z[idx, :2], weights[idx]
     tau = t0 + idx / fps
-    yaw = math.atan2(axis[1], axis[0])
-    turns = np.linspace(-3 * axis_sigma, 3 * axis_sigma, 13) if axis_sigma > 0 else np.zeros(1)
+    u = np.asarray(axis, float)[:2] / max(float(np.linalg.norm(axis[:2])), 1e-9)
     best = None
     for n, (v0, rate) in enumerate(starts):
         travel = v0 * tau + 0.5 * rate * tau ** 2
-        for sign, turn in itertools.product((1.0,) if v0 == 0 and rate == 0 else (1.0, -1.0),
-                                            (0.0,) if v0 == 0 and rate == 0 else turns):
-            u = np.array([math.cos(yaw + turn), math.sin(yaw + turn)])
+        for sign in ((1.0,) if v0 == 0 and rate == 0 else (1.0, -1.0)):
             path = travel[:, None] * (sign * u)
             keep = np.ones(len(idx), bool)
             for _ in range(2):   # a bad detection out, as in segment_motion
@@ -267,14 +256,12 @@ def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarra
                     break
                 keep = ok
             cost = float(np.minimum(d2, 9.0 * max(1.0, float(np.median(d2)))).sum())
-            if axis_sigma > 0:
-                cost += (turn / axis_sigma) ** 2
             if best is None or cost < best[0]:
-                best = cost, n, sign * u
-    _, n, u = best
+                best = cost, n, sign
+    _, n, sign = best
     v0, rate = starts[n]
     speed = v0 + rate * (t0 + np.arange(len(z)) / fps)
-    return np.concatenate([speed[:, None] * u, np.zeros((len(z), 1))], 1), n
+    return np.concatenate([speed[:, None] * (sign * u), np.zeros((len(z), 1))], 1), n
 
 
 def ray_weights(z: np.ndarray, eye: np.ndarray, across: float, along: float) -> np.ndarray:

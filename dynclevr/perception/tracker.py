@@ -79,9 +79,6 @@ def parser_params(cfg: Config) -> dict:
                 "start_speeds", "stitch"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
-    if p["plane_heading_sigma"] < 0:
-        raise ConfigError(f"'parser.plane_heading_sigma' = {p['plane_heading_sigma']!r} must not be negative "
-                          "(degrees; 0: along the estimated heading)")
     for key in ("stitch_agreement", "reid_agreement"):
         if not 0 <= p[key] <= 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in [0, 1]")
@@ -955,8 +952,7 @@ class SceneParser:
         yaw = np.array([math.atan2(h[1], h[0]) for h in heading(np.array(k.quat[:len(z)]))])
         axis = 0.5 * math.atan2(np.sin(2 * yaw).mean(), np.cos(2 * yaw).mean())
         g = dynamics.heading_motion(z, W, self.fps, np.array([math.cos(axis), math.sin(axis), 0.0]),
-                                    k.start / self.fps, starts, p["min_fit_frames"],
-                                    math.radians(p["plane_heading_sigma"]))
+                                    k.start / self.fps, starts, p["min_fit_frames"])
         if g is None:
             return None
         return 0.0, g[1] > 2, g[0]
