@@ -510,13 +510,46 @@ def test_after_a_long_gap_only_the_same_vehicle_joins(shape_after, objects):
     assert len(est.objects) == objects
 
 
+def _weak_bike(score: float, every: int = 1) -> list:
+    """A parked mountain bike whose detections all score `score`, under the start bar (0.8), in every `every`-th
+    frame only."""
+    pos = np.tile([0.5, 1.0, resting_height("mountain_bike")], (T, 1))
+    dets = _detections(pos, 0.3, "mountain_bike", np.random.default_rng(8))
+    for f, frame in enumerate(dets):
+        for d in frame:
+            d.score = score
+    return [d if f % every == 0 else [] for f, d in enumerate(dets)]
+
+
+@pytest.mark.parametrize("score, every, weak_frames, objects",
+                         [(0.65, 1, 10, 1), (0.65, 1, 0, 0), (0.5, 1, 10, 0), (0.65, 3, 10, 0)],
+                         ids=["persistent", "weak-start-off", "under-the-weak-bar", "flickering"])
+def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, every, weak_frames, objects):
+    """A vehicle the head reads at 0.65 in every frame (a bicycle half behind a car) never reaches the start bar,
+    and was never found; 10 such detections within 12 frames, each within a gate of the last, now start its track,
+    which is then confirmed and reported at its place. Weaker ones (under weak_track_score) or ones in every third
+    frame only (a flickering false peak) start none."""
+    cfg = Config.load()
+    cfg.data["parser"].update(weak_track_frames=weak_frames)
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn",
+                                                                   _weak_bike(score, every))
+    assert len(est.objects) == objects
+    if objects:
+        seen = np.nonzero(est.visible[:, 0])[0]
+        assert 9 <= seen[0] <= 20 and seen[-1] == T - 1
+        assert est.objects[0].shape == "mountain_bike" and est.objects[0].speed_class == "static"
+        assert np.linalg.norm(est.position[-1, 0, :2] - [0.5, 1.0]) < 0.2
+
+
 @pytest.mark.parametrize("key, value, message", [("stitch_agreement", 1.5, "must lie in"),
                                                  ("stitch_frames", -1, "non-negative integer"),
                                                  ("stitch_radius", 0.0, "must be positive"),
                                                  ("stitch_length_share", -0.5, "must be positive"),
                                                  ("reid_agreement", -0.1, "must lie in"),
-                                                 ("stitch", "yes", "must be true or false")])
-def test_a_bad_stitching_value_is_one_clear_line(key, value, message):
+                                                 ("stitch", "yes", "must be true or false"),
+                                                 ("weak_track_score", 1.2, "must lie in"),
+                                                 ("weak_track_frames", 2.5, "non-negative integer")])
+def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 
     cfg = Config.load()

@@ -68,11 +68,12 @@ def parser_params(cfg: Config) -> dict:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
     if p["filter"] not in ("single", "particle"):
         raise ConfigError(f"'parser.filter' = {p['filter']!r} must be \"single\" (the paper's prior) or \"particle\"")
-    for key in ("detect_threshold", "new_track_score", "jump_rate", "outlier_rate"):
+    for key in ("detect_threshold", "new_track_score", "weak_track_score", "jump_rate", "outlier_rate"):
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
-                      ("stitch_overlap", "")):
+                      ("stitch_overlap", ""), ("weak_track_frames", "; 0: no track starts under the start bar"),
+                      ("weak_track_window", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
     for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion",
@@ -213,6 +214,7 @@ class SceneParser:
         self.gcam = GridCamera(camera)
         self.world: World | None = None
         self.candidates = collisions.Candidates()
+        self.chains: list[list[tuple[int, float, float]]] = []   # persistent weak detections (`_persistent`)
         self.rows: list = []                          # the collision classifier's inputs (collision_train.py)
         self.mesh_index = {s: i for i, s in enumerate(model.meshes.subtypes)}
 
@@ -240,17 +242,14 @@ class SceneParser:
                 used = set(pairs.values())
                 taken = self._footprints(tracks)
                 for j, d in enumerate(dets):
-                    if j in used or d.score < p["new_track_score"]:
+                    if j in used or d.score < p["new_track_score"] or self._second_peak(d, taken):
                         continue
-                    if self._second_peak(d, taken):
-                        continue
-                    shape = detection_shape(d)
-                    m = place(self.camera, d, shape, own_height(shape, [d.height]))
-                    k = Track(len(tracks), t, np.zeros(len(SUBTYPES)), np.zeros(len(COLOR_NAMES)), heights=[d.height])
-                    self._init_filter(k, m)
-                    self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), m, t)
-                    tracks.append(k)
-                    taken += self._footprints([k])
+                    taken += self._footprints([self._start(tracks, d, t)])
+                weak = [d for j, d in enumerate(dets) if j not in used
+                        and p["weak_track_score"] <= d.score < p["new_track_score"]
+                        and not self._second_peak(d, taken, reach=2.0)]
+                for d in self._persistent(weak, t) if p["weak_track_frames"] else []:
+                    self._start(tracks, d, t)
                 for k in tracks:
                     if k.end is None or k.end == t + 1:
                         self._dynamics(k, t)
@@ -259,6 +258,35 @@ class SceneParser:
                 self.world.close()
                 self.world = None
         return self._scene(name, tracks, len(detections))
+
+    def _start(self, tracks: list[Track], d: Detection, t: int) -> Track:
+        """A new track from an unexplained detection."""
+        shape = detection_shape(d)
+        m = place(self.camera, d, shape, own_height(shape, [d.height]))
+        k = Track(len(tracks), t, np.zeros(len(SUBTYPES)), np.zeros(len(COLOR_NAMES)), heights=[d.height])
+        self._init_filter(k, m)
+        self._record(k, np.array([*m.position, m.yaw, 0.0, 0.0]), m, t)
+        tracks.append(k)
+        return k
+
+    def _persistent(self, weak: list[Detection], t: int) -> list[Detection]:
+        """The unexplained detections under the start bar that persist: each extends the chain of such detections
+        whose last is within gate_pixels of it, a frame or two earlier; a chain of weak_track_frames within
+        weak_track_window frames starts a track at its latest (a bicycle behind a car reads 0.4-0.7 for a second
+        and never reaches the start bar; a false peak on a tracked vehicle's image is a second peak, not weak)."""
+        p = self.p
+        self.chains = [c for c in self.chains if c[-1][0] >= t - 2]
+        out = []
+        for d in weak:
+            near = [c for c in self.chains if c[-1][0] < t and math.hypot(d.u - c[-1][1], d.v - c[-1][2]) < p["gate_pixels"]]
+            chain = min(near, key=lambda c: math.hypot(d.u - c[-1][1], d.v - c[-1][2])) if near else []
+            if not near:
+                self.chains.append(chain)
+            chain.append((t, d.u, d.v))
+            if sum(f > t - p["weak_track_window"] for f, _, _ in chain) >= p["weak_track_frames"]:
+                self.chains.remove(chain)
+                out.append(d)
+        return out
 
     # ---- the filter's steps ------------------------------------------------------------------------------------
 
@@ -281,12 +309,13 @@ class SceneParser:
                 out.append((u, v, r, *_appearance(k.subtype_logp, k.color_logp)))
         return out
 
-    def _second_peak(self, d: Detection, taken: list) -> bool:
-        """A detection on a tracked object's image: within spawn_pixels of its centre, or within its footprint
-        and alike (category and colour; a different vehicle may well stand in front of a bus)."""
+    def _second_peak(self, d: Detection, taken: list, reach: float = 1.0) -> bool:
+        """A detection on a tracked object's image: within spawn_pixels of its centre, or within `reach` times its
+        footprint and alike (category and colour; a different vehicle may well stand in front of a bus)."""
         pd, pc = _appearance(d.subtype_logp, d.color_logp)
         return any(math.hypot(d.u - u, d.v - v) < self.p["spawn_pixels"]
-                   or (math.hypot(d.u - u, d.v - v) < r and _agreement(pd, pc, tc, tcol) >= self.p["reacquire_agreement"])
+                   or (math.hypot(d.u - u, d.v - v) < reach * r
+                       and _agreement(pd, pc, tc, tcol) >= self.p["reacquire_agreement"])
                    for u, v, r, tc, tcol in taken)
 
     def _predict(self, t: int, active: list[Track]) -> tuple[np.ndarray, np.ndarray]:
