@@ -1,5 +1,6 @@
 """The scene parser's filter over time, on synthetic detections of a known trajectory."""
 
+import dataclasses
 import math
 
 import numpy as np
@@ -9,9 +10,9 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
-from dynclevr.perception.detector_data import azimuth
-from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, heading_motion, ray_weights, segment_motion,
-                                          slope, smoothed_motion)
+from dynclevr.perception.detector_data import azimuth, yaw_of
+from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, front_back_heading, heading_motion, ray_weights,
+                                          segment_motion, slope, smoothed_motion)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser, own_height
@@ -548,7 +549,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("reid_agreement", -0.1, "must lie in"),
                                                  ("stitch", "yes", "must be true or false"),
                                                  ("weak_track_score", 1.2, "must lie in"),
-                                                 ("weak_track_frames", 2.5, "non-negative integer")])
+                                                 ("weak_track_frames", 2.5, "non-negative integer"),
+                                                 ("heading_support", 0, "must be positive")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 
@@ -604,3 +606,43 @@ def test_own_height_votes_over_the_last_detections():
     assert own_height("jet", [plane] * 4 + [plane + 1.0] * 3) is None
     assert abs(own_height("dirtbike", [bike - 0.3, bike - 0.28, bike - 0.32]) - (bike - 0.3)) < 1e-9
     assert own_height("dirtbike", [bike] * 7) is None
+
+
+def _flipped_headings(yaws, flipped) -> list:
+    """A parked suv whose heading is `yaws[t]`, the head reading it back to front in the frames of `flipped`."""
+    pos = np.tile([1.0, 1.0, resting_height("suv")], (T, 1))
+    dets = _detections(pos, 0.0, "suv", np.random.default_rng(3))
+    for t, frame in enumerate(dets):
+        frame[0] = dataclasses.replace(frame[0], alpha=frame[0].alpha + yaws[t] + math.pi * (t in flipped))
+    return dets
+
+
+@pytest.mark.parametrize("spin", [0.0, 0.04], ids=["still", "spinning"])
+def test_the_heads_front_back_flips_do_not_turn_the_heading(spin):
+    """The head reads a vehicle back to front now and then, the first two frames included; runs of up to 3. A body
+    turns a few degrees a frame (0.04 rad a frame is 2.4 rad/s), so the track keeps its heading through the flips,
+    and turns round from its flipped start once the readings against it outnumber those for it (a young track's
+    speed is noise, and the rule that a driving vehicle faces its motion flips a few more readings there)."""
+    rng = np.random.default_rng(4)
+    flipped = {0, 1} | {int(t) + d for t in rng.choice(np.arange(8, T - 4, 6), 8, replace=False) for d in range(
+        int(rng.integers(1, 4)))}
+    yaws = 1.0 + spin * np.arange(T)
+    est = SceneParser(ParserModel.load(), None, CAMERA, Config.load()).parse(
+        np.zeros((T, 1, 1, 3), np.uint8), "syn", _flipped_headings(yaws, flipped))
+    err = np.abs(np.angle(np.exp(1j * (yaw_of(est.orientation[:, 0]) - yaws))))
+    assert err[:2].min() > 2.5 and err[12:].max() < 0.35
+
+
+def test_front_back_heading_ignores_short_confusions_and_follows_lasting_ones():
+    """Readings 100 degrees off are the head's confusion while those for the heading outnumber them (at most
+    `support_cap`, here 5), then a turn the head saw late; a flip is folded back, and lasting flips turn it round."""
+    yaws = np.full(40, 0.5)
+    yaws[5:8] = 0.5 + np.radians(100)            # 3 confused readings: skipped
+    yaws[10] = np.nan                            # no detection: coasts
+    yaws[12:14] = 0.5 + np.pi                    # 2 flips: folded back
+    yaws[20:] = 0.5 - np.radians(100)            # lasting: followed from the 6th
+    out = front_back_heading(yaws, 5, 0.05, 0.3)
+    assert np.abs(out[:25] - 0.5).max() < 1e-9
+    assert np.abs(out[25:] - yaws[25:]).max() < 1e-9
+    turned = front_back_heading(np.r_[np.full(10, 0.5), np.full(10, 0.5 + np.pi)], 5, 0.05, 0.3)
+    assert np.abs(turned[:15] - 0.5).max() < 1e-9 and abs(np.angle(np.exp(1j * (turned[-1] - 0.5 - np.pi)))) < 1e-6

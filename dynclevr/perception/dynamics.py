@@ -145,6 +145,45 @@ def floating_vz(heights: np.ndarray, fps: int, min_samples: int) -> float | None
     return float(_robust_fit(t, heights[seen, None], min_samples, quadratic=False)[1, 0])
 
 
+def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, measure_yaw: float) -> np.ndarray:
+    """The heading per frame from the head's readings `yaws` [n] (NaN: none), causal (frame t reads frames <= t).
+
+    A body turns a few degrees a frame, even spun by an impact (the data's 90th percentile is 1.6 rad/s, under
+    2 degrees a frame at 60 fps). So a reading within 45 degrees of the heading so far confirms it; one facing
+    against it is the head's front/back flip, folded back; one further off either way is the head's confusion,
+    skipped. Flips and confusions count against the heading, confirmations for it (at most `support_cap`):
+    where those against outnumber them, the heading was the flip (it turns round) or the body turned where the
+    head lost it (the heading restarts at the reading). A filter that took each flip as a turn would be dragged by
+    its gain times 180 degrees, to either side."""
+    out = np.full(len(yaws), np.nan)
+    yaw, var, support = None, 0.0, 0
+    for t, y in enumerate(yaws):
+        var += yaw_sigma ** 2
+        if not np.isnan(y):
+            off = abs(_angle(y - yaw)) if yaw is not None else 0.0
+            if off <= np.pi / 4:
+                support = min(support + 1, support_cap)
+            else:
+                support -= 1
+            if yaw is None or support < 0 and off < 0.75 * np.pi:
+                yaw, var, support, off = float(y), measure_yaw ** 2, 1, 0.0
+            elif support < 0:
+                yaw, support, off = yaw + np.pi, 1, 0.0
+            elif off >= 0.75 * np.pi:
+                y, off = y + np.pi, 0.0
+            if off <= np.pi / 4:
+                gain = var / (var + measure_yaw ** 2)
+                var *= 1 - gain
+                yaw = _angle(yaw + gain * _angle(y - yaw))
+        if yaw is not None:
+            out[t] = yaw
+    return out
+
+
+def _angle(a: float) -> float:
+    return float(np.arctan2(np.sin(a), np.cos(a)))
+
+
 def speed_class(speed: float, slow: float, fast: float) -> str:
     centres = {"static": 0.0, "slow": slow, "fast": fast}
     return min(centres, key=lambda k: abs(centres[k] - speed))

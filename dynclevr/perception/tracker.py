@@ -57,7 +57,7 @@ POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
             "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
-            "angular_window", "stitch_radius", "stitch_length_share")
+            "angular_window", "stitch_radius", "stitch_length_share", "heading_support")
 
 
 def parser_params(cfg: Config) -> dict:
@@ -157,6 +157,7 @@ class Track:
     color_logp: np.ndarray
     pose: list = field(default_factory=list)        # [6] per frame from start: x, y, z, yaw, pitch, roll
     quat: list = field(default_factory=list)
+    yaws: list = field(default_factory=list)        # the head's heading per frame (NaN: no detection)
     vel: list = field(default_factory=list)
     acc: list = field(default_factory=list)
     ang: list = field(default_factory=list)
@@ -511,7 +512,7 @@ class SceneParser:
         kyaw = k.yaw_var / (k.yaw_var + p["measure_yaw"] ** 2)
         k.yaw_var *= 1 - kyaw
         yaw = _wrap(mu[3] + kyaw * _wrap(yaw_m - mu[3]))
-        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t)
+        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t, yaw_m)
 
     def _refine(self, active: list[Track], mu: np.ndarray, meas: dict[int, Measurement], feats: torch.Tensor) -> None:
         """Render-and-compare (paper, section 2.1) of this frame's measurements, jointly (occlusion-aware): from the
@@ -540,10 +541,13 @@ class SceneParser:
                         np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
                     b.end = t + 1
 
-    def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int) -> None:
+    def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int, reading: float | None = None
+                ) -> None:
+        """`reading`: the detection's heading as the heading filter took it (front/back from the motion)."""
         k.pose.append(pose)
         k.z.append(np.full(3, np.nan) if m is None else np.asarray(m.position, float).copy())
         k.quat.append(euler_to_quat(pose[3:]))
+        k.yaws.append(np.nan if m is None else m.yaw if reading is None else reading)
         k.seen.append(m is not None)
         k.scores.append(0.0 if m is None else m.detection.score if m.confidence is None else m.confidence)
         d = None if m is None else m.detection
@@ -708,11 +712,11 @@ class SceneParser:
         p0, p1 = np.asarray(a.pose[keep - 1], float), np.asarray(b.pose[0], float)
         v = np.zeros(3) if gap <= 0 else np.array([*(p1[:2] - p0[:2]) * self.fps / (gap + 1), 0.0])
         fill = [p0 + (p1 - p0) * (j + 1) / (gap + 1) for j in range(gap)]
-        for name in ("pose", "quat", "vel", "acc", "ang", "engine", "floating", "seen", "fvels", "z", "scores"):
+        for name in ("pose", "quat", "yaws", "vel", "acc", "ang", "engine", "floating", "seen", "fvels", "z", "scores"):
             if not getattr(a, name):     # the filter's velocities, without the prior
                 continue
-            mid = {"pose": fill, "quat": [a.quat[keep - 1]] * gap, "vel": [v] * gap, "fvels": [v] * gap,
-                   "acc": [np.zeros(3)] * gap, "ang": [np.zeros(3)] * gap, "engine": [False] * gap,
+            mid = {"pose": fill, "quat": [a.quat[keep - 1]] * gap, "yaws": [np.nan] * gap, "vel": [v] * gap,
+                   "fvels": [v] * gap, "acc": [np.zeros(3)] * gap, "ang": [np.zeros(3)] * gap, "engine": [False] * gap,
                    "floating": [a.floating[keep - 1]] * gap, "seen": [False] * gap,
                    "z": [np.full(3, np.nan)] * gap, "scores": [0.0] * gap}[name]
             setattr(a, name, getattr(a, name)[:keep] + mid + getattr(b, name))
@@ -727,6 +731,16 @@ class SceneParser:
                 other = y if x == b.id else x
                 if other != a.id:
                     table.setdefault((min(a.id, other), max(a.id, other)), {}).update(frames)
+
+    def _orientations(self, k: Track) -> np.ndarray:
+        """Its quaternions per frame. With the prior the heading is the head's readings filtered for front/back
+        flips (`dynamics.front_back_heading`; the filter's own, which the engine steps, follows the motion)."""
+        if not self.p["physics_prior"]:
+            return np.array(k.quat)
+        euler = np.array(k.pose)[:, 3:].copy()
+        euler[:, 0] = dynamics.front_back_heading(np.array(k.yaws), self.p["heading_support"],
+                                                  self.p["yaw_sigma"], self.p["measure_yaw"])
+        return euler_to_quat(euler)
 
     def _scene(self, name: str, tracks: list[Track], T: int) -> Scene4D:
         self._stitch(tracks)
@@ -745,7 +759,7 @@ class SceneParser:
         for i, k in enumerate(tracks):
             n = len(k.pose)
             sl = slice(k.start, k.start + n)
-            pos[sl, i], quat[sl, i] = np.array(k.pose)[:, :3], np.array(k.quat)
+            pos[sl, i], quat[sl, i] = np.array(k.pose)[:, :3], self._orientations(k)
             vel[sl, i], acc[sl, i], ang[sl, i] = np.array(k.vel), np.array(k.acc), np.array(k.ang)
             eng[sl, i], flo[sl, i] = k.engine, k.floating
             vis[sl, i] = np.array(k.seen) & (np.arange(k.start, k.start + n) >= k.confirmed)
