@@ -512,7 +512,7 @@ class SceneParser:
         kyaw = k.yaw_var / (k.yaw_var + p["measure_yaw"] ** 2)
         k.yaw_var *= 1 - kyaw
         yaw = _wrap(mu[3] + kyaw * _wrap(yaw_m - mu[3]))
-        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t, yaw_m)
+        self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t)
 
     def _refine(self, active: list[Track], mu: np.ndarray, meas: dict[int, Measurement], feats: torch.Tensor) -> None:
         """Render-and-compare (paper, section 2.1) of this frame's measurements, jointly (occlusion-aware): from the
@@ -541,13 +541,11 @@ class SceneParser:
                         np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
                     b.end = t + 1
 
-    def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int, reading: float | None = None
-                ) -> None:
-        """`reading`: the detection's heading as the heading filter took it (front/back from the motion)."""
+    def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int) -> None:
         k.pose.append(pose)
         k.z.append(np.full(3, np.nan) if m is None else np.asarray(m.position, float).copy())
         k.quat.append(euler_to_quat(pose[3:]))
-        k.yaws.append(np.nan if m is None else m.yaw if reading is None else reading)
+        k.yaws.append(np.nan if m is None else m.yaw)
         k.seen.append(m is not None)
         k.scores.append(0.0 if m is None else m.detection.score if m.confidence is None else m.confidence)
         d = None if m is None else m.detection
