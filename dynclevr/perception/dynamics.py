@@ -21,6 +21,8 @@ object's last contact in the physics engine.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from scipy.spatial.transform import Rotation
 
@@ -160,7 +162,7 @@ def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, mea
     for t, y in enumerate(yaws):
         var += yaw_sigma ** 2
         if not np.isnan(y):
-            off = abs(_angle(y - yaw)) if yaw is not None else 0.0
+            off = abs(wrap(y - yaw)) if yaw is not None else 0.0
             if off <= np.pi / 4:
                 support = min(support + 1, support_cap)
             else:
@@ -174,14 +176,15 @@ def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, mea
             if off <= np.pi / 4:
                 gain = var / (var + measure_yaw ** 2)
                 var *= 1 - gain
-                yaw = _angle(yaw + gain * _angle(y - yaw))
+                yaw = wrap(yaw + gain * wrap(y - yaw))
         if yaw is not None:
             out[t] = yaw
     return out
 
 
-def _angle(a: float) -> float:
-    return float(np.arctan2(np.sin(a), np.cos(a)))
+def wrap(a: float) -> float:
+    """An angle in (-pi, pi]."""
+    return math.atan2(math.sin(a), math.cos(a))
 
 
 def speed_class(speed: float, slow: float, fast: float) -> str:

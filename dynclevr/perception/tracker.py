@@ -145,10 +145,6 @@ def _identity(a: "Track", b: "Track") -> float:
                       _distribution(b.subtype_logp), _distribution(b.color_logp))
 
 
-def _wrap(a: float) -> float:
-    return math.atan2(math.sin(a), math.cos(a))
-
-
 @dataclass
 class Track:
     id: int
@@ -507,11 +503,11 @@ class SceneParser:
         yaw_m = m.yaw
         speed = float(np.linalg.norm(x[3:5]))
         if k.segment == 0 and speed > 1.0 and math.cos(yaw_m - math.atan2(x[4], x[3])) < 0:
-            yaw_m = _wrap(yaw_m + math.pi)
+            yaw_m = dynamics.wrap(yaw_m + math.pi)
         k.yaw_var += p["yaw_sigma"] ** 2
         kyaw = k.yaw_var / (k.yaw_var + p["measure_yaw"] ** 2)
         k.yaw_var *= 1 - kyaw
-        yaw = _wrap(mu[3] + kyaw * _wrap(yaw_m - mu[3]))
+        yaw = dynamics.wrap(mu[3] + kyaw * dynamics.wrap(yaw_m - mu[3]))
         self._record(k, np.array([*x[:3], yaw, mu[4], mu[5]]), m, t)
 
     def _refine(self, active: list[Track], mu: np.ndarray, meas: dict[int, Measurement], feats: torch.Tensor) -> None:
