@@ -9,13 +9,13 @@ import re
 
 import pytest
 
-from dynclevr import WEIGHTS_DIR
+from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError
 from dynclevr.config import Config, ConfigError
 from dynclevr.language.corpus import synthesize
 from dynclevr.language.evaluate import out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import QuestionParser, program_shape, well_formed
+from dynclevr.language.parse import QuestionParser, program_shape, synonyms, well_formed
 from dynclevr.language.references import abstract_program, concrete_program, delexicalise
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -306,3 +306,28 @@ def test_shipped_weights_leave_most_out_of_scope_questions_unparsed():
     parses = QuestionParser.load().analyse_batch(out_of_scope())
     assert all(p.reason for p in parses if p.program is None)
     assert sum(p.program is None for p in parses) >= 0.75 * len(parses)
+
+
+def test_synonym_lexicon_stands_in_only_for_unknown_words_with_known_ones():
+    """Every entry of synonyms.txt is live for the shipped parser: an unknown word, known words for it."""
+    parser = QuestionParser.load()
+    lexicon = synonyms()
+    assert len(lexicon) >= 100 and parser.synonyms == lexicon
+    red, blue = "Objects filter_attributes[red] filter_attributes[sedan] unique", \
+        "Objects filter_attributes[blue] filter_attributes[bus] unique"
+    pair = f"Events {red} filter_collision {blue} filter_collision exist".split()
+    assert parser.parse("Did the red sedan ram into the blue bus?") == pair
+    assert parser.parse("Did the red sedan smack into the blue bus in the footage?") == pair
+    assert parser.parse("Was the red sedan immobile at the onset?") == f"{red} start is_static".split()
+    # A known word keeps its own meaning: 'still' here is "even so", not "stationary".
+    still = parser.parse("If the red sedan had been parked from the start, would it still hit the blue bus?")
+    assert still is not None and "Counterfactual_static" in still
+    # Colours and vehicles no catalogue has stay unknown.
+    assert parser.parse("Did the pink sedan ram into the blue tractor?") is None
+
+
+def test_bad_synonym_lexicon_is_one_clear_error(tmp_path):
+    bad = tmp_path / "synonyms.txt"
+    bad.write_text("# fine\nrammed = hit\nsmacked into\n")
+    with pytest.raises(DynclevrError, match=r"synonyms.txt:3: expected 'word = known word\(s\)'"):
+        synonyms(bad)

@@ -2,7 +2,8 @@
 
 A question is unparsed (counted wrong) rather than given a confident wrong program when
 - it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
-  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green');
+  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green'; a word of the synonym
+  lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video');
 - a word it does not know carries the question: some step of the decoding attends to it more than
   `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
   the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
@@ -44,6 +45,21 @@ MODEL = "model.pt"
 OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
 BATCH = 256
+SYNONYMS_FILE = Path(__file__).with_name("synonyms.txt")
+
+
+def synonyms(path: Path = SYNONYMS_FILE) -> dict[str, list[str]]:
+    """The lexicon 'word = known word(s)' -> {word: [known words]}."""
+    out = {}
+    for n, line in enumerate(path.read_text().splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        word, sep, known = (x.strip() for x in line.partition("="))
+        if not sep or not word or not known or len(tokenize(word)) != 1:
+            raise DynclevrError(f"{path}:{n}: expected 'word = known word(s)', got {line!r}")
+        out[tokenize(word)[0]] = tokenize(known)
+    return out
 
 
 def operation(token: str) -> str:
@@ -72,6 +88,9 @@ class QuestionParser:
         # The operation sequences of the training programs: a decoded program must have one of them (as well as
         # pass `well_formed`), so a decoding that wanders off every template is unparsed, not executed.
         self.shapes = shapes
+        # Synonyms stand in only for words the parser does not know, and only by words it knows.
+        self.synonyms = {w: known for w, known in synonyms().items()
+                         if w not in self.known and all(k in self.known for k in known)}
 
     @classmethod
     def load(cls, dir: Path = WEIGHTS_DIR / "qparser") -> "QuestionParser":
@@ -146,6 +165,7 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
+        words = [k for w in words for k in ([w] if w in self.known else self.synonyms.get(w, [w]))]
         words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
