@@ -326,6 +326,15 @@ def test_synonym_lexicon_stands_in_only_for_unknown_words_with_known_ones():
     assert parser.parse("Did the pink sedan ram into the blue tractor?") is None
 
 
+def test_an_unknown_word_is_read_by_its_stem_but_never_an_object_word():
+    parser = QuestionParser.load()
+    assert parser._stand_in("zooms") == ["zooming"]          # the known word of its stem with its ending
+    assert parser._stand_in("collisions") == ["collision"]
+    assert parser._stand_in("hurtles") == ["racing"]         # the stem of a lexicon word ('hurtling')
+    assert parser._stand_in("jets") == ["jets"]              # no catalogue has 'jets': the copy path stays exact
+    assert parser._stand_in("florp") == ["florp"]
+
+
 def test_bad_synonym_lexicon_is_one_clear_error(tmp_path):
     bad = tmp_path / "synonyms.txt"
     bad.write_text("# fine\nrammed = hit\nsmacked into\n")

@@ -3,7 +3,8 @@
 A question is unparsed (counted wrong) rather than given a confident wrong program when
 - it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
   vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green'; a word of the synonym
-  lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video');
+  lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video'; failing
+  that, a word with the stem of a known word or of a lexicon word counts as that word: 'hovered' as 'hovering');
 - a word it does not know carries the question: some step of the decoding attends to it more than
   `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
   the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
@@ -25,6 +26,7 @@ import pickle
 from dataclasses import dataclass
 from pathlib import Path
 
+import snowballstemmer
 import torch
 
 from dynclevr import WEIGHTS_DIR, DynclevrError
@@ -91,6 +93,8 @@ class QuestionParser:
         # Synonyms stand in only for words the parser does not know, and only by words it knows.
         self.synonyms = {w: known for w, known in synonyms().items()
                          if w not in self.known and all(k in self.known for k in known)}
+        # ... and so does a word of a known word's stem, or else of a lexicon word's
+        self.stems = {**_by_stem(self.synonyms), **_by_stem({w: [w] for w in self.known})}
 
     @classmethod
     def load(cls, dir: Path = WEIGHTS_DIR / "qparser") -> "QuestionParser":
@@ -165,12 +169,23 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
-        words = [k for w in words for k in ([w] if w in self.known else self.synonyms.get(w, [w]))]
+        words = [k for w in words for k in ([w] if w in self.known else self._stand_in(w))]
         words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
         return words, ""
+
+    def _stand_in(self, word: str) -> list[str]:
+        """Known words for an unknown one: its synonym, else the known (or lexicon) word of its stem with the same
+        ending ('hovered' -> 'hovering' when no 'hovered' is known, 'zooms' -> 'zooming'), else itself."""
+        if word in self.synonyms:
+            return self.synonyms[word]
+        forms = self.stems.get(STEMMER.stemWord(word))
+        if not forms:
+            return [word]
+        same_ending = [f for f, known in forms.items() if any(f.endswith(e) and word.endswith(e) for e in ENDINGS)]
+        return forms[min(same_ending or forms, key=lambda f: (len(f), f))]
 
     def _objects(self, words: list[str], refs: list) -> str:
         """Why the question's object words name no object of the catalogue ('' when they all do)."""
@@ -208,6 +223,20 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+STEMMER = snowballstemmer.stemmer("english")
+ENDINGS = ("ing", "ed", "es", "s", "ly")
+
+
+def _by_stem(words: dict[str, list[str]]) -> dict[str, dict[str, list[str]]]:
+    """{word: known words} -> {stem: {word: known words}}. Object words have no stem: 'jets' is no vehicle of
+    the catalogue's, and a copy-path word must come exactly or as a typo of one."""
+    out: dict[str, dict[str, list[str]]] = {}
+    for w, known in sorted(words.items()):
+        if w not in OBJECT_WORDS and w.isalpha():
+            out.setdefault(STEMMER.stemWord(w), {})[w] = known
+    return out
 
 
 def well_formed(tokens: list[str]) -> bool:
