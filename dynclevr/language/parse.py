@@ -167,9 +167,9 @@ class QuestionParser:
             return [], "empty question"
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
+        words = [k for w in words for k in ([w] if w in self.known else self._stand_in(w))]
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
-        words = [k for w in words for k in ([w] if w in self.known else self._stand_in(w))]
         words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
@@ -184,7 +184,7 @@ class QuestionParser:
         forms = self.stems.get(STEMMER.stemWord(word))
         if not forms:
             return [word]
-        same_ending = [f for f, known in forms.items() if any(f.endswith(e) and word.endswith(e) for e in ENDINGS)]
+        same_ending = [f for f in forms if any(f.endswith(e) and word.endswith(e) for e in ENDINGS)]
         return forms[min(same_ending or forms, key=lambda f: (len(f), f))]
 
     def _objects(self, words: list[str], refs: list) -> str:
