@@ -63,6 +63,14 @@ def test_ask_a_batch_from_a_file(data, questions, tmp_path):
     assert rows[5]["status"] == "unparsed" and rows[5]["reason"].startswith("unknown words")
 
 
+def test_ask_says_which_words_it_read_as_others(data):
+    """A word the parser does not know, read through the synonym lexicon or its stem, is shown as evidence."""
+    out = cli(data, "ask", "Did the red sedan ram into the blue bus in the footage?", "--scene", "0", "--on", "truth")
+    assert out.stdout.startswith("program:  Events "), out.stdout + out.stderr
+    evidence = [line for line in out.stdout.splitlines() if line.startswith("evidence: read ")]
+    assert evidence == ["evidence: read 'ram' as 'hit'", "evidence: read 'footage' as 'video'"]
+
+
 @pytest.mark.parametrize("args,exit_code,says", [
     (["ask", "florp zzk blarg?", "--scene", "0", "--on", "truth"], 1, "unparsed: unknown words"),
     (["ask", "   ", "--scene", "0"], 2, "error: the question is empty"),

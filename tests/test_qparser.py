@@ -317,6 +317,7 @@ def test_synonym_lexicon_stands_in_only_for_unknown_words_with_known_ones():
         "Objects filter_attributes[blue] filter_attributes[bus] unique"
     pair = f"Events {red} filter_collision {blue} filter_collision exist".split()
     assert parser.parse("Did the red sedan ram into the blue bus?") == pair
+    assert parser.analyse_batch(["Did the red sedan ram into the blue bus?"])[0].read_as == (("ram", "hit"),)
     assert parser.parse("Did the red sedan smack into the blue bus in the footage?") == pair
     assert parser.parse("Was the red sedan immobile at the onset?") == f"{red} start is_static".split()
     # A known word keeps its own meaning: 'still' here is "even so", not "stationary".

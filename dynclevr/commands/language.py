@@ -136,15 +136,16 @@ def _answer(parser, text: str, scene, labels_cfg: dict) -> dict:
     from dynclevr.questions.programs import Executor
 
     p = parser.analyse_batch([text])[0]
+    read = [f"read '{w}' as '{k}'" for w, k in p.read_as]
     if p.program is None:
-        return {"program": "", "answer": "", "status": "unparsed", "reason": p.reason, "evidence": []}
+        return {"program": "", "answer": "", "status": "unparsed", "reason": p.reason, "evidence": read}
     trace: list = []
     try:
         answer = Executor(scene, labels_cfg).run(p.program, trace)
     except DynclevrError as e:
         return {"program": " ".join(p.program), "answer": "", "status": "failed", "reason": str(e),
-                "evidence": _evidence(trace, scene)}
-    evidence = _evidence(trace, scene)
+                "evidence": read + _evidence(trace, scene)}
+    evidence = read + _evidence(trace, scene)
     unresolved = [line for line in evidence if "no object matches" in line]
     return {"program": " ".join(p.program), "answer": answer, "status": "no-match" if unresolved else "ok",
             "reason": "; ".join(unresolved), "evidence": evidence}

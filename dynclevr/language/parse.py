@@ -23,7 +23,7 @@ from __future__ import annotations
 import io
 import json
 import pickle
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import snowballstemmer
@@ -75,10 +75,12 @@ def program_shape(tokens: list[str]) -> str:
 
 @dataclass(frozen=True)
 class Parse:
-    """A question's program (None: unparsed), why it is unparsed, and the decoding's probability."""
+    """A question's program (None: unparsed), why it is unparsed, the decoding's probability, and the words it
+    read as others (the synonym lexicon's and the stems': ('rammed', 'hit'))."""
     program: list[str] | None
     reason: str = ""
     confidence: float = 0.0
+    read_as: tuple[tuple[str, str], ...] = ()
 
 
 class QuestionParser:
@@ -137,9 +139,9 @@ class QuestionParser:
 
     def analyse_batch(self, texts: list[str]) -> list[Parse]:
         out: list[Parse | None] = [None] * len(texts)
-        todo = []
+        todo, read_as = [], {}
         for i, t in enumerate(texts):
-            words, why = self._words(t)
+            words, why, read_as[i] = self._words(t)
             if why:
                 out[i] = Parse(None, why)
             else:
@@ -156,25 +158,28 @@ class QuestionParser:
                 decoded = self.model.greedy(src, lens, self.params.max_decode_len)
             for (i, words, refs), (ids, p, attended) in zip(chunk, decoded):
                 out[i] = self._check(words, refs, ids, p, attended)
-        return out
+        return [replace(p, read_as=read_as[i]) if read_as[i] else p for i, p in enumerate(out)]
 
-    def _words(self, text) -> tuple[list[str], str]:
-        """The question's words, typos fixed; or a reason it cannot be parsed."""
+    def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
+        """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
+        be parsed; and the words read as others."""
         if not isinstance(text, str) or not text.strip():
-            return [], "empty question"
+            return [], "empty question", ()
         words = tokenize(text)
         if not words:
-            return [], "empty question"
+            return [], "empty question", ()
         if len(words) > MAX_WORDS:
-            return [], f"too long ({len(words)} words, at most {MAX_WORDS})"
-        words = [k for w in words for k in ([w] if w in self.known else self._stand_in(w))]
+            return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
+        stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
+        read_as = tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
+        words = [k for w in words for k in stand_ins.get(w, [w])]
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
         words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
-            return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown))
-        return words, ""
+            return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as
+        return words, "", read_as
 
     def _stand_in(self, word: str) -> list[str]:
         """Known words for an unknown one: its synonym, else the known (or lexicon) word of its stem with the same
