@@ -146,6 +146,8 @@ def test_copy_path_for_object_words():
     assert concrete_program(["<obj3>", "start", "is_static"], refs) is None
     with pytest.raises(ValueError):
         abstract_program("Objects filter_attributes[cyan] unique start is_static".split(), refs)
+    # A lone 'bike' is a bicycle; in a sub-type's name it is that sub-type.
+    assert delexicalise(tokenize("Did the red bike hit the road bike?"))[1] == [("red", "bicycle"), ("road_bike",)]
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):

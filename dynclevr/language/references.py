@@ -14,7 +14,9 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.questions.programs import ATTRIBUTE_VALUES
 
 # Attribute values as words: 'school_bus' is said 'school bus'; longest first, so 'school bus' is not read as 'bus'.
-_NAMES = sorted(((tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES), key=lambda kv: -len(kv[0]))
+# A lone 'bike', part of four sub-types' names, is what people call a bicycle.
+_ALIASES = ((("bike",), "bicycle"),)
+_NAMES = sorted([(tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES] + list(_ALIASES), key=lambda kv: -len(kv[0]))
 OBJECT_WORDS = frozenset(w for name, _ in _NAMES for w in name)
 _CHAIN = re.compile(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique")
 _PLACEHOLDER = re.compile(r"<obj(\d+)>")
