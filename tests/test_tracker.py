@@ -112,6 +112,27 @@ def test_a_struck_car_slides_to_rest_through_slow_and_a_parked_one_is_static():
     assert slow[hit:].sum() > 10 and np.abs(speed[slow] - truth[slow]).max() < 0.15
 
 
+def test_a_parked_car_pushed_unnoticed_is_parked_then_struck_not_driving_off():
+    """A parked sedan set moving at frame 50 by an impact too gentle for the filter to notice (2.5 m/s, then
+    friction): no engine starts a parked body (the generator's rule), so the segment motion reads a parked stretch
+    and a struck one; without `parked_split` one motion, an engine from rest, explains both."""
+    n, hit, v0 = 120, 50, 2.5
+    tau = np.clip(np.arange(n) - hit, 0, None) / FPS
+    travel = np.where(tau < v0 / 0.8, v0 * tau - 0.4 * tau ** 2, v0 ** 2 / 1.6)
+    pos = np.stack([-1.0 + travel, np.full(n, 0.5), np.full(n, ground_height("sedan"))], 1)
+    det = _detections(pos, 0.0, "sedan", np.random.default_rng(0))
+    speed, engine = {}, {}
+    for split in (True, False):
+        cfg = Config.load()
+        cfg.data["parser"]["parked_split"] = split
+        est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn", det)
+        speed[split], engine[split] = np.linalg.norm(est.velocity[:, 0, :2], axis=1), est.engine[:, 0]
+    truth = np.where(tau < v0 / 0.8, v0 - 0.8 * tau, 0.0)
+    assert (speed[True][:hit - 3] == 0).all() and not engine[True].any()
+    assert np.abs(speed[True][hit + 8:] - truth[hit + 8:]).max() < 0.2
+    assert engine[False][10] and speed[False][30] > 0.8
+
+
 def test_smoothed_motion_uses_both_sides_and_never_crosses_an_impact():
     """Constant acceleration is recovered exactly where the window is full (a quadratic fit), a few frames into a
     segment too (a causal fit has few samples there); across an impact (a break) each side keeps its own motion;
@@ -550,7 +571,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("stitch", "yes", "must be true or false"),
                                                  ("weak_track_score", 1.2, "must lie in"),
                                                  ("weak_track_frames", 2.5, "non-negative integer"),
-                                                 ("heading_support", 0, "must be positive")])
+                                                 ("heading_support", 0, "must be positive"),
+                                                 ("parked_split", 1, "must be true or false")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 

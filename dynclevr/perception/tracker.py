@@ -77,7 +77,7 @@ def parser_params(cfg: Config) -> dict:
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
     for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion",
-                "start_speeds", "stitch"):
+                "start_speeds", "stitch", "parked_split"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
     for key in ("stitch_agreement", "reid_agreement"):
@@ -958,6 +958,22 @@ class SceneParser:
             if best is not None:
                 edges[i] = best[1]
             i += 1
+        # A parked body has neither an engine nor a speed of its own (the generator's rule): where it moves later,
+        # something struck it, whether or not the filter noticed. So a first stretch on the ground that no parked
+        # start explains may be a parked stretch and a struck one.
+        if p["parked_split"] and p["start_speeds"] and len(edges) > 1 and not airborne[0]:
+            hi = edges[1]
+            whole = fit(0, hi, engines(0))
+            if whole is not None and (whole[1] or np.linalg.norm(whole[2][0, :2]) >= p["static_speed"]):
+                best = None
+                for s in range(need, hi - need + 1):
+                    left = dynamics.segment_motion(z[:s], self.fps, -self.friction_decel, p["min_fit_frames"],
+                                                   np.zeros(1), W[:s])
+                    right = fit(s, hi, (False,))
+                    if left is not None and right is not None and (best is None or left[1] + right[0] < best[0]):
+                        best = left[1] + right[0], s
+                if best is not None and best[0] + p["break_penalty"] < whole[0]:
+                    edges.insert(1, best[1])
         for lo, hi in zip(edges[:-1], edges[1:]):
             if floats and airborne[lo:hi].all() and lo > 0:
                 # a floating plane's vertical velocity changes at impacts only (before the first, `_vertical` gives
