@@ -52,8 +52,13 @@ SYNONYMS_FILE = Path(__file__).with_name("synonyms.txt")
 
 def synonyms(path: Path = SYNONYMS_FILE) -> dict[str, list[str]]:
     """The lexicon 'word = known word(s)' -> {word: [known words]}."""
+    try:
+        text = path.read_text()
+    except (OSError, UnicodeDecodeError) as e:
+        raise DynclevrError(f"the question parser's synonym lexicon {path} is unreadable ({e}): restore it "
+                            "(`git checkout -- dynclevr/language/synonyms.txt`) or reinstall dynclevr") from None
     out = {}
-    for n, line in enumerate(path.read_text().splitlines(), 1):
+    for n, line in enumerate(text.splitlines(), 1):
         line = line.split("#", 1)[0].strip()
         if not line:
             continue
