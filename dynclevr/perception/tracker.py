@@ -961,7 +961,7 @@ class SceneParser:
         # A parked body has neither an engine nor a speed of its own (the generator's rule): where it moves later,
         # something struck it, whether or not the filter noticed. So a first stretch on the ground that no parked
         # start explains may be a parked stretch and a struck one.
-        if p["parked_split"] and p["start_speeds"] and len(edges) > 1 and not airborne[0]:
+        if p["parked_split"] and p["start_speeds"] and not airborne[0]:
             hi = edges[1]
             whole = fit(0, hi, engines(0))
             if whole is not None and (whole[1] or np.linalg.norm(whole[2][0, :2]) >= p["static_speed"]):
