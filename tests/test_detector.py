@@ -239,6 +239,24 @@ def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path
     assert not (tmp_path / "data").exists()
 
 
+def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
+    import pytest
+
+    from dynclevr.config import Config, ConfigError
+    from dynclevr.perception.detector_train import shards
+
+    cfg = Config.load()
+    cfg["parser"].update(detector_shards=10, detector_heldout_shards=2, detector_first_shard=3)
+    assert shards(cfg) == [3, 4, 5, 6, 7, 8, 9]     # 3-7 train, 8 and 9 held out
+    for first in (8, -1, 2.5, True):
+        cfg["parser"]["detector_first_shard"] = first
+        with pytest.raises(ConfigError, match=r"'parser.detector_first_shard' = .* must be an integer from 0 to 7"):
+            shards(cfg)
+    cfg["parser"].update(detector_first_shard=0, detector_heldout_shards=0)
+    with pytest.raises(ConfigError, match="'parser.detector_heldout_shards' = 0 must be positive"):
+        shards(cfg)
+
+
 def _shard(path, frames: int = 3):
     import cv2
 

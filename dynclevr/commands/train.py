@@ -43,11 +43,11 @@ def register(app: typer.Typer) -> None:
                                                     help="processes decoding and augmenting the frames (0: this one)")):
         """Detection head: centre heatmap, sub-type, colour, yaw, distance and height per cell (resumable)."""
         from dynclevr.config import Config
-        from dynclevr.perception.detector_train import generate, train_detector
+        from dynclevr.perception.detector_train import generate, shards, train_detector
 
         cfg = Config.load(config)
         if data_only:
-            generate(cfg, data_dir, workers, list(range(cfg["parser"]["detector_shards"])), echo=typer.echo)
+            generate(cfg, data_dir, workers, shards(cfg), echo=typer.echo)
             return
         train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, device, loader_workers,
                        echo=typer.echo)

@@ -1,7 +1,8 @@
 """`dynclevr train detector`: the detection head on frames the generator makes on demand, resumably.
 
 Data: split `parser.detector_split` (fresh seeds, never val or test), `frames_per_video` frames per scene, in shards
-(detector_data.py). The last `detector_heldout_shards` shards are held out for the manifest's metrics.
+(detector_data.py). The last `detector_heldout_shards` shards are held out for the manifest's metrics; shards below
+`detector_first_shard` are left out, so that a head trained on them can go on with fresh frames only.
 Loss (CenterNet): penalty-reduced focal loss on the centre heatmap; at each object's centre cell (and its 3x3
 neighbourhood, weighted by the heatmap, so the neighbours of a peak answer too) L1 on the offset, cross-entropy on
 the sub-type and colour, L1 on (sin, cos) of the yaw relative to the ray, on the log distance and on the height.
@@ -289,6 +290,22 @@ def _shard_job(args):
     return str(make_shard(Config(cfg_data), split, data_dir, shard, per, fpv))
 
 
+def shards(cfg: Config) -> list[int]:
+    """The shards a run reads: from `detector_first_shard` to `detector_shards`, the last `detector_heldout_shards`
+    of them held out."""
+    p = cfg["parser"]
+    n, held, first = p["detector_shards"], p["detector_heldout_shards"], p["detector_first_shard"]
+    for key in ("detector_shards", "detector_heldout_shards"):
+        if p[key] <= 0:
+            raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
+    if held >= n:
+        raise ConfigError("'parser.detector_heldout_shards' must be fewer than 'parser.detector_shards'")
+    if not isinstance(first, int) or isinstance(first, bool) or not 0 <= first < n - held:
+        raise ConfigError(f"'parser.detector_first_shard' = {first!r} must be an integer from 0 to {n - held - 1} "
+                          "(below the held-out shards)")
+    return list(range(first, n))
+
+
 def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=print) -> list[Path]:
     p = cfg["parser"]
     split = cfg.split(p["detector_split"])
@@ -361,7 +378,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         raise ConfigError(f"--device {device}: no such device here; use cpu"
                           + (" or cuda" if torch.cuda.is_available() else ""))
     p = cfg["parser"]
-    for key in ("detector_shards", "detector_heldout_shards", "detector_batch", "detector_width"):
+    for key in ("detector_batch", "detector_width"):
         if p[key] <= 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be positive")
     blocks, fine_blocks = p.get("detector_blocks", 0), p.get("detector_fine_blocks", 0)
@@ -370,11 +387,9 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
             raise ConfigError(f"'parser.{key}' = {value!r} must be a non-negative integer")
     if resume and grow_from is not None:
         raise ConfigError("--resume and --grow-from exclude each other: grow once, then resume the grown head")
-    if p["detector_heldout_shards"] >= p["detector_shards"]:
-        raise ConfigError("'parser.detector_heldout_shards' must be fewer than 'parser.detector_shards'")
-    n, held = p["detector_shards"], p["detector_heldout_shards"]
-    paths = generate(cfg, data_dir, workers, list(range(n)), echo)
-    train, val = Frames(paths[:n - held]), Frames(paths[n - held:])
+    held = p["detector_heldout_shards"]
+    paths = generate(cfg, data_dir, workers, shards(cfg), echo)
+    train, val = Frames(paths[:-held]), Frames(paths[-held:])
     echo(f"train detector: {len(train)} training frames, {len(val)} held-out frames")
     total = steps or p["detector_steps"]
     torch.manual_seed(p["seed"])
@@ -409,7 +424,7 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     manifest["schedule_start"] = schedule_start
     manifest.update({
         "split": p["detector_split"], "split_seed": cfg.split(p["detector_split"]).seed,
-        "shards_train": [str(x.name) for x in paths[:n - held]], "shards_heldout": [str(x.name) for x in paths[n - held:]],
+        "shards_train": [str(x.name) for x in paths[:-held]], "shards_heldout": [str(x.name) for x in paths[-held:]],
         "frames_train": len(train), "frames_heldout": len(val), "steps_planned": total,
         "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks,
                    "batch": p["detector_batch"], "lr": p["detector_learning_rate"],
