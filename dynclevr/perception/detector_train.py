@@ -306,11 +306,11 @@ def shards(cfg: Config) -> list[int]:
     return list(range(first, n))
 
 
-def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=print) -> list[Path]:
+def generate(cfg: Config, data_dir: Path, workers: int, which: list[int], echo=print) -> list[Path]:
     p = cfg["parser"]
     split = cfg.split(p["detector_split"])
     per, fpv = p["detector_scenes_per_shard"], p["detector_frames_per_video"]
-    todo = [s for s in shards if not shard_path(data_dir, split, s).exists()]
+    todo = [s for s in which if not shard_path(data_dir, split, s).exists()]
     if todo:
         echo(f"train detector: making {len(todo)} shard(s) of {per} scenes x {fpv} frames (split {split.name})")
         jobs = [(cfg.data, split, Path(data_dir), s, per, fpv) for s in todo]
@@ -322,7 +322,7 @@ def generate(cfg: Config, data_dir: Path, workers: int, shards: list[int], echo=
             with ProcessPoolExecutor(size, mp_context=get_context("spawn")) as pool:
                 for k, _ in enumerate(pool.map(_shard_job, jobs[i:i + size]), start=i):
                     echo(f"  shard {k + 1}/{len(todo)}")
-    return [shard_path(data_dir, split, s) for s in shards]
+    return [shard_path(data_dir, split, s) for s in which]
 
 
 def _save(net, opt, step, out_dir: Path, manifest: dict) -> None:
