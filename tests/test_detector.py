@@ -255,6 +255,12 @@ def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
     cfg["parser"].update(detector_first_shard=0, detector_heldout_shards=0)
     with pytest.raises(ConfigError, match="'parser.detector_heldout_shards' = 0 must be positive"):
         shards(cfg)
+    # a shard past the split's last scene would be empty: one line, not a run on fewer frames than asked for
+    cfg["parser"].update(detector_heldout_shards=2, detector_scenes_per_shard=50)
+    cfg.data["splits"]["parser-train"]["scenes"] = 480
+    with pytest.raises(ConfigError, match="needs 500 scenes, but split 'parser-train' has 480: raise "
+                                          "'splits.parser-train.scenes'"):
+        shards(cfg)
 
 
 def _shard(path, frames: int = 3):

@@ -343,5 +343,5 @@ def test_bad_synonym_lexicon_is_one_clear_error(tmp_path):
     bad.write_text("# fine\nrammed = hit\nsmacked into\n")
     with pytest.raises(DynclevrError, match=r"synonyms.txt:3: expected 'word = known word\(s\)'"):
         synonyms(bad)
-    with pytest.raises(DynclevrError, match="synonym lexicon .* is unreadable .* restore it"):
+    with pytest.raises(DynclevrError, match="lexicon .* is unreadable .* restore it"):
         synonyms(tmp_path / "missing.txt")

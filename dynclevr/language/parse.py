@@ -48,15 +48,16 @@ OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
 BATCH = 256
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.txt")
+WORDNET_FILE = Path(__file__).with_name("wordnet.txt")   # made by dynclevr/language/wordnet.py
 
 
 def synonyms(path: Path = SYNONYMS_FILE) -> dict[str, list[str]]:
-    """The lexicon 'word = known word(s)' -> {word: [known words]}."""
+    """A lexicon 'word = known word(s)' -> {word: [known words]}."""
     try:
         text = path.read_text()
     except (OSError, UnicodeDecodeError) as e:
-        raise DynclevrError(f"the question parser's synonym lexicon {path} is unreadable ({e}): restore it "
-                            "(`git checkout -- dynclevr/language/synonyms.txt`) or reinstall dynclevr") from None
+        raise DynclevrError(f"the question parser's lexicon {path} is unreadable ({e}): restore it "
+                            f"(`git checkout -- dynclevr/language/{path.name}`) or reinstall dynclevr") from None
     out = {}
     for n, line in enumerate(text.splitlines(), 1):
         line = line.split("#", 1)[0].strip()
@@ -102,6 +103,13 @@ class QuestionParser:
                          if w not in self.known and all(k in self.known for k in known)}
         # ... and so does a word of a known word's stem, or else of a lexicon word's
         self.stems = {**_by_stem(self.synonyms), **_by_stem({w: [w] for w in self.known})}
+        # Last, WordNet's: an unknown word that shares a main sense with a known one (wordnet.py), read by its stem
+        # too ('hastened' as 'hasten', so 'speed'), and said with the ending it came with where a known form has it.
+        # Never for or by an object word, which only the copy path carries.
+        object_stems = {STEMMER.stemWord(w) for w in OBJECT_WORDS}
+        self.wordnet = _by_stem({w: known for w, known in synonyms(WORDNET_FILE).items()
+                                 if w not in self.known and w not in self.synonyms and STEMMER.stemWord(w) not in
+                                 object_stems and all(k in self.known and k not in OBJECT_WORDS for k in known)})
 
     @classmethod
     def load(cls, dir: Path = WEIGHTS_DIR / "qparser") -> "QuestionParser":
@@ -191,11 +199,16 @@ class QuestionParser:
         ending ('hovered' -> 'hovering' when no 'hovered' is known, 'zooms' -> 'zooming'), else itself."""
         if word in self.synonyms:
             return self.synonyms[word]
-        forms = self.stems.get(STEMMER.stemWord(word))
+        stem = STEMMER.stemWord(word)
+        forms = self.stems.get(stem)
+        if forms:
+            return forms[_same_ending(word, forms)]
+        forms = self.wordnet.get(stem)
         if not forms:
             return [word]
-        same_ending = [f for f in forms if any(f.endswith(e) and word.endswith(e) for e in ENDINGS)]
-        return forms[min(same_ending or forms, key=lambda f: (len(f), f))]
+        known = forms[_same_ending(word, forms)]
+        inflected = self.stems.get(STEMMER.stemWord(known[0]), {}) if len(known) == 1 else {}
+        return inflected[_same_ending(word, inflected)] if inflected else known
 
     def _objects(self, words: list[str], refs: list) -> str:
         """Why the question's object words name no object of the catalogue ('' when they all do)."""
@@ -237,6 +250,12 @@ class QuestionParser:
 
 STEMMER = snowballstemmer.stemmer("english")
 ENDINGS = ("ing", "ed", "es", "s", "ly")
+
+
+def _same_ending(word: str, forms) -> str:
+    """Of the forms of one stem, the one with the word's ending ('-ed', '-ing', ...), else the shortest."""
+    same = [f for f in forms if any(f.endswith(e) and word.endswith(e) for e in ENDINGS)]
+    return min(same or forms, key=lambda f: (len(f), f))
 
 
 def _by_stem(words: dict[str, list[str]]) -> dict[str, dict[str, list[str]]]:

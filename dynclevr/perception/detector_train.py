@@ -303,6 +303,10 @@ def shards(cfg: Config) -> list[int]:
     if not isinstance(first, int) or isinstance(first, bool) or not 0 <= first < n - held:
         raise ConfigError(f"'parser.detector_first_shard' = {first!r} must be an integer from 0 to {n - held - 1} "
                           "(below the held-out shards)")
+    per, split = p["detector_scenes_per_shard"], cfg.split(p["detector_split"])
+    if n * per > split.scenes:     # a shard past the split's last scene would hold no frames
+        raise ConfigError(f"'parser.detector_shards' = {n} shards of {per} scenes needs {n * per} scenes, but split "
+                          f"'{split.name}' has {split.scenes}: raise 'splits.{split.name}.scenes' or ask for fewer")
     return list(range(first, n))
 
 
