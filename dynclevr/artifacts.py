@@ -62,7 +62,8 @@ def atomic_path(path: Path):
     path = Path(path)
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        # the writer's pid in the name: a later run under the split's lock removes what a killed writer left
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=path.parent)
     except OSError as e:   # --data-dir or --out names a file, or a folder without write permission
         raise ArtifactError(f"cannot write {path} ({e.strerror}: {e.filename}): choose a writable folder") from None
     os.close(fd)

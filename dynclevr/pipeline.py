@@ -481,7 +481,21 @@ def _run_in_ray(name: str, job: SceneJob) -> None:
 # ---- one writer per split -------------------------------------------------------------------------------------------
 
 _HELD: dict[Path, int] = {}   # lock file -> nesting depth in this process (`run` takes it once per stage)
-LEFTOVER_AGE = 60.0            # seconds: a temporary file this old, found under the lock, is a killed write's
+LEFTOVER_AGE = 60.0            # seconds: a temporary file this old, found under the lock, is a killed write's,
+                               # and so is one whose writer (the pid in its name, atomic_path) has exited
+
+
+def _leftover(tmp: Path, now: float) -> bool:
+    parts = tmp.name.split(".")
+    pid = parts[-3] if len(parts) > 3 else ""
+    if pid.isdigit() and int(pid) != os.getpid():
+        try:
+            os.kill(int(pid), 0)
+        except ProcessLookupError:
+            return True
+        except OSError:     # alive, another user's
+            pass
+    return now - tmp.stat().st_mtime > LEFTOVER_AGE
 
 
 @contextlib.contextmanager
@@ -515,7 +529,7 @@ def split_lock(root: Path, echo=print):
         f.flush()
         now = time.time()
         for tmp in path.parent.rglob(".*.tmp"):
-            if now - tmp.stat().st_mtime > LEFTOVER_AGE:
+            if _leftover(tmp, now):
                 tmp.unlink(missing_ok=True)
         _HELD[path] = 1
         try:

@@ -321,3 +321,31 @@ def test_export_video_is_h264_and_refuses_other_extensions(data):
     assert "Video: h264" in probe and "yuv420p" in probe and "320x240" in probe, probe
     line = error_line(cli(data, "export-video", "--scene", "0", "--out", str(data.parent / "scene.avi")))
     assert "writes H.264 in MP4; name the file .mp4" in line and not (data.parent / "scene.avi").exists()
+
+
+def test_a_killed_writers_temporary_files_go_at_the_next_run_under_the_lock(tmp_path):
+    """Issue 14: a write's temporary file names its writer's pid, so the next run under the split's lock removes
+    what a killed writer left at once (not only after LEFTOVER_AGE), and never a live writer's."""
+    import os
+    import time
+
+    from dynclevr.artifacts import atomic_path
+    from dynclevr.pipeline import split_lock
+
+    with atomic_path(tmp_path / "video" / "000000.mcap") as tmp:
+        assert tmp.name.startswith(f".000000.mcap.{os.getpid()}.") and tmp.name.endswith(".tmp")
+    dead = subprocess.Popen([sys.executable, "-c", "pass"])
+    dead.wait()
+    files = {name: tmp_path / "video" / name for name in (
+        f".000001.mcap.{dead.pid}.k2x9a0qz.tmp",       # its writer has exited: a leftover, however young
+        f".000002.mcap.{os.getppid()}.k2x9a0qz.tmp",   # its writer is alive: kept
+        ".000003.mcap.k2x9a0qz.tmp",                   # no pid, young: kept
+        ".000004.mcap.k2x9a0qz.tmp")}                  # no pid, an hour old: a leftover
+    for path in files.values():
+        path.write_bytes(b"half a file")
+    old = time.time() - 3600
+    os.utime(files[".000004.mcap.k2x9a0qz.tmp"], (old, old))
+    with split_lock(tmp_path, echo=lambda *_: None):
+        pass
+    assert {name for name, path in files.items() if path.exists()} == {
+        f".000002.mcap.{os.getppid()}.k2x9a0qz.tmp", ".000003.mcap.k2x9a0qz.tmp"}
