@@ -25,7 +25,7 @@ FUNCTION_WORDS = frozenset("a all an and another any are as at be been can did d
                            "their there they to two very was were what when where which whose will with would "
                            "you".split())
 POS = "nvar"       # noun, verb, adjective (satellites included), adverb
-EXCEPTIONS = {"n": "noun.exc", "v": "verb.exc", "a": "adj.exc"}
+EXCEPTIONS = ("noun.exc", "verb.exc", "adj.exc")   # WordNet's irregular forms, 'form base...' per line
 HEADER = ("# Made by `python -m dynclevr.language.wordnet` from WordNet 3.0 and the question parser's vocabulary "
           "(dynclevr/language/wordnet.py says how); do not edit: add words to synonyms.txt, which comes first.\n")
 
@@ -90,7 +90,7 @@ def build(known: set[str], object_words: set[str]) -> dict[str, str]:
         if more in known and comparative(c) not in known:
             out.setdefault(comparative(c), more)
     # irregular forms: of a known word's base, or of a word read as a known one
-    for pos, name in EXCEPTIONS.items():
+    for name in EXCEPTIONS:
         for line in (root / name).read_text().splitlines():
             form, *bases = line.split()
             if form in known or form in object_words or not single(form) or form in out:
@@ -100,9 +100,9 @@ def build(known: set[str], object_words: set[str]) -> dict[str, str]:
                 if k:
                     out[form] = k
                     break
-    # nor a word that the parser reads by its stem as an object word's ('jetting', 'jets' and 'jet' share one)
+    # no word of an object word's stem ('jetting': the parser would read 'jets' by it), nor one the tokenizer
+    # changes ('colour' is the known 'color')
     object_stems = {STEMMER.stemWord(w) for w in object_words}
-    # (and one the tokenizer leaves as it is: it reads 'colour' as the known 'color')
     return {w: k for w, k in out.items() if STEMMER.stemWord(w) not in object_stems and tokenize(w) == [w]}
 
 
