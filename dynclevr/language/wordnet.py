@@ -6,8 +6,9 @@ A word unknown to the parser stands for a known one when one of its three most f
 is one of the known word's three ('proceed' and 'go', 'hasten' and 'speed'), or, for adjectives, similar to one
 ('fleet' and 'fast'); the earlier the word's sense, the likelier the reading. WordNet's irregular forms ('has' -> 'have',
 'kept' -> 'keep') and regular comparatives ('swifter' as 'swift' + -er, so 'faster') are listed too, since the
-stemmer reads neither. Object words never stand for anything and nothing stands for them: a question about 'the
-pink suv' or 'the red lorry' must stay unparsed, not be read as a question about some other object.
+stemmer reads neither. Object words never stand for anything and nothing stands for them here: a question about
+'the pink suv' must stay unparsed, not be read as one about the red suv (synonyms.txt, written by hand, may name
+an object word: 'lorry' is a truck).
 """
 
 from __future__ import annotations
