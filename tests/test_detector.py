@@ -263,6 +263,26 @@ def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
         shards(cfg)
 
 
+def test_every_nth_shard_is_path_traced_and_kept_apart():
+    import pytest
+
+    from dynclevr.config import Config, ConfigError
+    from dynclevr.perception.detector_data import shard_backend, shard_path
+
+    cfg = Config.load()
+    assert [shard_backend(cfg, s) for s in range(9)] == ["tiny"] * 9      # off by default
+    cfg["parser"]["detector_realistic_every"] = 4
+    assert [shard_backend(cfg, s) for s in range(9)] == ["tiny"] * 3 + ["mitsuba"] + ["tiny"] * 3 + ["mitsuba", "tiny"]
+    split = cfg.split("parser-train")
+    # the same scenes drawn by another backend never overwrite (or pass for) a TinyRenderer shard
+    assert shard_path("d", split, 3, "mitsuba").parent.name == "detector-mitsuba"
+    assert shard_path("d", split, 3, "tiny").parent.name == "detector"
+    for bad in (-1, 2.5, True):
+        cfg["parser"]["detector_realistic_every"] = bad
+        with pytest.raises(ConfigError, match="'parser.detector_realistic_every' = .* must be a non-negative integer"):
+            shard_backend(cfg, 0)
+
+
 def _shard(path, frames: int = 3):
     import cv2
 

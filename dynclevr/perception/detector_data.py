@@ -18,7 +18,9 @@ come from the truth and the exact instance mask:
 | radius | the object's projected half size, pixels (the heatmap's spread) |
 
 Shards (`<data>/<split>/detector/shard_NNNN.npz`) hold `scenes` of them; a shard is written atomically and reused
-when it exists, so generation resumes where it stopped.
+when it exists, so generation resumes where it stopped. With `parser.detector_realistic_every` = K, every K-th shard
+(index K-1 mod K) is path-traced by the realistic backend instead (`detector-mitsuba/shard_NNNN.npz`), so that the
+head learns what a vehicle looks like under sky light and soft shadows, not only TinyRenderer's shading.
 """
 
 from __future__ import annotations
@@ -33,7 +35,7 @@ import numpy as np
 from dynclevr.artifacts import atomic_path
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.config import Config, Split, scene_seed
+from dynclevr.config import Config, ConfigError, Split, scene_seed
 
 if TYPE_CHECKING:   # training reads shards alone: a machine without the generator's packages (mcap) trains too
     from dynclevr.scene import Scene4D
@@ -41,6 +43,7 @@ if TYPE_CHECKING:   # training reads shards alone: a machine without the generat
 LABEL_COLUMNS = ("frame", "u", "v", "pixels", "subtype", "color", "alpha", "logdist", "height", "radius")
 SUBTYPE_INDEX = {s: i for i, s in enumerate(SUBTYPES)}
 FRAME_STREAM = 0x44455445   # the frame choice draws from its own stream of the scene seed
+REALISTIC = "mitsuba"       # the backend of the path-traced shards
 
 
 def yaw_of(quat: np.ndarray) -> np.ndarray:
@@ -72,8 +75,10 @@ def frame_labels(truth: Scene4D, t: int, mask: np.ndarray, frame_row: int) -> li
     return rows
 
 
-def render_frames(cfg: Config, seed: int, frames_per_video: int) -> tuple[list[bytes], list[list[float]]]:
-    """One scene: (JPEG bytes per chosen frame, label rows with frame = index into that list)."""
+def render_frames(cfg: Config, seed: int, frames_per_video: int,
+                  backend: str | None = None) -> tuple[list[bytes], list[list[float]]]:
+    """One scene: (JPEG bytes per chosen frame, label rows with frame = index into that list), drawn by `backend`
+    (None: `render.backend`)."""
     from dynclevr.physics import PhysicsParams, simulate
     from dynclevr.render import make_renderer
     from dynclevr.render.environments import environment
@@ -88,7 +93,7 @@ def render_frames(cfg: Config, seed: int, frames_per_video: int) -> tuple[list[b
     tr = simulate(bodies, params, T)
     truth = Scene4D("train", params.fps, camera, objects, tr.position, tr.orientation, tr.velocity,
                     tr.angular_velocity, tr.acceleration, tr.engine, tr.floating, visibility(camera, tr.position))
-    r = check(cfg)
+    r = {**check(cfg), **({"backend": backend} if backend else {})}
     cam = camera.with_resolution(r["width"], r["height"])
     truth.camera = cam
     env_index, variants = appearance(seed, len(objects))
@@ -102,18 +107,28 @@ def render_frames(cfg: Config, seed: int, frames_per_video: int) -> tuple[list[b
     return jpegs, labels
 
 
-def shard_path(data_dir: Path, split: Split, shard: int) -> Path:
-    return Path(data_dir) / split.name / "detector" / f"shard_{shard:04d}.npz"
+def shard_backend(cfg: Config, shard: int) -> str:
+    every = cfg["parser"]["detector_realistic_every"]
+    if not isinstance(every, int) or isinstance(every, bool) or every < 0:
+        raise ConfigError(f"'parser.detector_realistic_every' = {every!r} must be a non-negative integer "
+                          "(0: no path-traced shards)")
+    return REALISTIC if every and shard % every == every - 1 else cfg["render"]["backend"]
+
+
+def shard_path(data_dir: Path, split: Split, shard: int, backend: str = "tiny") -> Path:
+    folder = "detector" if backend == "tiny" else f"detector-{backend}"
+    return Path(data_dir) / split.name / folder / f"shard_{shard:04d}.npz"
 
 
 def make_shard(cfg: Config, split: Split, data_dir: Path, shard: int, scenes_per_shard: int,
                frames_per_video: int) -> Path:
-    out = shard_path(data_dir, split, shard)
+    backend = shard_backend(cfg, shard)
+    out = shard_path(data_dir, split, shard, backend)
     if out.exists():
         return out
     jpegs, labels = [], []
     for i in range(shard * scenes_per_shard, min((shard + 1) * scenes_per_shard, split.scenes)):
-        j, lab = render_frames(cfg, scene_seed(split.seed, i), frames_per_video)
+        j, lab = render_frames(cfg, scene_seed(split.seed, i), frames_per_video, backend)
         for row in lab:
             row[0] += len(jpegs)
         jpegs += j

@@ -40,7 +40,7 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import atomic_path, file_digest, write_json_atomic
 from dynclevr.config import Config, ConfigError
 from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run
-from dynclevr.perception.detector_data import LABEL_COLUMNS, make_shard, shard_path
+from dynclevr.perception.detector_data import LABEL_COLUMNS, make_shard, shard_backend, shard_path
 
 DEFAULT_DIR = WEIGHTS_DIR / "detector"
 WEIGHTS_FILE, MANIFEST, CURVE = "detector.pt", "manifest.json", "curve.png"
@@ -314,7 +314,9 @@ def generate(cfg: Config, data_dir: Path, workers: int, which: list[int], echo=p
     p = cfg["parser"]
     split = cfg.split(p["detector_split"])
     per, fpv = p["detector_scenes_per_shard"], p["detector_frames_per_video"]
-    todo = [s for s in which if not shard_path(data_dir, split, s).exists()]
+    paths = [shard_path(data_dir, split, s, shard_backend(cfg, s)) for s in which]
+    # a round's processes make shards of one backend (a path-traced shard takes about 4x a TinyRenderer one)
+    todo = sorted((s for s, path in zip(which, paths) if not path.exists()), key=lambda s: (shard_backend(cfg, s), s))
     if todo:
         echo(f"train detector: making {len(todo)} shard(s) of {per} scenes x {fpv} frames (split {split.name})")
         jobs = [(cfg.data, split, Path(data_dir), s, per, fpv) for s in todo]
@@ -326,7 +328,7 @@ def generate(cfg: Config, data_dir: Path, workers: int, which: list[int], echo=p
             with ProcessPoolExecutor(size, mp_context=get_context("spawn")) as pool:
                 for k, _ in enumerate(pool.map(_shard_job, jobs[i:i + size]), start=i):
                     echo(f"  shard {k + 1}/{len(todo)}")
-    return [shard_path(data_dir, split, s) for s in which]
+    return paths
 
 
 def _save(net, opt, step, out_dir: Path, manifest: dict) -> None:
@@ -428,11 +430,13 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     manifest["schedule_start"] = schedule_start
     manifest.update({
         "split": p["detector_split"], "split_seed": cfg.split(p["detector_split"]).seed,
-        "shards_train": [str(x.name) for x in paths[:-held]], "shards_heldout": [str(x.name) for x in paths[-held:]],
+        "shards_train": [f"{x.parent.name}/{x.name}" for x in paths[:-held]],
+        "shards_heldout": [f"{x.parent.name}/{x.name}" for x in paths[-held:]],
         "frames_train": len(train), "frames_heldout": len(val), "steps_planned": total,
         "params": {"width": net.width, "blocks": net.blocks, "fine_blocks": net.fine_blocks,
                    "batch": p["detector_batch"], "lr": p["detector_learning_rate"],
-                   "frames_per_video": p["detector_frames_per_video"], "min_pixels": MIN_PIXELS},
+                   "frames_per_video": p["detector_frames_per_video"], "min_pixels": MIN_PIXELS,
+                   "realistic_every": p["detector_realistic_every"]},
         "machine": f"{platform.machine()}, torch {torch.__version__}, {torch.get_num_threads()} threads"
                    + (f", {torch.cuda.get_device_name(device)}" if device != "cpu" else ""),
         "command": "dynclevr train detector [--resume | --grow-from DIR]"
