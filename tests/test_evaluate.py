@@ -114,3 +114,15 @@ def test_cut_attribution_puts_the_truths_parts_into_the_estimate():
     assert rows["velocity from the truth"] == rows["all of the state from the truth"] == clean["the estimate"]
     assert rows["position from the truth"] == rows["the estimate"] != clean["the estimate"]
     assert attribution_markdown([rows, clean]).count("\n") == len(ATTRIBUTION) + 2
+
+
+def test_the_position_error_is_reported_per_category():
+    truth = known_scene()
+    est = replace(truth, position=truth.position.copy())
+    planes = [i for i, o in enumerate(truth.objects) if o.category == "aeroplane"]
+    others = sorted({o.category for o in truth.objects} - {"aeroplane"})
+    assert planes and others
+    est.position[:, planes, 0] += 0.5            # only the aeroplanes are off, half a metre
+    s = summarise([scene_stats(truth, est, Config.load()["labels"])])
+    assert abs(s["position_err_median_aeroplane"] - 0.5) < 1e-9 and abs(s["position_err_p90_aeroplane"] - 0.5) < 1e-9
+    assert all(s[f"position_err_p90_{c}"] == 0.0 for c in others)

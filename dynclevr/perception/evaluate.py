@@ -73,6 +73,7 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
          "matched": len(pairs), "subtype": [], "color": [], "pos_err": [], "velocity": [], "accelerating": [],
          "floating": [], "depth_err": [], "yaw_err": [], "confusion": [], "cut_speed_err": [], "cut_engine": [],
          "cut_engine_moving": [],
+         "pos_err_by_category": {c: [] for c in CATEGORIES},
          "true_by_category": {c: 0 for c in CATEGORIES}, "found_by_category": {c: 0 for c in CATEGORIES},
          "shown_by_category": {c: 0 for c in CATEGORIES}, "shown_found_by_category": {c: 0 for c in CATEGORIES}}
     for i, o in enumerate(truth.objects):
@@ -100,7 +101,9 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
                     np.linalg.norm(cut_true["velocity"][i, :2]) >= labels_cfg["slow_above"]:
                 s["cut_engine_moving"].append(s["cut_engine"][-1])
         both = truth.visible[:, i] & est.visible[:, j]
-        s["pos_err"] += np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).tolist()
+        err = np.linalg.norm(truth.position[both, i] - est.position[both, j], axis=1).tolist()
+        s["pos_err"] += err
+        s["pos_err_by_category"][truth.objects[i].category] += err
         ray = truth.position[both, i] - eye
         ray /= np.linalg.norm(ray, axis=1, keepdims=True)
         s["depth_err"] += ((est.position[both, j] - truth.position[both, i]) * ray).sum(1).tolist()
@@ -216,6 +219,9 @@ def summarise(stats: list[dict]) -> dict:
         per_cat[f"recall_{c}"] = sum(s["found_by_category"][c] for s in stats) / n if n else float("nan")
         n = sum(s["shown_by_category"][c] for s in stats)
         per_cat[f"shown_recall_{c}"] = sum(s["shown_found_by_category"][c] for s in stats) / n if n else float("nan")
+        e = [x for s in stats for x in s["pos_err_by_category"][c]]
+        per_cat[f"position_err_median_{c}"] = float(np.median(e)) if e else float("nan")
+        per_cat[f"position_err_p90_{c}"] = float(np.percentile(e, 90)) if e else float("nan")
     shown = sum(sum(s["shown_by_category"].values()) for s in stats)
     per_cat["shown_recall"] = sum(sum(s["shown_found_by_category"].values()) for s in stats) / max(shown, 1)
     p = total("matched") / max(total("est_objects"), 1)
@@ -259,6 +265,9 @@ ROWS = [("detection_precision", "detection precision"), ("detection_recall", "de
         *[(f"shown_recall_{c}", f"... {c}") for c in CATEGORIES], ("duplicate_rate", "duplicates per estimate"),
         ("subtype_acc", "sub-type accuracy"), ("color_acc", "colour accuracy"),
         ("position_err_median_m", "position error, median (m)"), ("position_err_p90_m", "position error, 90th pct (m)"),
+        # the tail by category: an aeroplane's distance is the head's alone (no ground plane pins it)
+        *[(f"position_err_{q}_{c}", f"... {c}, {w}") for c in CATEGORIES for q, w in (("median", "median"),
+                                                                                      ("p90", "90th pct"))],
         ("depth_bias_m", "depth bias along the ray (m)"), ("yaw_err_median_deg", "yaw error, median (deg)"),
         ("yaw_flip_rate", "yaw flips (> 135 deg)"),
         ("velocity_class_acc", "velocity-class accuracy"), ("accelerating_acc", "accelerating accuracy"),
