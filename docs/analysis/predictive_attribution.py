@@ -6,11 +6,14 @@ state at the last observed frame put in from the truth and the future re-simulat
     .venv/bin/python docs/analysis/predictive_attribution.py --split full-val
 
 Also `--margin`: the parse's own future again, with pairs whose hulls come within these many metres counted as
-colliding (are the predictions' misses near misses?). An analysis (it reads the truth), not part of the model.
+colliding (are the predictions' misses near misses?). And `--streams K [--samples N ...]`: the parse's future
+drawn again from K other random streams with N runs each (by default the configured number), for the noise the
+vote's draws alone put into the predictive answers. An analysis (it reads the truth), not part of the model.
 """
 
 import argparse
 import collections
+import zlib
 from dataclasses import replace
 from multiprocessing import Pool
 from pathlib import Path
@@ -24,7 +27,7 @@ from dynclevr.perception.evaluate import match
 from dynclevr.physics import ContactEvents, PhysicsParams, World
 from dynclevr.questions.programs import Executor
 from dynclevr.scene import Collision, Scene4D
-from dynclevr.stages.simulate_future import _bodies, _events, attach, predict_future
+from dynclevr.stages.simulate_future import ENSEMBLE_STREAM, Ensemble, _bodies, _events, attach, predict_future
 
 PARTS = {"velocity": ("velocity",), "position": ("position",), "heading and spin": ("orientation", "angular_velocity"),
          "engine and floating": ("engine", "floating"), "velocity, position": ("velocity", "position"),
@@ -36,6 +39,8 @@ ap = argparse.ArgumentParser()
 ap.add_argument("--split", default="full-val")
 ap.add_argument("--data-dir", default="data")
 ap.add_argument("--margin", type=float, nargs="*", default=[])
+ap.add_argument("--streams", type=int, default=0)
+ap.add_argument("--samples", type=int, nargs="*", default=[])
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split
 cfg = Config.load()
@@ -74,6 +79,12 @@ def scene(job):
                 state[f][j] = truth.state_at(cut)[f][i]
         variants[f"{label} from the truth"] = s = replace(est, cut_state=state)
         s.future_collisions = predict_future(s, params)
+    ensemble = Ensemble.from_config(cfg)
+    for n in args.samples or [ensemble.samples]:
+        for k in range(1, args.streams + 1):
+            variants[f"the parse, its future from stream {k} ({n} runs)"] = s = replace(est)
+            s.future_collisions = predict_future(s, params, replace(ensemble, samples=n),
+                                                 np.random.default_rng([ENSEMBLE_STREAM, zlib.crc32(name.encode()), k]))
     for m in args.margin:
         variants[f"the parse, hulls within {m} m collide"] = s = replace(est)
         s.future_collisions = near_misses(est, m)
