@@ -112,6 +112,27 @@ def test_a_struck_car_slides_to_rest_through_slow_and_a_parked_one_is_static():
     assert slow[hit:].sum() > 10 and np.abs(speed[slow] - truth[slow]).max() < 0.15
 
 
+def test_vehicles_standing_on_their_wheels_have_no_vertical_velocity_through_an_impact():
+    """An SUV at 6 m/s hits a parked sedan. Both stay on their wheels, where the estimate places them; before the
+    rule the engine's push apart of their overlapping hulls gave them 0.1-0.2 m/s up or down (0.2 at the cut),
+    which made "up" the direction of a vehicle whose horizontal speed was read as parked."""
+    cfg = Config.load()
+    params = PhysicsParams.from_config(cfg)
+    n = 90
+    bodies = [Body("suv", (-5.0, 0.0, ground_height("suv")), yaw_quaternion(0.0), (6.0, 0.0, 0.0)),
+              Body("sedan", (0.0, 0.3, ground_height("sedan")), yaw_quaternion(0.0), (0.0, 0.0, 0.0))]
+    tr = simulate(bodies, params, n)
+    assert tr.collisions and tr.collisions[0].frame < 30
+    rng = np.random.default_rng(3)
+    per = [_detections(tr.position[:, i], 0.0, b.shape, rng) for i, b in enumerate(bodies)]
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn",
+                                                                    [a + b for a, b in zip(*per)])
+    assert len(est.objects) == 2
+    for k, o in enumerate(est.objects):
+        assert np.abs(est.position[:, k, 2] - resting_height(o.shape)).max() < 1e-6
+    assert (est.velocity[:, :, 2] == 0).all() and (est.cut_state["velocity"][:, 2] == 0).all()
+
+
 def test_a_parked_car_pushed_unnoticed_is_parked_then_struck_not_driving_off():
     """A parked sedan set moving at frame 50 by an impact too gentle for the filter to notice (2.5 m/s, then
     friction): no engine starts a parked body (the generator's rule), so the segment motion reads a parked stretch
