@@ -90,19 +90,23 @@ def test_a_parked_vehicle_is_parked_at_the_cut(seed):
     assert np.linalg.norm(est.cut_state["velocity"][0, :2]) == 0.0
 
 
+def _suv_strikes_parked_sedan(speed: float, lateral: float, n: int):
+    """An SUV at `speed` m/s drives into a parked sedan `lateral` metres off its line, simulated by the data's
+    physics: the truth and the estimate from noisy detections of both."""
+    cfg = Config.load()
+    bodies = [Body("suv", (-5.0, 0.0, ground_height("suv")), yaw_quaternion(0.0), (speed, 0.0, 0.0)),
+              Body("sedan", (0.0, lateral, ground_height("sedan")), yaw_quaternion(0.0), (0.0, 0.0, 0.0))]
+    tr = simulate(bodies, PhysicsParams.from_config(cfg), n)
+    rng = np.random.default_rng(3)
+    per = [_detections(tr.position[:, i], 0.0, b.shape, rng) for i, b in enumerate(bodies)]
+    return tr, SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn",
+                                                                        [a + b for a, b in zip(*per)])
+
+
 def test_a_struck_car_slides_to_rest_through_slow_and_a_parked_one_is_static():
     """An SUV at 3 m/s hits a parked sedan, which friction brings to rest: the estimate reads it 0 before the impact
     (a parked body's detections wander) and slow (0.5-0.8 m/s) where the truth is, not 0 from static_speed."""
-    cfg = Config.load()
-    params = PhysicsParams.from_config(cfg)
-    n = 150
-    bodies = [Body("suv", (-5.0, 0.0, ground_height("suv")), yaw_quaternion(0.0), (3.0, 0.0, 0.0)),
-              Body("sedan", (0.0, 0.0, ground_height("sedan")), yaw_quaternion(0.0), (0.0, 0.0, 0.0))]
-    tr = simulate(bodies, params, n)
-    rng = np.random.default_rng(3)
-    per = [_detections(tr.position[:, i], 0.0, b.shape, rng) for i, b in enumerate(bodies)]
-    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn",
-                                                                    [a + b for a, b in zip(*per)])
+    tr, est = _suv_strikes_parked_sedan(3.0, 0.0, 150)
     sedan = int(np.argmin([np.linalg.norm(est.position[0, k, :2]) for k in range(len(est.objects))]))
     truth, speed = (np.linalg.norm(v[:, 1 if v is tr.velocity else sedan, :2], axis=1)
                     for v in (tr.velocity, est.velocity))
@@ -116,17 +120,8 @@ def test_vehicles_standing_on_their_wheels_have_no_vertical_velocity_through_an_
     """An SUV at 6 m/s hits a parked sedan. Both stay on their wheels, where the estimate places them; before the
     rule the engine's push apart of their overlapping hulls gave them 0.1-0.2 m/s up or down (0.2 at the cut),
     which made "up" the direction of a vehicle whose horizontal speed was read as parked."""
-    cfg = Config.load()
-    params = PhysicsParams.from_config(cfg)
-    n = 90
-    bodies = [Body("suv", (-5.0, 0.0, ground_height("suv")), yaw_quaternion(0.0), (6.0, 0.0, 0.0)),
-              Body("sedan", (0.0, 0.3, ground_height("sedan")), yaw_quaternion(0.0), (0.0, 0.0, 0.0))]
-    tr = simulate(bodies, params, n)
+    tr, est = _suv_strikes_parked_sedan(6.0, 0.3, 90)
     assert tr.collisions and tr.collisions[0].frame < 30
-    rng = np.random.default_rng(3)
-    per = [_detections(tr.position[:, i], 0.0, b.shape, rng) for i, b in enumerate(bodies)]
-    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((n, 1, 1, 3), np.uint8), "syn",
-                                                                    [a + b for a, b in zip(*per)])
     assert len(est.objects) == 2
     for k, o in enumerate(est.objects):
         assert np.abs(est.position[:, k, 2] - resting_height(o.shape)).max() < 1e-6
