@@ -189,6 +189,23 @@ def test_unparsed_questions_say_why(synthetic_fit):
                                                           "called 'tractor'")
 
 
+def test_a_word_after_a_whole_description_is_the_sentences(synthetic_fit):
+    """An unknown word after a colour alone is the object's noun (a vehicle the catalogue lacks); after a sub-type
+    the description is whole and the word belongs to the sentence, unless 'than' follows (a comparison of what no
+    question asks)."""
+    p = dataclasses.replace(synthetic_fit.parser.params, max_unknown_words=1)
+    parser = QuestionParser(synthetic_fit.parser.model, synthetic_fit.parser.words, synthetic_fit.parser.programs,
+                            p, synthetic_fit.parser.shapes)
+    still, bigger, tractor = parser.analyse_batch(["Is the green sedan still floating at the start?",
+                                                   "Is the red sedan bigger than the blue bus at the start?",
+                                                   "Is the green tractor floating at the start?"])
+    assert still.program == ["Objects", "filter_attributes[green]", "filter_attributes[sedan]", "unique", "start",
+                             "is_floating"], still.reason
+    assert bigger.program is None and bigger.reason == ("the question names the red sedan bigger: no vehicle here "
+                                                         "is called 'bigger'")
+    assert tractor.program is None and "called 'tractor'" in tractor.reason
+
+
 def test_blind_baseline_majority_per_family():
     b = blind_baseline(["f1", "f1", "f1", "f2", "f2"], ["true", "false", "true", "red", "blue"])
     assert b == {"majority": {"f1": "true", "f2": "blue"}, "overall": "true"}

@@ -14,7 +14,9 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   training program has, or not a valid postfix program of dynclevr/questions/programs.py's operations;
 - the decoding's probability is below `min_confidence` (a wording unlike any the parser learnt);
 - it names an object the catalogue lacks ('the green *tractor*', 'the *pink* suv': object words next to an unknown
-  word), or runs object words together that describe no one object ('red blue green');
+  word, except a word after a whole description, which is the sentence's: 'the red sedan *ends* up hitting'),
+  compares objects by what no question asks ('the red sedan *bigger* than'), or runs object words together that
+  describe no one object ('red blue green');
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -33,6 +35,7 @@ import torch
 
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
+from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (OBJECT_WORDS, concrete_program, delexicalise, is_description,
@@ -221,9 +224,15 @@ class QuestionParser:
         for k, w in enumerate(words):
             if not w.startswith("<obj"):
                 continue
-            named = " ".join(refs[int(w[4:-1]) - 1]).replace("_", " ")
+            ref = refs[int(w[4:-1]) - 1]
+            named = " ".join(ref).replace("_", " ")
             before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
-            if after and after not in self.known:     # 'the green tractor': an object the catalogue lacks
+            # 'the green tractor': an object the catalogue lacks, where the unknown word is the object's noun. After
+            # a sub-type or category the description is whole, and the word after it is the sentence's ('the red
+            # sedan ends up hitting ...'), unless 'than' follows it: 'the red sedan bigger than the blue bus'
+            # compares what no question asks.
+            nominal = any(v not in COLOR_NAMES for v in ref)
+            if after and after not in self.known and (not nominal or words[k + 2:k + 3] == ["than"]):
                 return f"the question names the {named} {after}: no vehicle here is called '{after}'"
             if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
                 return f"the question names the {before} {named}: no object here is '{before}'"

@@ -136,7 +136,8 @@ def _extra(store, cfg) -> dict[str, str]:
             **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
 
-STAGE = Stage("answer", 4, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
+# 5: the question parser reads a word after a whole object description as the sentence's (language/parse.py)
+STAGE = Stage("answer", 5, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
               outputs=(".parquet",), run_scene=run_scene, finalize=finalize, extra_inputs=_extra,
               # Before version 4 the split-level tables lay in answers/ beside the per-scene ones.
               retired=(ANSWERS_FILE, METRICS_FILE))
