@@ -201,8 +201,8 @@ def test_a_word_after_a_whole_description_is_the_sentences(synthetic_fit):
                                                    "Is the green tractor floating at the start?"])
     assert still.program == ["Objects", "filter_attributes[green]", "filter_attributes[sedan]", "unique", "start",
                              "is_floating"], still.reason
-    assert bigger.program is None and bigger.reason == ("the question names the red sedan bigger: no vehicle here "
-                                                         "is called 'bigger'")
+    assert bigger.program is None and bigger.reason == ("the question compares the red sedan by 'bigger', which no "
+                                                         "question here asks about")
     assert tractor.program is None and "called 'tractor'" in tractor.reason
 
 

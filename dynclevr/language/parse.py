@@ -231,9 +231,11 @@ class QuestionParser:
             # a sub-type or category the description is whole, and the word after it is the sentence's ('the red
             # sedan ends up hitting ...'), unless 'than' follows it: 'the red sedan bigger than the blue bus'
             # compares what no question asks.
-            nominal = any(v not in COLOR_NAMES for v in ref)
-            if after and after not in self.known and (not nominal or words[k + 2:k + 3] == ["than"]):
-                return f"the question names the {named} {after}: no vehicle here is called '{after}'"
+            if after and after not in self.known:
+                if words[k + 2:k + 3] == ["than"]:
+                    return f"the question compares the {named} by '{after}', which no question here asks about"
+                if all(v in COLOR_NAMES for v in ref):
+                    return f"the question names the {named} {after}: no vehicle here is called '{after}'"
             if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
                 return f"the question names the {before} {named}: no object here is '{before}'"
         return ""
