@@ -206,6 +206,12 @@ def test_a_word_after_a_whole_description_is_the_sentences(synthetic_fit):
     assert tractor.program is None and "called 'tractor'" in tractor.reason
 
 
+def test_a_count_is_no_question_here(synthetic_fit):
+    """No program counts, so 'how many' is out of scope whatever the rest of the question reads like."""
+    count = synthetic_fit.parser.analyse_batch(["How many wheels does the green sedan have at the start?"])[0]
+    assert count.program is None and count.reason.startswith("the question asks for a count")
+
+
 def test_blind_baseline_majority_per_family():
     b = blind_baseline(["f1", "f1", "f1", "f2", "f2"], ["true", "false", "true", "red", "blue"])
     assert b == {"majority": {"f1": "true", "f2": "blue"}, "overall": "true"}

@@ -1,6 +1,7 @@
 """`QuestionParser`: question text -> program tokens (postfix), or unparsed with a one-line reason, never a crash.
 
 A question is unparsed (counted wrong) rather than given a confident wrong program when
+- it asks for a count ('how many': no program counts);
 - it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
   vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green'; a word of the synonym
   lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video'; failing
@@ -194,6 +195,10 @@ class QuestionParser:
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
         words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
+        # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
+        # question here answers, however the rest reads.
+        if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
+            return [], "the question asks for a count ('how many'), which no question here answers", read_as
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as
