@@ -538,13 +538,19 @@ def _hidden_car(shape_after: str) -> list:
     return [d if f < 20 else [] if f < 80 else late[f] for f, d in enumerate(dets)]
 
 
-@pytest.mark.parametrize("shape_after, objects", [("sedan", 1), ("suv", 2)])
-def test_after_a_long_gap_only_the_same_vehicle_joins(shape_after, objects):
+@pytest.mark.parametrize("shape_after, third, objects", [("sedan", False, 1), ("suv", False, 1), ("sedan", True, 2),
+                                                          ("suv", True, 3)])
+def test_after_a_long_gap_only_the_same_vehicle_joins(shape_after, third, objects):
     """Hidden for a second (60 frames, beyond stitch_frames), a vehicle seen again is re-identified when sub-type
-    and colour agree; the same category (another car) is not enough after so long."""
+    and colour agree. Where they read another sub-type of its kind and colour, it is the same vehicle only if no
+    third vehicle of that kind and colour is in the video (a wagon of its colour parked elsewhere): then only the
+    sub-type could tell them apart."""
     cfg = Config.load()
-    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn",
-                                                                   _hidden_car(shape_after))
+    dets = _hidden_car(shape_after)
+    if third:
+        pos = np.tile([-2.5, -1.0, resting_height("wagon")], (T, 1))
+        dets = [d + w for d, w in zip(dets, _detections(pos, 1.2, "wagon", np.random.default_rng(6)))]
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
     assert len(est.objects) == objects
 
 
