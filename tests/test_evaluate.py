@@ -47,6 +47,22 @@ def test_recall_of_what_a_viewer_can_see_leaves_out_the_hidden():
     assert s["shown_recall"] == s["detection_recall"] and s["collision_recall_in_sight"] == 0.5
 
 
+def test_precision_per_category_counts_the_estimate_s_false_objects_by_their_category():
+    truth = known_scene()
+    # the estimate adds a phantom: object 0's kind, 30 m from anything
+    fields = ("position", "orientation", "velocity", "angular_velocity", "acceleration", "engine", "floating",
+              "visible")
+    extra = {f: np.concatenate([getattr(truth, f), getattr(truth, f)[:, :1]], 1) for f in fields}
+    extra["position"][:, -1] += 30.0
+    est = replace(truth, objects=truth.objects + [replace(truth.objects[0], id=99)], cut_state=None, **extra)
+    s = summarise([scene_stats(truth, est, Config.load()["labels"])])
+    phantom = truth.objects[0].category
+    same = sum(o.category == phantom for o in truth.objects)
+    assert s["detection_recall"] == 1.0 and s["detection_precision"] == len(truth.objects) / (len(truth.objects) + 1)
+    assert s["precision_" + phantom] == same / (same + 1)
+    assert all(s["precision_" + o.category] == 1.0 for o in truth.objects if o.category != phantom)
+
+
 def test_the_cut_state_is_scored_for_the_objects_the_observed_frames_show():
     truth = known_scene()
     cut = truth.observed_frames - 1

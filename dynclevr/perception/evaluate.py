@@ -75,7 +75,8 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
          "cut_engine_moving": [],
          "pos_err_by_category": {c: [] for c in CATEGORIES},
          "true_by_category": {c: 0 for c in CATEGORIES}, "found_by_category": {c: 0 for c in CATEGORIES},
-         "shown_by_category": {c: 0 for c in CATEGORIES}, "shown_found_by_category": {c: 0 for c in CATEGORIES}}
+         "shown_by_category": {c: 0 for c in CATEGORIES}, "shown_found_by_category": {c: 0 for c in CATEGORIES},
+         "est_by_category": {c: 0 for c in CATEGORIES}, "est_matched_by_category": {c: 0 for c in CATEGORIES}}
     for i, o in enumerate(truth.objects):
         if counted[i]:
             s["true_by_category"][o.category] += 1
@@ -83,6 +84,10 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
             s["shown_by_category"][o.category] += 1
     eye = np.asarray(truth.camera.position, float)
     matched_est = {j for _, j in pairs}
+    # precision per category by the estimate's category: of the objects it reports as aeroplanes, the share that are real
+    for j, o in enumerate(est.objects):
+        s["est_by_category"][o.category] += 1
+        s["est_matched_by_category"][o.category] += int(j in matched_est)
     # the state the predictive questions start from, of the objects the observed frames show
     cut = est.observed_frames - 1
     cut_true, cut_est = truth.state_at(cut), est.state_at(cut)
@@ -215,6 +220,8 @@ def summarise(stats: list[dict]) -> dict:
     cut_speed = np.array([x for s in stats for x in s["cut_speed_err"]])
     per_cat = {}
     for c in CATEGORIES:
+        n = sum(s["est_by_category"][c] for s in stats)
+        per_cat[f"precision_{c}"] = sum(s["est_matched_by_category"][c] for s in stats) / n if n else float("nan")
         n = sum(s["true_by_category"][c] for s in stats)
         per_cat[f"recall_{c}"] = sum(s["found_by_category"][c] for s in stats) / n if n else float("nan")
         n = sum(s["shown_by_category"][c] for s in stats)
@@ -259,7 +266,8 @@ def summarise(stats: list[dict]) -> dict:
     }
 
 
-ROWS = [("detection_precision", "detection precision"), ("detection_recall", "detection recall"),
+ROWS = [("detection_precision", "detection precision"),
+        *[(f"precision_{c}", f"precision, {c}") for c in CATEGORIES], ("detection_recall", "detection recall"),
         *[(f"recall_{c}", f"recall, {c}") for c in CATEGORIES],
         ("shown_recall", "recall of the objects a viewer can see (150 px in 5+ frames)"),
         *[(f"shown_recall_{c}", f"... {c}") for c in CATEGORIES], ("duplicate_rate", "duplicates per estimate"),
