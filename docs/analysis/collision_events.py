@@ -18,7 +18,6 @@ An analysis (it reads the truth), not part of the model; it reads `dynclevr run`
 the detection cache (`<data>/.cache/<split>/detections/`, filled by parse-scene).
 """
 
-import argparse
 import collections
 from pathlib import Path
 
@@ -34,9 +33,9 @@ from dynclevr.scene import Scene4D
 from dynclevr.stages import parse_scene
 from dynclevr.video import Video
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
-ap.add_argument("--data-dir", default="data")
+from split_args import split_args
+
+ap = split_args()
 args = ap.parse_args()
 torch.set_num_threads(1)
 cfg = Config.load()

@@ -11,7 +11,6 @@ off by more than 45 degrees: a plane flying nearly along the camera ray whose he
 An analysis (it reads the truth), not part of the model; it reads `dynclevr run`'s parsed/ and sim/.
 """
 
-import argparse
 import collections
 from pathlib import Path
 
@@ -20,12 +19,11 @@ import numpy as np
 from dynclevr.perception.evaluate import CUT_GROSS, match
 from dynclevr.scene import Scene4D
 
+from split_args import split_args
+
 BINS = ((0, 3), (4, 7), (8, 12), (13, 10 ** 6))
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
-ap.add_argument("--data-dir", default="data")
-ap.add_argument("--parse", default="parsed", help="the estimate's directory (parsed, parsed-particle, ...)")
+ap = split_args(parse=True)
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split
 

@@ -10,7 +10,6 @@ which a table could take off: the mean error per estimated sub-type and bin of t
 the even videos' detections, subtracted from the odd videos'. An analysis (it reads the truth), not part of the model.
 """
 
-import argparse
 import collections
 from pathlib import Path
 
@@ -21,10 +20,10 @@ from dynclevr.perception.detector_train import load_detector
 from dynclevr.scene import Scene4D
 from dynclevr.video import Video
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
+from split_args import split_args
+
+ap = split_args()
 ap.add_argument("--videos", type=int, default=30)
-ap.add_argument("--data-dir", default="data")
 ap.add_argument("--view-bins", type=int, nargs="*", default=[])
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split

@@ -14,7 +14,6 @@ object matches (evaluate.match), by the category it was reported as, sorted by w
 An analysis (it reads the truth), not part of the model; it reads `dynclevr run`'s parsed/ and sim/.
 """
 
-import argparse
 import collections
 from pathlib import Path
 
@@ -24,12 +23,11 @@ from dynclevr.assets.catalogue import CATEGORIES
 from dynclevr.perception.evaluate import DUPLICATE_RADIUS, match
 from dynclevr.scene import Scene4D
 
+from split_args import split_args
+
 NEAR, FAR = 0.5, 3.0   # metres
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
-ap.add_argument("--data-dir", default="data")
-ap.add_argument("--parse", default="parsed", help="the estimate's directory (parsed, parsed-particle, ...)")
+ap = split_args(parse=True)
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split
 

@@ -17,7 +17,6 @@ An analysis (it reads the truth), not part of the model; it reads `dynclevr run`
 the detection cache (`<data>/.cache/<split>/detections/`, filled by parse-scene).
 """
 
-import argparse
 import collections
 from pathlib import Path
 
@@ -31,12 +30,11 @@ from dynclevr.questions.evidence import pixel_counts
 from dynclevr.scene import Scene4D
 from dynclevr.video import Video
 
+from split_args import split_args
+
 NEAR_PX = 12   # pixels: a detection this close to the projected centre is on the object
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
-ap.add_argument("--data-dir", default="data")
-ap.add_argument("--parse", default="parsed", help="the estimate's directory (parsed, parsed-particle, ...)")
+ap = split_args(parse=True)
 args = ap.parse_args()
 cfg = Config.load()
 store = Store(Path(args.data_dir), args.split)

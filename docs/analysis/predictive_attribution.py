@@ -11,7 +11,6 @@ drawn again from K other random streams with N runs each (by default the configu
 vote's draws alone put into the predictive answers. An analysis (it reads the truth), not part of the model.
 """
 
-import argparse
 import collections
 import zlib
 from dataclasses import replace
@@ -29,15 +28,15 @@ from dynclevr.questions.programs import Executor
 from dynclevr.scene import Collision, Scene4D
 from dynclevr.stages.simulate_future import ENSEMBLE_STREAM, Ensemble, _bodies, _events, attach, predict_future
 
+from split_args import split_args
+
 PARTS = {"velocity": ("velocity",), "position": ("position",), "heading and spin": ("orientation", "angular_velocity"),
          "engine and floating": ("engine", "floating"), "velocity, position": ("velocity", "position"),
          "velocity, position, heading": ("velocity", "position", "orientation"),
          "velocity, position, heading, spin": ("velocity", "position", "orientation", "angular_velocity"),
          "all of it": ("position", "orientation", "velocity", "angular_velocity", "engine", "floating")}
 
-ap = argparse.ArgumentParser()
-ap.add_argument("--split", default="full-val")
-ap.add_argument("--data-dir", default="data")
+ap = split_args()
 ap.add_argument("--margin", type=float, nargs="*", default=[])
 ap.add_argument("--streams", type=int, default=0)
 ap.add_argument("--samples", type=int, nargs="*", default=[])
