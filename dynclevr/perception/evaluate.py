@@ -12,7 +12,8 @@ as moving, a start speed picked wrong) and whether its engine is right. With `fu
 a steadier yardstick for prediction than the few predictive questions, where a pair's yes flips with small changes.
 Recall is also given for what a viewer can see (the rendered masks: an object with `labels.min_visible_pixels` in
 MIN_VISIBLE frames, a collision with both vehicles in sight at its frame), beside the recall of everything inside
-the camera's view, which counts vehicles hidden behind a bus for the whole video.
+the camera's view, which counts vehicles hidden behind a bus for the whole video. Recall per category is by the true
+object's category, precision per category by the category the estimate reports (issue 10 asks both of every category).
 `cut_attribution` re-predicts that future with parts of the matched objects' cut state taken from the truth, one
 part at a time: how much of the prediction's error each part of the estimated state carries.
 """
