@@ -1,0 +1,73 @@
+"""One model row run again with a changed config (or another checkout's code) in a copy of a split's folder, then
+its answers set against the split's own run of that row: questions right, gained and lost, by type and by family.
+The journal's "measured and not kept" rows are runs of this kind.
+
+    .venv/bin/python docs/analysis/row_experiment.py --split full-val --data-dir D --config C --out E [--tree T]
+
+D holds a finished `dynclevr run --split S` (every row it compares against). C is a TOML merged over pipeline.toml
+(`[parser] filter = "particle"` makes the row the particle filter's). E, made here, shares D's truth, video, labels,
+questions and the head's cached detections (links, so nothing of D is written) and gets its own parses, futures and
+answers (`dynclevr run --no-ablation`: with the detections cached, 4-8 minutes a 100-video split on 2 cores).
+--tree T runs the code and pipeline.toml of another checkout (e.g. a `git worktree`). An analysis: it reads the
+truth's answers to score, and is not part of the model.
+"""
+
+import collections
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pyarrow.parquet as pq
+
+from split_args import split_args
+
+SHARED = ("sim", "video", "labels", "objects.parquet", "questions.parquet")
+
+ap = split_args()
+ap.add_argument("--config", required=True, help="TOML merged over pipeline.toml: the change under test")
+ap.add_argument("--out", required=True, help="a new folder for the copy")
+ap.add_argument("--tree", default=str(Path(__file__).resolve().parents[2]), help="the checkout whose code runs")
+ap.add_argument("--workers", default="2")
+args = ap.parse_args()
+src, out = Path(args.data_dir).resolve() / args.split, Path(args.out).resolve()
+if not (src / "manifests").is_dir():
+    sys.exit(f"{src} holds no finished run: run `dynclevr run --split {args.split} --data-dir {args.data_dir}` first")
+if out.exists():
+    sys.exit(f"{out} exists: give --out a new folder (nothing is overwritten)")
+(out / args.split).mkdir(parents=True)
+for name in SHARED:
+    (out / args.split / name).symlink_to(src / name)
+shutil.copytree(src / "manifests", out / args.split / "manifests")
+cache = Path(args.data_dir).resolve() / ".cache" / args.split / "detections"
+if cache.is_dir():
+    (out / ".cache" / args.split).mkdir(parents=True)
+    (out / ".cache" / args.split / "detections").symlink_to(cache)
+tree = Path(args.tree).resolve()
+env = dict(os.environ, PYTHONPATH=str(tree))
+cmd = [sys.executable, "-c", "from dynclevr.cli import main; main()", "run", "--split", args.split, "--data-dir",
+       str(out), "--config", str(Path(args.config).resolve()), "--no-ablation", "--workers", args.workers]
+subprocess.run(cmd, cwd=tree, env=env, check=True)
+
+
+def load(path: Path) -> dict:
+    return {(r["scene"], r["id"]): r for r in pq.read_table(path).to_pylist()}
+
+
+for new_path in sorted((out / args.split).glob("answers*.parquet")):
+    old, new = load(src / new_path.name), load(new_path)
+    keys = sorted(old.keys() & new.keys())
+    print(f"{new_path.name}: {sum(old[k]['correct'] for k in keys)} -> {sum(new[k]['correct'] for k in keys)} "
+          f"of {len(keys)} questions right")
+    by = collections.defaultdict(lambda: [0, 0, 0, 0])     # right before, right after, gained, lost
+    for k in keys:
+        a, b = old[k]["correct"], new[k]["correct"]
+        for group in (old[k]["type"], "  " + old[k]["family"]):
+            by[group][0] += a
+            by[group][1] += b
+            by[group][2] += b and not a
+            by[group][3] += a and not b
+    for group, (a, b, gained, lost) in sorted(by.items(), key=lambda kv: (kv[0].startswith(" "), kv[1][1] - kv[1][0])):
+        if gained or lost:
+            print(f"  {group:42s} {a:5d} -> {b:5d}   gained {gained}, lost {lost}")
