@@ -34,6 +34,8 @@ args = ap.parse_args()
 src, out = Path(args.data_dir).resolve() / args.split, Path(args.out).resolve()
 if not (src / "manifests").is_dir():
     sys.exit(f"{src} holds no finished run: run `dynclevr run --split {args.split} --data-dir {args.data_dir}` first")
+if not Path(args.config).is_file():
+    sys.exit(f"--config {args.config}: no such file (a TOML merged over pipeline.toml, e.g. [parser] filter = \"particle\")")
 if out.exists():
     sys.exit(f"{out} exists: give --out a new folder (nothing is overwritten)")
 (out / args.split).mkdir(parents=True)
