@@ -1,7 +1,9 @@
 """Bad input, end to end through the CLI: one line `error: ...` naming the problem and the fix, exit code 2, no
 traceback, and nothing already written lost or changed."""
 
+import contextlib
 import hashlib
+import os
 import shutil
 import subprocess
 import sys
@@ -220,7 +222,6 @@ def test_reversed_range_and_missing_data_dir_say_so(data, tmp_path):
 def test_two_runs_on_one_split_take_turns(data):
     """Issue 14: two stage runs at once on one data dir: the second says what it waits for; both manifest entries
     survive; a killed write's leftover temporary file is removed."""
-    import os
     import time
 
     store = Store(data, SPLIT)
@@ -231,12 +232,15 @@ def test_two_runs_on_one_split_take_turns(data):
     args = [sys.executable, "-m", "dynclevr.cli", "render", "--force", "--split", SPLIT, "--config", str(config),
             "--data-dir", str(data), "--scenes"]
     first = subprocess.Popen(args + ["0"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    lock = store.root / ".lock"
-    deadline = time.time() + 60
-    while not (lock.exists() and f"pid {first.pid}" in lock.read_text()) and time.time() < deadline:
-        time.sleep(0.05)
-    second = subprocess.run(args + ["1"], capture_output=True, text=True)
-    assert first.wait(60) == 0 and second.returncode == 0, second.stderr
+    try:
+        lock = store.root / ".lock"
+        deadline = time.time() + 60
+        while not (lock.exists() and f"pid {first.pid}" in lock.read_text()) and time.time() < deadline:
+            time.sleep(0.05)
+        second = subprocess.run(args + ["1"], capture_output=True, text=True, timeout=300)
+        assert first.wait(60) == 0 and second.returncode == 0, second.stderr
+    finally:
+        first.kill()   # a no-op once it has exited; else it would hold the split's lock for the next test
     assert f"held by pid {first.pid} (dynclevr render --force" in second.stdout
     assert set(store.manifest("render").entries) >= {"000000", "000001"}
     assert not leftover.exists()
@@ -259,7 +263,11 @@ def _alive(pid: int) -> bool:
     return state not in ("Z", "X")   # a zombie has exited: only its parent (init here) has yet to reap it
 
 
+@contextlib.contextmanager
 def _render_with_workers(data):
+    """A render of 2 scenes on 2 workers, in a session of its own, once both workers have started: (main, worker
+    pids). What the test leaves running of that session (its process group) is killed after it, so that a failed
+    check cannot leave the split's lock held for the next test."""
     import signal
     import time
 
@@ -272,40 +280,43 @@ def _render_with_workers(data):
     deadline = time.time() + 60
     while len(_children(main.pid)) < 2 and time.time() < deadline:
         time.sleep(0.1)
-    workers = _children(main.pid)
-    assert len(workers) >= 2, "the pool never started"
-    return main, workers
+    try:
+        workers = _children(main.pid)
+        assert len(workers) >= 2, "the pool never started"
+        yield main, workers
+    finally:
+        with contextlib.suppress(ProcessLookupError):
+            os.killpg(main.pid, signal.SIGKILL)
+        main.wait(60)
 
 
 def test_workers_die_with_their_parent(data):
     """Issue 14: kill -9 of the main process leaves no worker running; a rerun gives the same bytes."""
-    import os
     import signal
     import time
 
     before = checksums(data)
-    main, workers = _render_with_workers(data)
-    os.kill(main.pid, signal.SIGKILL)
-    main.wait()
-    time.sleep(5)
-    assert not [w for w in workers if _alive(w)]
+    with _render_with_workers(data) as (main, workers):
+        os.kill(main.pid, signal.SIGKILL)
+        main.wait(60)
+        time.sleep(5)
+        assert not [w for w in workers if _alive(w)]
     assert cli(data, "render").returncode == 0
     assert checksums(data) == before
 
 
 def test_ctrl_c_stops_cleanly_and_says_how_to_go_on(data):
-    import os
     import signal
     import time
 
-    main, workers = _render_with_workers(data)
-    os.killpg(main.pid, signal.SIGINT)   # what a terminal sends: the whole process group
-    _, err = main.communicate(timeout=120)
-    assert main.returncode == 130
-    assert err.strip().splitlines()[-1].startswith("interrupted: render stopped after ") and \
-        err.strip().endswith("run the same command again to go on"), err
-    time.sleep(5)   # (multiprocessing's resource tracker leaves when it notices its parent is gone)
-    assert not [w for w in workers if _alive(w)]
+    with _render_with_workers(data) as (main, workers):
+        os.killpg(main.pid, signal.SIGINT)   # what a terminal sends: the whole process group
+        _, err = main.communicate(timeout=120)
+        assert main.returncode == 130
+        assert err.strip().splitlines()[-1].startswith("interrupted: render stopped after ") and \
+            err.strip().endswith("run the same command again to go on"), err
+        time.sleep(5)   # (multiprocessing's resource tracker leaves when it notices its parent is gone)
+        assert not [w for w in workers if _alive(w)]
     assert cli(data, "render").returncode == 0
 
 
@@ -326,7 +337,6 @@ def test_export_video_is_h264_and_refuses_other_extensions(data):
 def test_a_killed_writers_temporary_files_go_at_the_next_run_under_the_lock(tmp_path):
     """Issue 14: a write's temporary file names its writer's pid, so the next run under the split's lock removes
     what a killed writer left at once (not only after LEFTOVER_AGE), and never a live writer's."""
-    import os
     import time
 
     from dynclevr.artifacts import atomic_path
