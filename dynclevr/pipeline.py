@@ -35,6 +35,7 @@ WORKER_TASKS = 25   # scenes a pool worker runs before it is replaced
 # `pip install -e '.[ray]'`), local or remote. The same task function, cache keys, manifests and bytes either way.
 EXECUTORS = ("local", "ray")
 RAY_RETRIES = 3     # times Ray reruns a scene whose worker died (killed, out of memory, a lost node)
+OWN_RAY = {"worker_niceness": 0}   # Ray's settings for a local Ray that a command starts itself (_ray_connect)
 
 
 @dataclass(frozen=True)
@@ -445,9 +446,11 @@ def _ray_connect(address: str | None, workers: int):
                 ray.init(address=address, **quiet)
             else:
                 # A Ray of this process's own, on this machine: its notice that token authentication is on (the
-                # secure default) is noise on every command.
+                # secure default) is noise on every command. Its workers run at the command's own priority, as the
+                # local pool's do: Ray's default (nice 15) let any other work on the cores slow them 18-fold
+                # (the executor tests beside two busy processes).
                 logging.getLogger("ray._private.authentication.authentication_token_setup").setLevel(logging.ERROR)
-                ray.init(num_cpus=workers, object_store_memory=100 * 1024 ** 2, **quiet)
+                ray.init(num_cpus=workers, object_store_memory=100 * 1024 ** 2, _system_config=OWN_RAY, **quiet)
         except ConnectionError as e:
             raise DynclevrError(f"cannot join the Ray cluster at {address}: {e} (start it with `ray start --head`, "
                                 f"or leave out --ray-address for a local Ray)") from None

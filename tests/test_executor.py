@@ -13,7 +13,7 @@ import pytest
 
 from dynclevr.artifacts import Store
 from dynclevr.config import Config
-from dynclevr.pipeline import RAY_MISSING, Runner, StageFailed
+from dynclevr.pipeline import OWN_RAY, RAY_MISSING, Runner, StageFailed
 
 SPLIT = "tiny"
 STAGES = ("simulate", "render", "annotate")
@@ -101,6 +101,17 @@ def test_cli_starts_a_local_ray(local, tmp_path):
     assert digests(data) == want
 
 
+def test_a_commands_own_ray_runs_its_workers_at_its_own_priority():
+    """Ray's default puts workers at nice 15, so that any other work on the cores starves them (the executor tests
+    beside two busy processes ran 18 times slower); the local pool's workers run at the command's priority."""
+    pytest.importorskip("ray")
+    code = ("import os; from dynclevr.pipeline import _ray_connect; ray = _ray_connect(None, 1); "
+            "print(ray.get(ray.remote(lambda: os.nice(0)).remote()), os.nice(0))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    worker, own = out.stdout.split()[-2:]
+    assert worker == own, out.stdout + out.stderr
+
+
 def _kill_first_attempt() -> None:
     """Ray's worker_process_setup_hook (runs in every worker): once the test arms it, the first render of KILLED
     SIGKILLs its own worker process, leaving a marker; the retry renders normally."""
@@ -132,6 +143,7 @@ def ray_local(tmp_path_factory):
     faults = tmp_path_factory.mktemp("faults")
     ray.cloudpickle.register_pickle_by_value(sys.modules[__name__])   # tests/ is not importable in a worker
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False, object_store_memory=100 * 1024 ** 2,
+             _system_config=OWN_RAY,
              runtime_env={"worker_process_setup_hook": _kill_first_attempt,
                           "env_vars": {"DYNCLEVR_TEST_FAULTS": str(faults)}})
     yield faults
