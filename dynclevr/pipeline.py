@@ -447,8 +447,8 @@ def _ray_connect(address: str | None, workers: int):
             else:
                 # A Ray of this process's own, on this machine: its notice that token authentication is on (the
                 # secure default) is noise on every command. Its workers run at the command's own priority, as the
-                # local pool's do: Ray's default (nice 15) let any other work on the cores slow them 18-fold
-                # (the executor tests beside two busy processes).
+                # local pool's do: with Ray's default (nice 15), two busy processes on the cores made the
+                # executor tests' Ray runs 6 to 17 times slower.
                 logging.getLogger("ray._private.authentication.authentication_token_setup").setLevel(logging.ERROR)
                 ray.init(num_cpus=workers, object_store_memory=100 * 1024 ** 2, _system_config=OWN_RAY, **quiet)
         except ConnectionError as e:

@@ -103,7 +103,7 @@ def test_cli_starts_a_local_ray(local, tmp_path):
 
 def test_a_commands_own_ray_runs_its_workers_at_its_own_priority():
     """Ray's default puts workers at nice 15, so that any other work on the cores starves them (the executor tests
-    beside two busy processes ran 18 times slower); the local pool's workers run at the command's priority."""
+    beside two busy processes ran 6 to 17 times slower); the local pool's workers run at the command's priority."""
     pytest.importorskip("ray")
     code = ("import os; from dynclevr.pipeline import _ray_connect; ray = _ray_connect(None, 1); "
             "print(ray.get(ray.remote(lambda: os.nice(0)).remote()), os.nice(0))")
