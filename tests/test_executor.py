@@ -108,6 +108,7 @@ def test_a_commands_own_ray_runs_its_workers_at_its_own_priority():
     code = ("import os; from dynclevr.pipeline import _ray_connect; ray = _ray_connect(None, 1); "
             "print(ray.get(ray.remote(lambda: os.nice(0)).remote()), os.nice(0))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
     worker, own = out.stdout.split()[-2:]
     assert worker == own, out.stdout + out.stderr
 
