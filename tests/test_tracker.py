@@ -187,6 +187,25 @@ def test_a_car_seen_from_its_start_has_its_speed_there_and_a_causal_cut_state():
     assert est.state_at(cut) is est.cut_state and est.state_at(cut - 1)["velocity"] is not est.cut_state["velocity"]
 
 
+@pytest.mark.parametrize("enters", [0, 27], ids=["from-the-start", "just-before-the-cut"])
+def test_a_confirmed_track_is_seen_from_its_first_detection_and_the_cut_keeps_to_the_observed_frames(enters):
+    """A parked car detected from frame `enters` on is an object once `confirm_frames` detections confirm it, and is
+    then seen from its first detection (issue 11: a track's start is its first confident frame), not from the frame
+    that confirmed it. One that comes into sight at frame 27 is confirmed only after the cut (frame 29): the
+    observed frames alone do not know it, so the parse shows it from frame 30 on (the predictive questions' parse,
+    which reads the observed frames' visibility, leaves it out)."""
+    cfg = Config.load()
+    pos = np.tile([0.5, 1.0, ground_height("sedan")], (T, 1))
+    dets = [[] if t < enters else d for t, d in enumerate(_detections(pos, 0.0, "sedan", np.random.default_rng(5)))]
+    est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
+    assert len(est.objects) == 1
+    first, cut = int(np.argmax(est.visible[:, 0])), est.observed_frames - 1
+    assert enters + cfg["parser"]["confirm_frames"] - 1 > cut or first == enters
+    assert est.visible[first:, 0].all()
+    if enters + cfg["parser"]["confirm_frames"] - 1 > cut:
+        assert first == cut + 1 and not est.visible[:cut + 1, 0].any()
+
+
 def test_slope_of_a_linear_signal_is_exact():
     v = 2.0 + 1.5 * np.arange(12)[:, None] / FPS * np.array([1.0, -2.0, 0.0])
     np.testing.assert_allclose(slope(v, FPS), [1.5, -3.0, 0.0], atol=1e-9)

@@ -22,8 +22,9 @@ same whatever follows):
    as the slope of the velocity since the last impact, engine and floating from them; sub-type and colour from the
    head's evidence summed over the track's frames (within the observed frames for an object seen in them, so the
    predictive questions never depend on later frames).
-A track becomes an object once detected in `confirm_frames` of its first `confirm_window` frames, and is reported
-from that frame on; one that is not by then was a passing false peak and ends.
+A track becomes an object once detected in `confirm_frames` of its first `confirm_window` frames, and is then
+reported from its first detection on (the frame the object came into sight, not the frame the parser became sure
+of it); one that is not by then was a passing false peak and ends.
 """
 
 from __future__ import annotations
@@ -765,7 +766,10 @@ class SceneParser:
             pos[sl, i], quat[sl, i] = np.array(k.pose)[:, :3], self._orientations(k)
             vel[sl, i], acc[sl, i], ang[sl, i] = np.array(k.vel), np.array(k.acc), np.array(k.ang)
             eng[sl, i], flo[sl, i] = k.engine, k.floating
-            vis[sl, i] = np.array(k.seen) & (np.arange(k.start, k.start + n) >= k.confirmed)
+            # seen from its first confident frame (the track's start; issue 11), once confirmed, but in the observed
+            # frames only where they confirmed it themselves (the predictive questions' parse reads them alone)
+            first = k.start if k.confirmed < self.observed or k.start >= self.observed else self.observed
+            vis[sl, i] = np.array(k.seen) & (np.arange(k.start, k.start + n) >= first)
             # object-level attributes once the first fit window is full, but within the observed frames for an
             # object found in them: the predictive questions never depend on later frames
             a = k.start + self.p["fit_window"] - 1
