@@ -12,22 +12,18 @@ frame (what the replay carries the others along), and parts of the whole traject
 truth), not part of the model.
 """
 
-import collections
 from dataclasses import replace
-from multiprocessing import Pool
 from pathlib import Path
 
 import numpy as np
-import pyarrow.parquet as pq
 
-from dynclevr import DynclevrError
 from dynclevr.config import Config
 from dynclevr.perception.evaluate import match
 from dynclevr.physics import PhysicsParams
-from dynclevr.questions.programs import Executor
 from dynclevr.scene import Collision, Scene4D
 from dynclevr.stages.simulate_future import attach, predict
 
+from gold_answers import right, table
 from split_args import split_args
 
 STATE = ("position", "orientation", "velocity", "angular_velocity", "engine", "floating")
@@ -80,31 +76,8 @@ def scene(job):
         "all of the trajectory from the truth": with_truth(est, truth, pairs, STATE, whole)}
     for s in variants.values():
         s.counterfactuals = predict(s, params, replay)[1]
-    out = {}
-    for label, s in {"the parse": est, **variants}.items():
-        ex = Executor(s, cfg["labels"])
-        right = []
-        for q in questions:
-            try:
-                right.append(ex.run(q["program"]) == q["answer"])
-            except DynclevrError:
-                right.append(False)
-        out[label] = right
-    return out
+    return right({"the parse": est, **variants}, questions, cfg["labels"])
 
 
 if __name__ == "__main__":
-    by_scene = collections.defaultdict(list)
-    for q in pq.read_table(root / "questions.parquet").to_pylist():
-        if q["type"] == "counterfactual":
-            by_scene[q["scene"]].append(q)
-    with Pool(2) as pool:
-        results = pool.map(scene, sorted(by_scene.items()))
-    total = collections.defaultdict(list)
-    for r in results:
-        for label, right in r.items():
-            total[label] += right
-    print(f"| {args.split}: counterfactual questions ({len(total['the parse'])}), gold programs | accuracy % |")
-    print("|---|---|")
-    for label, right in total.items():
-        print(f"| {label} | {100 * np.mean(right):.2f} |")
+    table(root, args.split, "counterfactual", scene)

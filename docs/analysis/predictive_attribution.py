@@ -11,23 +11,19 @@ drawn again from K other random streams with N runs each (by default the configu
 vote's draws alone put into the predictive answers. An analysis (it reads the truth), not part of the model.
 """
 
-import collections
 import zlib
 from dataclasses import replace
-from multiprocessing import Pool
 from pathlib import Path
 
 import numpy as np
-import pyarrow.parquet as pq
 
-from dynclevr import DynclevrError
 from dynclevr.config import Config
 from dynclevr.perception.evaluate import match
 from dynclevr.physics import ContactEvents, PhysicsParams, World
-from dynclevr.questions.programs import Executor
 from dynclevr.scene import Collision, Scene4D
 from dynclevr.stages.simulate_future import ENSEMBLE_STREAM, Ensemble, _bodies, _events, attach, predict_future
 
+from gold_answers import right, table
 from split_args import split_args
 
 PARTS = {"velocity": ("velocity",), "position": ("position",), "heading and spin": ("orientation", "angular_velocity"),
@@ -87,31 +83,8 @@ def scene(job):
     for m in args.margin:
         variants[f"the parse, hulls within {m} m collide"] = s = replace(est)
         s.future_collisions = near_misses(est, m)
-    out = {}
-    for label, s in variants.items():
-        ex = Executor(s, cfg["labels"])
-        right = []
-        for q in questions:
-            try:
-                right.append(ex.run(q["program"]) == q["answer"])
-            except DynclevrError:
-                right.append(False)
-        out[label] = right
-    return out
+    return right(variants, questions, cfg["labels"])
 
 
 if __name__ == "__main__":
-    by_scene = collections.defaultdict(list)
-    for q in pq.read_table(root / "questions.parquet").to_pylist():
-        if q["type"] == "predictive":
-            by_scene[q["scene"]].append(q)
-    with Pool(2) as pool:
-        results = pool.map(scene, sorted(by_scene.items()))
-    total = collections.defaultdict(list)
-    for r in results:
-        for label, right in r.items():
-            total[label] += right
-    print(f"| {args.split}: predictive questions ({len(total['the parse'])}), gold programs | accuracy % |")
-    print("|---|---|")
-    for label, right in total.items():
-        print(f"| {label} | {100 * np.mean(right):.2f} |")
+    table(root, args.split, "predictive", scene)
