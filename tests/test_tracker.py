@@ -200,10 +200,8 @@ def test_a_confirmed_track_is_seen_from_its_first_detection_and_the_cut_keeps_to
     est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(np.zeros((T, 1, 1, 3), np.uint8), "syn", dets)
     assert len(est.objects) == 1
     first, cut = int(np.argmax(est.visible[:, 0])), est.observed_frames - 1
-    assert enters + cfg["parser"]["confirm_frames"] - 1 > cut or first == enters
-    assert est.visible[first:, 0].all()
-    if enters + cfg["parser"]["confirm_frames"] - 1 > cut:
-        assert first == cut + 1 and not est.visible[:cut + 1, 0].any()
+    confirmed = enters + cfg["parser"]["confirm_frames"] - 1
+    assert first == (enters if confirmed <= cut else cut + 1) and est.visible[first:, 0].all()
 
 
 def test_slope_of_a_linear_signal_is_exact():
