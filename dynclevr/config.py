@@ -151,6 +151,9 @@ class Config:
         for key in ("future_velocity_sigma", "future_position_sigma", "future_yaw_sigma"):
             if im[key] < 0:
                 raise ConfigError(f"'imagine.{key}' = {im[key]!r} must not be negative")
+        for key in ("bootstrap_resamples", "bootstrap_seed"):
+            if self.data["report"][key] < 0:
+                raise ConfigError(f"'report.{key}' = {self.data['report'][key]!r} must not be negative")
         if self.data["render"]["backend"] not in ("tiny", "mitsuba"):
             raise ConfigError(f"'render.backend' = {self.data['render']['backend']!r}: use 'tiny' or 'mitsuba'")
 

@@ -1,13 +1,17 @@
 """The paper's Table 1 measured on our data: NS-4DPhysics, its ablation without the physics prior, the particle
 filter, the per-frame 3D baseline (PO3D-VQA style) and the CNN+LSTM baseline, the oracle (truth scene + gold
 programs), the blind baseline; below them the paper's reported rows for reference. PLLaVA and GPT-4o are the
-paper's figures only ("paper, not reproduced"): their weights are not here and this machine has no network."""
+paper's figures only ("paper, not reproduced"): their weights are not here and this machine has no network. Under the
+table, each measured row's 95% interval and those of the differences the ablation is about (dynclevr/uncertainty.py:
+a bootstrap over the split's videos, paired between rows)."""
 
 from __future__ import annotations
 
 import json
 import math
 from pathlib import Path
+
+import numpy as np
 
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import Store, read_parquet
@@ -17,6 +21,7 @@ from dynclevr.questions.programs import Executor
 from dynclevr.scene import Scene4D
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.answer import ANSWERS_FILE, ANSWERS_SCHEMA, ANSWERS_VERSION, table1
+from dynclevr.uncertainty import bootstrap, interval
 
 COLUMNS = ("Average", "Factual All", "Vel", "Acc", "Col", "Predictive", "Counterfactual")
 NOT_REPRODUCED = "paper, not reproduced: "
@@ -33,6 +38,11 @@ CNNLSTM_ROW = "CNN+LSTM"
 PAPER_OF = {"NS-4DPhysics (ours)": "paper: NS-4DPhysics", "ours without physics prior":
             "paper: NS-4DPhysics w/o physics prior", "per-frame 3D, PO3D-VQA style": "paper: PO3D-VQA",
             CNNLSTM_ROW: "paper: CNN+LSTM"}
+OURS = "NS-4DPhysics (ours)"
+# The differences the ablation is about: (label, row, row it is compared with), where both rows ran.
+DIFFERENCES = (("the physics prior's gain: ours minus ours without the prior", OURS, "ours without physics prior"),
+               ("the particle filter minus the single-particle prior (ours)", "ours with the particle filter", OURS),
+               ("ours minus the per-frame 3D baseline", OURS, "per-frame 3D, PO3D-VQA style"))
 
 
 def _answers(store: Store, variant: str) -> list[dict] | None:
@@ -85,6 +95,7 @@ def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple],
     (`run --no-ablation`) is left out with a note; the main model must have run."""
     questions = read_parquet(store.split_file("questions.parquet"), QUESTIONS_SCHEMA, QUESTIONS_VERSION).to_pylist()
     rows: dict[str, tuple] = {}
+    measured: dict[str, list[dict]] = {}   # each measured row's answers, for the intervals
     extra = {"questions": len(questions), "videos": len({q["scene"] for q in questions})}
     for k, (name, model_cfg) in enumerate(model_configs(cfg)):
         answers = _answers(store, model_variant(model_cfg))
@@ -97,6 +108,7 @@ def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple],
         if why:
             raise DynclevrError(f"the row '{name}' would show stale numbers ({why}): run `{rerun}`")
         rows[name] = tuple(table1(answers)[c][0] for c in COLUMNS)
+        measured[name] = answers
         extra[f"{name}: program exact match"] = 100.0 * sum(a["program_match"] for a in answers) / max(len(answers), 1)
         extra[f"{name}: unparsed"] = sum(a["status"] == "unparsed" for a in answers)
         extra[f"{name}: failed programs"] = sum(a["status"] == "failed" for a in answers)
@@ -108,13 +120,22 @@ def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple],
         if why:
             raise DynclevrError(f"the row '{CNNLSTM_ROW}' would show stale numbers ({why}): run `{rerun}`")
         rows[CNNLSTM_ROW] = tuple(table1(answers)[c][0] for c in COLUMNS)
+        measured[CNNLSTM_ROW] = answers
     rows["oracle (truth scene, gold programs)"] = tuple(
         table1(oracle_rows(store, cfg, questions))[c][0] for c in COLUMNS)
     blind = blind_rows(questions)
     if blind is not None:
         rows["blind (train-split majority per family)"] = tuple(table1(blind)[c][0] for c in COLUMNS)
+        measured["blind (train-split majority per family)"] = blind
     counts = table1([{**q, "correct": True} for q in questions])
     extra["counts"] = {c: counts[c][1] for c in COLUMNS}
+    resamples = cfg["report"]["bootstrap_resamples"]
+    if resamples:
+        samples = bootstrap(measured, resamples, cfg["report"]["bootstrap_seed"])
+        extra["intervals"] = {name: interval(x) for name, x in samples.items()}
+        extra["differences"] = {label: (np.subtract(rows[a], rows[b]), *interval(samples[a] - samples[b]))
+                                for label, a, b in DIFFERENCES if a in samples and b in samples}
+        extra["resamples"] = resamples
     return {**rows, **PAPER}, extra
 
 
@@ -126,7 +147,20 @@ def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
     lines += [f"| {name} | " + " | ".join(fmt(v) for v in vals) + " |" for name, vals in rows.items()]
     lines.append("")
     lines += [f"- {k}: {fmt(v) if isinstance(v, float) else v}" for k, v in extra.items()
-              if k not in ("counts", "questions", "videos")]
+              if k not in ("counts", "questions", "videos", "intervals", "differences", "resamples")]
+    if "intervals" in extra:
+        lines += ["", f"95% intervals: the {extra['videos']} videos resampled with replacement {extra['resamples']} "
+                  "times, every row over the same resamples (`dynclevr/uncertainty.py`; `report.bootstrap_resamples`)",
+                  "", "| model | " + " | ".join(COLUMNS) + " |", "|---" * (len(COLUMNS) + 1) + "|"]
+        span = lambda lo, hi, sign="": "–" if math.isnan(lo) else f"{lo:{sign}.1f} to {hi:{sign}.1f}"
+        lines += [f"| {name} | " + " | ".join(span(lo[c], hi[c]) for c in range(len(COLUMNS))) + " |"
+                  for name, (lo, hi) in extra["intervals"].items()]
+        if extra["differences"]:
+            lines += ["", "| difference (paired: the same resampled videos) | " + " | ".join(COLUMNS) + " |",
+                      "|---" * (len(COLUMNS) + 1) + "|"]
+            lines += [f"| {label} | " + " | ".join(
+                "–" if math.isnan(d[c]) else f"{d[c]:+.2f} ({span(lo[c], hi[c], '+')})" for c in range(len(COLUMNS)))
+                + " |" for label, (d, lo, hi) in extra["differences"].items()]
     return "\n".join(lines) + "\n"
 
 
@@ -135,7 +169,6 @@ def bar_chart(path: Path, split: str, rows: dict[str, tuple]) -> None:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import numpy as np
 
     # Each measured row, then (hatched, in its colour) the paper's row of the same model; the paper's rows of models
     # not reproduced here last, in grey.

@@ -45,6 +45,7 @@ def test_scene_seeds_depend_on_split_seed_and_index():
     ("[imagine]\nfuture_samples = 0\n", "'imagine.future_samples' = 0 must be a positive integer"),
     ("[imagine]\nfuture_vote = 0.0\n", "'imagine.future_vote' = 0.0 must lie in \\(0, 1\\]"),
     ("[imagine]\nfuture_velocity_sigma = -0.1\n", "'imagine.future_velocity_sigma' = -0.1 must not be negative"),
+    ("[report]\nbootstrap_resamples = -1\n", "'report.bootstrap_resamples' = -1 must not be negative"),
     ("[physics\n", "not valid TOML"),
 ])
 def test_bad_config_values(tmp_path, text, message):

@@ -42,6 +42,7 @@ def test_report_has_every_row_and_the_oracle_is_exact(run):
     oracle = [c.strip() for c in rows["oracle (truth scene, gold programs)"].split("|")[2:-1]]
     assert "100.00" in oracle and all(c in ("100.00", "–") for c in oracle), oracle
     assert (data / "ci" / "report.md").exists() and (data / "ci" / "report.png").stat().st_size > 10_000
+    assert "95% intervals: the 2 videos resampled" in text and "| the physics prior's gain" in text, text
 
 
 def test_answers_read_only_the_question_text(run, tmp_path):
