@@ -5,7 +5,7 @@ from dataclasses import replace
 import numpy as np
 
 from dynclevr.config import Config
-from dynclevr.perception.evaluate import scene_stats, summarise
+from dynclevr.perception.evaluate import intervals, markdown, scene_stats, summarise
 from dynclevr.scene import Collision
 from test_programs import known_scene
 
@@ -142,3 +142,25 @@ def test_the_position_error_is_reported_per_category():
     s = summarise([scene_stats(truth, est, Config.load()["labels"])])
     assert abs(s["position_err_median_aeroplane"] - 0.5) < 1e-9 and abs(s["position_err_p90_aeroplane"] - 0.5) < 1e-9
     assert all(s[f"position_err_p90_{c}"] == 0.0 for c in others)
+
+
+def test_intervals_resample_whole_scenes_and_hold_the_figures_of_the_split():
+    """Two scenes, one parsed perfectly and one missing an object: the recall's interval spans the two scenes'
+    own recalls and holds the split's; a figure the same in every scene has no width."""
+    truth = known_scene()
+    labels = Config.load()["labels"]
+    keep = list(range(1, len(truth.objects)))
+    missing = replace(truth, objects=[truth.objects[i] for i in keep], position=truth.position[:, keep],
+                      orientation=truth.orientation[:, keep], velocity=truth.velocity[:, keep],
+                      angular_velocity=truth.angular_velocity[:, keep], acceleration=truth.acceleration[:, keep],
+                      engine=truth.engine[:, keep], floating=truth.floating[:, keep], visible=truth.visible[:, keep],
+                      collisions=[], cut_state=None)
+    stats = [scene_stats(truth, truth, labels), scene_stats(truth, missing, labels)]
+    spans = intervals(stats, resamples=200, seed=0)
+    recall = summarise(stats)["detection_recall"]
+    lo, hi = spans["detection_recall"]
+    assert lo <= recall <= hi and lo >= summarise(stats[1:])["detection_recall"] and hi <= 1.0 and hi > lo
+    assert spans["detection_precision"] == (1.0, 1.0)
+    again = intervals(stats, resamples=200, seed=0)
+    assert np.array_equal(np.array(list(again.values())), np.array(list(spans.values())), equal_nan=True)
+    assert "95% interval" in markdown({"ours": summarise(stats)}, spans)

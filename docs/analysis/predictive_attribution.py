@@ -1,7 +1,9 @@
 """Which parts of the cut state the predictive answers depend on: the split's predictive questions answered with
 their gold programs on the parse (parsed/ and future/ of `dynclevr run`), then with parts of every matched object's
 state at the last observed frame put in from the truth and the future re-simulated from there
-(simulate_future.predict_future). Missed and spurious objects stay as the parse has them.
+(simulate_future.predict_future) as the stage simulates it: the configured vote over perturbed runs, with the scene's
+own draws (`--single`: one unperturbed run instead, as this analysis did before 2026-11-29; it undercounts a part
+put in alone, since the other parts then lose the vote). Missed and spurious objects stay as the parse has them.
 
     .venv/bin/python docs/analysis/predictive_attribution.py --split full-val
 
@@ -36,6 +38,7 @@ ap = split_args()
 ap.add_argument("--margin", type=float, nargs="*", default=[])
 ap.add_argument("--streams", type=int, default=0)
 ap.add_argument("--samples", type=int, nargs="*", default=[])
+ap.add_argument("--single", action="store_true", help="the variants' futures as one unperturbed run each")
 args = ap.parse_args()
 root = Path(args.data_dir) / args.split
 cfg = Config.load()
@@ -67,14 +70,14 @@ def scene(job):
     cut = est.observed_frames - 1
     pairs = match(truth, est)
     variants = {"the parse": est}
+    ensemble = Ensemble.from_config(cfg)
     for label, fields in PARTS.items():
         state = {k: np.array(v, copy=True) for k, v in est.state_at(cut).items()}
         for i, j in pairs:
             for f in fields:
                 state[f][j] = truth.state_at(cut)[f][i]
         variants[f"{label} from the truth"] = s = replace(est, cut_state=state)
-        s.future_collisions = predict_future(s, params)
-    ensemble = Ensemble.from_config(cfg)
+        s.future_collisions = predict_future(s, params, Ensemble() if args.single else ensemble)
     for n in args.samples or [ensemble.samples]:
         for k in range(1, args.streams + 1):
             variants[f"the parse, its future from stream {k} ({n} runs)"] = s = replace(est)

@@ -24,8 +24,8 @@ def register(app: typer.Typer) -> None:
         carries the prediction's error). Writes <split>/parser_eval.md and the sub-type confusion PNG."""
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
-        from dynclevr.perception.evaluate import (attribution_markdown, confusion_png, cut_attribution, markdown,
-                                                  scene_stats, summarise)
+        from dynclevr.perception.evaluate import (attribution_markdown, confusion_png, cut_attribution, intervals,
+                                                  markdown, scene_stats, summarise)
         from dynclevr.physics import PhysicsParams
         from dynclevr.questions.evidence import pixel_counts
         from dynclevr.video import Video
@@ -34,7 +34,7 @@ def register(app: typer.Typer) -> None:
         from dynclevr.scene import Scene4D
         from dynclevr.stages.simulate_future import Ensemble, attach
 
-        results, pixels = {}, {}
+        results, pixels, spans = {}, {}, None
         base = load_config(config)
         variants = model_configs(base)
         if not base["parser"]["refine"]:   # (the default already refines: the first row is this one)
@@ -64,7 +64,9 @@ def register(app: typer.Typer) -> None:
             if first:
                 confusion_png(stats, r.store.split_file("parser_confusion.png"))
                 where = attribution_markdown(attribution)
-        table = markdown(results)
+                if cfg["report"]["bootstrap_resamples"]:
+                    spans = intervals(stats, cfg["report"]["bootstrap_resamples"], cfg["report"]["bootstrap_seed"])
+        table = markdown(results, spans)
         out = r.store.split_file(REPORT)
         out.write_text(f"# Scene parser on split {r.split.name} ({len(indices)} scenes)\n\n"
                        f"`dynclevr eval-parser --split {r.split.name}"

@@ -20,6 +20,7 @@ part at a time: how much of the prediction's error each part of the estimated st
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -29,6 +30,7 @@ from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
 from dynclevr.perception.detector_data import yaw_of
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
 from dynclevr.scene import CUT_FIELDS, Scene4D
+from dynclevr.uncertainty import resample_weights
 
 MATCH_RADIUS = 1.5      # metres
 DUPLICATE_RADIUS = 1.5  # metres: an unmatched estimate this close to a matched true object is a duplicate of it
@@ -294,12 +296,27 @@ ROWS = [("detection_precision", "detection precision"),
         ("collision_recall_in_sight_strict", f"... within {STRICT_EVENT_TOLERANCE}")]
 
 
-def markdown(results: dict[str, dict]) -> str:
-    """results: variant name -> summarise() output."""
+def intervals(stats: list[dict], resamples: int, seed: int) -> dict[str, tuple[float, float]]:
+    """Each of `summarise`'s figures as a 95% interval: the scenes resampled with replacement (whole videos, as
+    dynclevr/uncertainty.py resamples them for the accuracy table), `summarise` over each resample."""
+    w = resample_weights(len(stats), resamples, seed).astype(int)
+    draws = [summarise([s for s, n in zip(stats, row) for _ in range(n)]) for row in w]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)   # a figure no resample has: NaN
+        return {key: tuple(float(x) for x in np.nanpercentile([d[key] for d in draws], [2.5, 97.5]))
+                for key, _ in ROWS}
+
+
+def markdown(results: dict[str, dict], spans: dict[str, tuple[float, float]] | None = None) -> str:
+    """results: variant name -> summarise() output; `spans`: the first variant's `intervals`, as a last column."""
     names = list(results)
-    lines = ["| metric | " + " | ".join(names) + " |", "|---|" + "---|" * len(names)]
+    extra = [f"{names[0]}: 95% interval (videos resampled)"] if spans else []
+    lines = ["| metric | " + " | ".join(names + extra) + " |", "|---|" + "---|" * (len(names) + len(extra))]
     for key, label in ROWS:
-        lines.append(f"| {label} | " + " | ".join(f"{results[n][key]:.3f}" for n in names) + " |")
+        cells = [f"{results[n][key]:.3f}" for n in names]
+        if spans:
+            cells.append(f"{spans[key][0]:.3f} to {spans[key][1]:.3f}")
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
 
 
