@@ -1,6 +1,7 @@
 """One model row run again with a changed config (or another checkout's code) in a copy of a split's folder, then
-its answers set against the split's own run of that row: questions right, gained and lost, by type and by family.
-The journal's "measured and not kept" rows are runs of this kind.
+its answers set against the split's own run of that row: questions right, gained and lost, by type and by family,
+and the change in Table 1's columns with its 95% interval (the split's videos resampled, both runs over the same
+resamples: dynclevr/uncertainty.py). The journal's "measured and not kept" rows are runs of this kind.
 
     .venv/bin/python docs/analysis/row_experiment.py --split full-val --data-dir D --config C --out E [--tree T]
 
@@ -21,6 +22,10 @@ from pathlib import Path
 
 import pyarrow.parquet as pq
 
+from dynclevr.config import Config
+from dynclevr.report import COLUMNS
+from dynclevr.stages.answer import table1
+from dynclevr.uncertainty import bootstrap, interval
 from split_args import split_args
 
 SHARED = ("sim", "video", "labels", "objects.parquet", "questions.parquet")
@@ -62,6 +67,13 @@ for new_path in sorted((out / args.split).glob("answers*.parquet")):
     keys = sorted(old.keys() & new.keys())
     print(f"{new_path.name}: {sum(old[k]['correct'] for k in keys)} -> {sum(new[k]['correct'] for k in keys)} "
           f"of {len(keys)} questions right")
+    report = Config.load()["report"]
+    x = bootstrap({"old": [old[k] for k in keys], "new": [new[k] for k in keys]}, report["bootstrap_resamples"],
+                  report["bootstrap_seed"])
+    lo, hi = interval(x["new"] - x["old"])
+    change = [table1([new[k] for k in keys])[c][0] - table1([old[k] for k in keys])[c][0] for c in COLUMNS]
+    print("  change in points, 95% interval (paired): " + ", ".join(
+        f"{c} {d:+.2f} ({lo[i]:+.2f} to {hi[i]:+.2f})" for i, (c, d) in enumerate(zip(COLUMNS, change))))
     by = collections.defaultdict(lambda: [0, 0, 0, 0])     # right before, right after, gained, lost
     for k in keys:
         a, b = old[k]["correct"], new[k]["correct"]
