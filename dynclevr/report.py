@@ -136,7 +136,24 @@ def build(store: Store, cfg: Config, rerun: str = "") -> tuple[dict[str, tuple],
         extra["differences"] = {label: (np.subtract(rows[a], rows[b]), *interval(samples[a] - samples[b]))
                                 for label, a, b in DIFFERENCES if a in samples and b in samples}
         extra["resamples"] = resamples
+    extra["families"] = list(measured), families(questions, measured)
     return {**rows, **PAPER}, extra
+
+
+def families(questions: list[dict], measured: dict[str, list[dict]]) -> list[tuple[str, str, int, list[float]]]:
+    """(family, type, questions, each measured row's accuracy in %) per question family, by type then family: where
+    a row's average comes from (Table 1's columns pool families of very different difficulty)."""
+    asked: dict[tuple[str, str], int] = {}
+    for q in questions:
+        asked[(q["type"], q["family"])] = asked.get((q["type"], q["family"]), 0) + 1
+    right = {name: {} for name in measured}
+    for name, answers in measured.items():
+        for a in answers:
+            key = (a["type"], a["family"])
+            right[name][key] = right[name].get(key, 0) + bool(a["correct"])
+    order = {"factual": 0, "predictive": 1, "counterfactual": 2}
+    return [(family, kind, n, [100.0 * right[name].get((kind, family), 0) / n for name in measured])
+            for (kind, family), n in sorted(asked.items(), key=lambda kv: (order.get(kv[0][0], 3), kv[0][1]))]
 
 
 def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
@@ -147,7 +164,7 @@ def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
     lines += [f"| {name} | " + " | ".join(fmt(v) for v in vals) + " |" for name, vals in rows.items()]
     lines.append("")
     lines += [f"- {k}: {fmt(v) if isinstance(v, float) else v}" for k, v in extra.items()
-              if k not in ("counts", "questions", "videos", "intervals", "differences", "resamples")]
+              if k not in ("counts", "questions", "videos", "intervals", "differences", "resamples", "families")]
     if "intervals" in extra:
         lines += ["", f"95% intervals: the {extra['videos']} videos resampled with replacement {extra['resamples']} "
                   "times, every row over the same resamples (`dynclevr/uncertainty.py`; `report.bootstrap_resamples`)",
@@ -161,6 +178,12 @@ def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
             lines += [f"| {label} | " + " | ".join(
                 "–" if math.isnan(d[c]) else f"{d[c]:+.2f} ({span(lo[c], hi[c], '+')})" for c in range(len(COLUMNS)))
                 + " |" for label, (d, lo, hi) in extra["differences"].items()]
+    if extra.get("families"):
+        names, table = extra["families"]
+        lines += ["", "Accuracy by question family (%; each family's questions counted once)", "",
+                  "| family | type | questions | " + " | ".join(names) + " |", "|---" * (len(names) + 3) + "|"]
+        lines += [f"| {family} | {kind} | {n} | " + " | ".join(f"{v:.1f}" for v in accs) + " |"
+                  for family, kind, n, accs in table]
     return "\n".join(lines) + "\n"
 
 

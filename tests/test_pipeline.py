@@ -43,6 +43,11 @@ def test_report_has_every_row_and_the_oracle_is_exact(run):
     assert "100.00" in oracle and all(c in ("100.00", "–") for c in oracle), oracle
     assert (data / "ci" / "report.md").exists() and (data / "ci" / "report.png").stat().st_size > 10_000
     assert "95% intervals: the 2 videos resampled" in text and "| the physics prior's gain" in text, text
+    # by family: every question in one family row, each measured row's accuracy beside it
+    table = text.split("Accuracy by question family")[1]
+    family_rows = [line.split("|") for line in table.splitlines() if line.startswith("| ") and "---" not in line][1:]
+    total = int(rows["questions"].split("|")[2])
+    assert sum(int(r[3]) for r in family_rows) == total and all(len(r) == len(family_rows[0]) for r in family_rows)
 
 
 def test_answers_read_only_the_question_text(run, tmp_path):
