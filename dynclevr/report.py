@@ -3,7 +3,7 @@ filter, the per-frame 3D baseline (PO3D-VQA style) and the CNN+LSTM baseline, th
 programs), the blind baseline; below them the paper's reported rows for reference. PLLaVA and GPT-4o are the
 paper's figures only ("paper, not reproduced"): their weights are not here and this machine has no network. Under the
 table, each measured row's 95% interval and those of the differences the ablation is about (dynclevr/uncertainty.py:
-a bootstrap over the split's videos, paired between rows)."""
+a bootstrap over the split's videos, paired between rows), then every measured row's accuracy by question family."""
 
 from __future__ import annotations
 
@@ -39,6 +39,8 @@ PAPER_OF = {"NS-4DPhysics (ours)": "paper: NS-4DPhysics", "ours without physics 
             "paper: NS-4DPhysics w/o physics prior", "per-frame 3D, PO3D-VQA style": "paper: PO3D-VQA",
             CNNLSTM_ROW: "paper: CNN+LSTM"}
 OURS = "NS-4DPhysics (ours)"
+# build()'s extra entries that markdown() lays out itself; the rest are notes, one line each
+LAID_OUT = ("counts", "questions", "videos", "intervals", "differences", "resamples", "families")
 # The differences the ablation is about: (label, row, row it is compared with), where both rows ran.
 DIFFERENCES = (("the physics prior's gain: ours minus ours without the prior", OURS, "ours without physics prior"),
                ("the particle filter minus the single-particle prior (ours)", "ours with the particle filter", OURS),
@@ -164,7 +166,7 @@ def markdown(split: str, rows: dict[str, tuple], extra: dict) -> str:
     lines += [f"| {name} | " + " | ".join(fmt(v) for v in vals) + " |" for name, vals in rows.items()]
     lines.append("")
     lines += [f"- {k}: {fmt(v) if isinstance(v, float) else v}" for k, v in extra.items()
-              if k not in ("counts", "questions", "videos", "intervals", "differences", "resamples", "families")]
+              if k not in LAID_OUT]
     if "intervals" in extra:
         lines += ["", f"95% intervals: the {extra['videos']} videos resampled with replacement {extra['resamples']} "
                   "times, every row over the same resamples (`dynclevr/uncertainty.py`; `report.bootstrap_resamples`)",
