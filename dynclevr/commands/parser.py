@@ -21,7 +21,8 @@ def register(app: typer.Typer) -> None:
         (and parsed-noprior/, parsed-particle/, parsed-refine/: the detection head with render-and-compare) against
         sim/; runs simulate, render, parse-scene and simulate-future first where they are not cached. Then, for
         the first model, the predicted future re-simulated with parts of the cut state from the truth (which part
-        carries the prediction's error). Writes <split>/parser_eval.md and the sub-type confusion PNG."""
+        carries the prediction's error). Writes <split>/parser_eval.md (with the first model's 95% intervals, its videos
+        resampled: `report.bootstrap_resamples`) and the sub-type confusion PNG."""
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
         from dynclevr.perception.evaluate import (attribution_markdown, confusion_png, cut_attribution, intervals,
