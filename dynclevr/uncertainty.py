@@ -54,7 +54,8 @@ def bootstrap(rows: dict[str, list[dict]], resamples: int, seed: int) -> dict[st
 
 
 def interval(samples: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """[resamples, 7] -> (low, high) [7] at LEVEL; NaN for a column that no resample has questions in."""
+    """[resamples, k] -> (low, high) [k] at LEVEL (Table 1's columns, or any figures); NaN for one that no resample
+    has."""
     tail = 100.0 * (1.0 - LEVEL) / 2
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)   # an all-NaN column: its interval is NaN

@@ -20,7 +20,6 @@ part at a time: how much of the prediction's error each part of the estimated st
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -30,7 +29,7 @@ from dynclevr.assets.catalogue import CATEGORIES, SUBTYPES
 from dynclevr.perception.detector_data import yaw_of
 from dynclevr.questions.labels import compute_labels, future_events, merge_events
 from dynclevr.scene import CUT_FIELDS, Scene4D
-from dynclevr.uncertainty import resample_weights
+from dynclevr.uncertainty import interval, resample_weights
 
 MATCH_RADIUS = 1.5      # metres
 DUPLICATE_RADIUS = 1.5  # metres: an unmatched estimate this close to a matched true object is a duplicate of it
@@ -301,10 +300,8 @@ def intervals(stats: list[dict], resamples: int, seed: int) -> dict[str, tuple[f
     dynclevr/uncertainty.py resamples them for the accuracy table), `summarise` over each resample."""
     w = resample_weights(len(stats), resamples, seed).astype(int)
     draws = [summarise([s for s, n in zip(stats, row) for _ in range(n)]) for row in w]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)   # a figure no resample has: NaN
-        return {key: tuple(float(x) for x in np.nanpercentile([d[key] for d in draws], [2.5, 97.5]))
-                for key, _ in ROWS}
+    lo, hi = interval(np.array([[d[key] for key, _ in ROWS] for d in draws], float))
+    return {key: (float(a), float(b)) for (key, _), a, b in zip(ROWS, lo, hi)}
 
 
 def markdown(results: dict[str, dict], spans: dict[str, tuple[float, float]] | None = None) -> str:
