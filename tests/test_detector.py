@@ -210,15 +210,48 @@ def test_a_grown_head_computes_what_it_grew_from_and_then_learns_in_its_new_bloc
     assert (loaded.blocks, loaded.fine_blocks) == (2, 1)
 
 
-def test_growing_a_head_into_another_width_is_one_clear_line(tmp_path):
+def test_a_widened_head_computes_what_it_grew_from_and_its_copies_learn_apart(tmp_path):
+    from dynclevr.perception.detector import widened
+    from dynclevr.perception.detector_train import _grown, load_detector
+
+    torch.manual_seed(0)
+    small = DetectNet(16, blocks=1, fine_blocks=1)
+    with torch.no_grad():          # trained-looking BatchNorms: the copies must carry their statistics too
+        for m in small.modules():
+            if isinstance(m, torch.nn.BatchNorm2d):
+                m.running_mean.uniform_(-0.5, 0.5)
+                m.running_var.uniform_(0.5, 2.0)
+                m.weight.uniform_(0.5, 1.5)
+    small.eval()
+    img = torch.rand(2, 3, 96, 128)
+    exact = widened(small, 24, torch.Generator().manual_seed(1), noise=0.0).eval()
+    assert exact.width == 24 and sum(p.numel() for p in exact.parameters()) > sum(p.numel() for p in small.parameters())
+    assert torch.allclose(small(img), exact(img), atol=1e-4)
+    # through --grow-from: wider and deeper at once, near the old function (the copies' noise), then its own head
+    big, step = _grown(_checkpoint(tmp_path, small), 24, 2, 1)
+    assert (big.width, big.blocks, big.fine_blocks, step) == (24, 2, 1, 100)
+    out, ref = big.eval()(img), small(img)
+    assert (out - ref).abs().max() < 0.05 * ref.abs().max()
+    # a new channel copies an old one; the noise touches the copies only, so they can learn apart
+    noisy = widened(small, 24, torch.Generator().manual_seed(1)).s4[0][0].weight
+    plain = exact.s4[0][0].weight
+    assert any(torch.equal(plain[16], plain[j]) for j in range(16))
+    assert torch.equal(noisy[:16], plain[:16]) and not torch.equal(noisy[16:], plain[16:])
+    _checkpoint(tmp_path, big, step)
+    assert load_detector(tmp_path).width == 24
+
+
+def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
     import pytest
 
     from dynclevr.config import ConfigError
     from dynclevr.perception.detector_train import _grown
 
     path = _checkpoint(tmp_path, DetectNet(16))
-    with pytest.raises(ConfigError, match="detector_width = 16"):
-        _grown(path, 32, 2, 0)
+    with pytest.raises(ConfigError, match="an even number of at least 16"):
+        _grown(path, 8, 2, 0)
+    with pytest.raises(ConfigError, match="an even number of at least 16"):
+        _grown(path, 17, 0, 0)
     _checkpoint(tmp_path, DetectNet(16, fine_blocks=1))
     with pytest.raises(ConfigError, match="detector_fine_blocks at least 1"):
         _grown(path, 16, 0, 0)

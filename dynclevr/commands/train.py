@@ -34,9 +34,9 @@ def register(app: typer.Typer) -> None:
                  steps: Optional[int] = typer.Option(None, "--steps", help="total steps (default parser.detector_steps)"),
                  minutes: Optional[float] = typer.Option(None, "--minutes", help="stop (and save) after this long"),
                  grow_from: Optional[Path] = typer.Option(
-                     None, "--grow-from", help="start from the trained head in this directory, deepened to "
-                                               "parser.detector_blocks and detector_fine_blocks (it computes the same "
-                                               "at first)"),
+                     None, "--grow-from", help="start from the trained head in this directory, grown to "
+                                               "parser.detector_width, detector_blocks and detector_fine_blocks (it "
+                                               "computes the same at first)"),
                  data_only: bool = typer.Option(False, "--data-only", help="make the training shards, then stop"),
                  device: str = typer.Option("cpu", "--device", help="where the head trains: cpu or cuda"),
                  loader_workers: int = typer.Option(0, "--loader-workers",

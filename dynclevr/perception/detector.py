@@ -90,6 +90,66 @@ class DetectNet(nn.Module):
         return self.head(self.fine(y4))
 
 
+def widened(net: DetectNet, width: int, generator: torch.Generator, noise: float = 0.01) -> DetectNet:
+    """A head of `width` (same blocks) that computes what `net` does (Net2WiderNet): every new channel copies an old
+    one of its stage, and the layers reading a copied channel share its weight among its copies. Copies would learn
+    alike (Adam scales their equal gradients alike), so their incoming weights get Gaussian noise of `noise` times
+    the layer's weight spread; with `noise` 0 the function is exactly the old one's."""
+    if width < net.width or width % 2:
+        raise ValueError(f"a head of width {net.width} widens only to a larger even width, not {width}")
+    new = DetectNet(width, net.blocks, net.fine_blocks)
+    w, w2 = net.width, width
+    sizes = {"A": (w // 2, w2 // 2), "B": (w, w2), "C": (2 * w, 2 * w2), "D": (3 * w, 3 * w2),
+             "E": (3 * w // 2, 3 * w2 // 2)}
+    pick = {k: torch.cat([torch.arange(n), torch.randint(0, n, (n2 - n,), generator=generator)])
+            for k, (n, n2) in sizes.items()}
+    pick["rgb"], pick["out"] = torch.arange(3), torch.arange(OUT)
+    share = {k: 1.0 / torch.bincount(g)[g].float() for k, g in pick.items()}
+
+    def joined(*keys):           # a concatenation's channels: each part's copies, offset by the parts before it
+        offsets = np.cumsum([0] + [sizes[k][0] for k in keys[:-1]])
+        return (torch.cat([pick[k] + int(o) for k, o in zip(keys, offsets)]), torch.cat([share[k] for k in keys]))
+
+    @torch.no_grad()
+    def conv(old: nn.Conv2d, fresh: nn.Conv2d, into, out: str) -> None:
+        g_in, s_in = into if isinstance(into, tuple) else (pick[into], share[into])
+        g_out = pick[out]
+        weight = old.weight[g_out][:, g_in] * s_in.view(1, -1, 1, 1)
+        copies = torch.arange(len(g_out)) >= old.out_channels
+        weight[copies] += noise * float(old.weight.std()) * torch.randn(weight[copies].shape, generator=generator)
+        fresh.weight.copy_(weight)
+        if old.bias is not None:
+            fresh.bias.copy_(old.bias[g_out])
+
+    @torch.no_grad()
+    def norm(old: nn.BatchNorm2d, fresh: nn.BatchNorm2d, out: str) -> None:
+        for name in ("weight", "bias", "running_mean", "running_var"):
+            getattr(fresh, name).copy_(getattr(old, name)[pick[out]])
+
+    def unit(old: nn.Sequential, fresh: nn.Sequential, into, out: str) -> None:     # _conv: conv, norm, relu
+        conv(old[0], fresh[0], into, out)
+        norm(old[1], fresh[1], out)
+
+    def residual(old: Residual, fresh: Residual, space: str) -> None:
+        unit(old.a, fresh.a, space, space)
+        unit(old.b, fresh.b, space, space)
+
+    def stage(old: nn.Sequential, fresh: nn.Sequential, into: str, out: str) -> None:
+        for k, (a, b) in enumerate(zip(old, fresh)):
+            residual(a, b, out) if isinstance(a, Residual) else unit(a, b, into if k == 0 else out, out)
+
+    unit(net.s2, new.s2, "rgb", "A")
+    stage(net.s4, new.s4, "A", "B")
+    stage(net.s8, new.s8, "B", "C")
+    stage(net.s16, new.s16, "C", "D")
+    unit(net.up8, new.up8, joined("D", "C"), "C")
+    unit(net.up4, new.up4, joined("C", "B"), "E")
+    stage(net.fine, new.fine, "E", "E")
+    unit(net.head[0], new.head[0], "E", "E")
+    conv(net.head[1], new.head[1], "E", "out")
+    return new
+
+
 def to_tensor(frames: np.ndarray) -> torch.Tensor:
     """uint8 frames [T, H, W, 3] -> float [T, 3, H, W] in [0, 1]."""
     return torch.from_numpy(np.ascontiguousarray(frames)).permute(0, 3, 1, 2).float().div_(255.0)

@@ -12,9 +12,9 @@ Augmentation keeps the geometry honest: horizontal flips (u -> W - u, alpha -> -
 saturation jitter (not hue: the colour is a target), blur, and JPEG re-coding at a random quality.
 Checkpoints every `checkpoint_minutes`: weights/detector/detector.pt (model, optimiser, step) with manifest.json
 (data, steps, wall time, loss curve, held-out metrics) and curve.png. `--resume` continues from there.
-`--grow-from DIR` starts a deeper head (`parser.detector_blocks` residual blocks at strides 8 and 16,
-`parser.detector_fine_blocks` at stride 4) from the trained one in DIR: it computes the same at first, so capacity
-grows on CPU without training from scratch.
+`--grow-from DIR` starts a deeper or wider head (`parser.detector_blocks` residual blocks at strides 8 and 16,
+`parser.detector_fine_blocks` at stride 4, `parser.detector_width` channels) from the trained one in DIR: it computes
+the same at first, so capacity grows on CPU without training from scratch.
 `--device cuda --loader-workers N` trains on a GPU, N processes decoding and augmenting the frames. Each training
 sample is drawn and augmented from its own seed (the run's seed and its number), so a run's batches are the same
 whatever the device or the number of loader processes.
@@ -39,7 +39,7 @@ from torch.nn import functional as F
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import atomic_path, file_digest, write_json_atomic
 from dynclevr.config import Config, ConfigError
-from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run
+from dynclevr.perception.detector import CHANNELS, STRIDE, DetectNet, decode, run, widened
 from dynclevr.perception.detector_data import LABEL_COLUMNS, make_shard, shard_backend, shard_path
 
 DEFAULT_DIR = WEIGHTS_DIR / "detector"
@@ -67,20 +67,25 @@ def load_detector(weights_dir: Path = DEFAULT_DIR) -> DetectNet:
 
 
 def _grown(source: Path, width: int, blocks: int, fine_blocks: int) -> tuple[DetectNet, int]:
-    """A head of `blocks` residual blocks per coarse stage and `fine_blocks` at stride 4 that computes what the trained
-    head in `source` does (its weights, the new blocks' residuals at zero), and the step it was trained to."""
+    """A head of `width`, `blocks` residual blocks per coarse stage and `fine_blocks` at stride 4 that computes what
+    the trained head in `source` does (its weights, widened with copies of its channels, the new blocks' residuals
+    at zero), and the step it was trained to."""
     path = Path(source) / WEIGHTS_FILE
     if not path.exists():
         raise DetectorWeightsError(f"nothing to grow from in {source}: --grow-from needs a trained head's directory")
     s = torch.load(path, weights_only=True, map_location="cpu")
     had = (s.get("blocks", 0), s.get("fine_blocks", 0))
-    if s["width"] != width or had[0] > blocks or had[1] > fine_blocks:
+    if s["width"] > width or width % 2 or had[0] > blocks or had[1] > fine_blocks:
         raise ConfigError(f"cannot grow the head in {source} (width {s['width']}, {had[0]} + {had[1]} fine blocks) "
-                          f"into width {width}, {blocks} + {fine_blocks} fine blocks: set parser.detector_width = "
-                          f"{s['width']}, parser.detector_blocks at least {had[0]} and parser.detector_fine_blocks "
-                          f"at least {had[1]}")
+                          f"into width {width}, {blocks} + {fine_blocks} fine blocks: set parser.detector_width to "
+                          f"an even number of at least {s['width']}, parser.detector_blocks at least {had[0]} and "
+                          f"parser.detector_fine_blocks at least {had[1]}")
+    trained = DetectNet(s["width"], *had)
+    trained.load_state_dict(s["net"])
+    if width > s["width"]:
+        trained = widened(trained, width, torch.Generator().manual_seed(s["step"]))
     net = DetectNet(width, blocks, fine_blocks)
-    missing, unexpected = net.load_state_dict(s["net"], strict=False)
+    missing, unexpected = net.load_state_dict(trained.state_dict(), strict=False)
     if unexpected or not all(".a." in k or ".b." in k for k in missing):
         raise DetectorWeightsError(f"{path} is not a detection head of this design: retrain it with "
                                    "`dynclevr train detector`")
@@ -374,8 +379,8 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
                    steps: int | None = None, minutes: float | None = None, grow_from: Path | None = None,
                    device: str = "cpu", loader_workers: int = 0, echo=print) -> dict:
     """`resume`: go on with the checkpoint in `out_dir` (its own width and blocks). `grow_from`: start a new run in
-    `out_dir` from the trained head in `grow_from`, deepened to `parser.detector_blocks` and `detector_fine_blocks`
-    (function-preserving), with a fresh
+    `out_dir` from the trained head in `grow_from`, grown to `parser.detector_width`, `detector_blocks` and
+    `detector_fine_blocks` (function-preserving), with a fresh
     optimiser and a cosine of its own from the head's step to `steps`. `device`: where the head trains ("cpu",
     "cuda"); `loader_workers`: processes making the batches (0: this one)."""
     if loader_workers < 0:
@@ -416,10 +421,11 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         schedule_start = step
         source = json.loads((Path(grow_from) / MANIFEST).read_text())
         manifest = {k: source[k] for k in ("loss_curve", "heldout_curve", "training_seconds", "runs")}
-        manifest["grown"] = {"from": str(grow_from), "step": step, "blocks": blocks, "fine_blocks": fine_blocks,
+        manifest["grown"] = {"from": str(grow_from), "step": step, "width_from": source["params"].get("width"),
+                             "width": net.width, "blocks": blocks, "fine_blocks": fine_blocks,
                              "metrics_heldout_before": source.get("metrics_heldout")}
-        echo(f"train detector: {blocks} residual blocks per coarse stage and {fine_blocks} at stride 4 grown onto the "
-             f"step-{step} head in {grow_from}")
+        echo(f"train detector: the step-{step} head in {grow_from} grown to width {net.width}, {blocks} residual "
+             f"blocks per coarse stage and {fine_blocks} at stride 4")
     if step >= total:
         raise ConfigError(f"the head is at step {step} already: ask for more with --steps (now {total})")
     net = net.to(device)
