@@ -241,6 +241,26 @@ def test_a_widened_head_computes_what_it_grew_from_and_its_copies_learn_apart(tm
     assert load_detector(tmp_path).width == 24
 
 
+def test_the_checkpoint_keeps_adams_moments_small_and_resumes_them_as_float32(tmp_path):
+    from dynclevr.perception.detector_train import WEIGHTS_FILE, _save
+
+    torch.manual_seed(0)
+    net = DetectNet(8)
+    opt = torch.optim.AdamW(net.parameters())
+    for _ in range(2):
+        net(torch.rand(2, 3, 32, 32)).square().mean().backward()
+        opt.step()
+    _save(net, opt, 2, tmp_path, {"params": {}, "loss_curve": [], "heldout_curve": []})
+    saved = torch.load(tmp_path / WEIGHTS_FILE, weights_only=True)
+    assert {v["exp_avg"].dtype for v in saved["opt"]["state"].values()} == {torch.bfloat16}
+    again = torch.optim.AdamW(net.parameters())
+    again.load_state_dict(saved["opt"])
+    for k, state in again.state_dict()["state"].items():
+        for key in ("exp_avg", "exp_avg_sq"):
+            assert state[key].dtype == torch.float32
+            assert torch.allclose(state[key], opt.state_dict()["state"][k][key], rtol=1e-2, atol=1e-12)
+
+
 def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
     import pytest
 
