@@ -379,3 +379,19 @@ def test_a_device_that_is_not_here_is_one_clear_line(tmp_path):
     with pytest.raises(ConfigError, match="--loader-workers -1"):
         train_detector(Config.load(), tmp_path / "data", tmp_path / "out", loader_workers=-1)
     assert not (tmp_path / "data").exists()
+
+
+def test_a_tiny_training_run_records_how_often_it_drew_each_frame_and_resumes(tmp_path):
+    from dynclevr.config import Config
+    from dynclevr.perception.detector_train import load_detector, train_detector
+
+    (tmp_path / "tiny.toml").write_text("[parser]\ndetector_shards = 2\ndetector_heldout_shards = 1\n"
+                                        "detector_scenes_per_shard = 1\ndetector_frames_per_video = 2\n"
+                                        "detector_width = 8\ndetector_batch = 2\n")
+    cfg, said = Config.load(tmp_path / "tiny.toml"), []
+    first = train_detector(cfg, tmp_path / "data", tmp_path / "out", steps=3, echo=said.append)
+    assert first["runs"][-1]["draws_per_frame"] == 3.0        # 3 steps x 2 draws over 2 frames
+    assert any("more shards would make the draws fresh frames" in line for line in said)
+    again = train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=4, echo=said.append)
+    assert [(r["from_step"], r["to_step"], r["draws_per_frame"]) for r in again["runs"]] == [(0, 3, 3.0), (3, 4, 1.0)]
+    assert load_detector(tmp_path / "out").width == 8

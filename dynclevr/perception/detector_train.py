@@ -451,6 +451,11 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
                    + (f" --device {device} --loader-workers {loader_workers}" if device != "cpu" else "")})
     B = p["detector_batch"]
     first_step = step
+    # Draws are with replacement: past about one per frame the curve's end is frames seen before, and a head with
+    # room to spare learns those frames rather than the scenes (journal: "A wider head")
+    views = (total - step) * B / len(train)
+    echo(f"train detector: {total - step} steps of {B} frames draw each of the {len(train)} frames {views:.1f} "
+         "times on average" + (": more shards would make the draws fresh frames" if views > 1.2 else ""))
     h, w = (x // STRIDE for x in train.get(0)[0].shape[:2])
     batches = _batches(Samples(train, p["seed"], h, w), step, total, B, loader_workers)
     start = time.perf_counter()
@@ -494,7 +499,8 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
     manifest["training_seconds"] = round(base_seconds + time.perf_counter() - start, 1)
     manifest["steps_done"] = step
     manifest.setdefault("runs", []).append({"from_step": first_step, "to_step": step, "steps_planned": total,
-                                            "seconds": round(time.perf_counter() - start, 1)})
+                                            "seconds": round(time.perf_counter() - start, 1),
+                                            "draws_per_frame": round((step - first_step) * B / len(train), 2)})
     _save(net, opt, step, out_dir, manifest)
     echo(f"train detector: step {step}, held-out {manifest['metrics_heldout']}; written to {out_dir}")
     return manifest
