@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pytest
 import torch
 
 from dynclevr.assets.catalogue import SUBTYPES
@@ -10,7 +11,7 @@ from dynclevr.camera import Camera
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.perception.detector import CHANNELS, OUT, STRIDE, Detection, DetectNet, decode, mirror, run
 from dynclevr.perception.detector_data import LABEL_COLUMNS, azimuth
-from dynclevr.perception.detector_train import COL, losses, targets
+from dynclevr.perception.detector_train import COL, DetectorWeightsError, losses, targets
 from dynclevr.perception.place import place, resting_height
 
 from conftest import onehot
@@ -262,7 +263,6 @@ def test_the_checkpoint_keeps_adams_moments_small_and_resumes_them_as_float32(tm
 
 
 def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
-    import pytest
 
     from dynclevr.config import ConfigError
     from dynclevr.perception.detector_train import _grown
@@ -278,7 +278,6 @@ def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
 
 
 def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path):
-    import pytest
 
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import train_detector
@@ -293,7 +292,6 @@ def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path
 
 
 def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
-    import pytest
 
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import shards
@@ -317,7 +315,6 @@ def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
 
 
 def test_every_nth_shard_is_path_traced_and_kept_apart():
-    import pytest
 
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_data import shard_backend, shard_path
@@ -367,7 +364,6 @@ def test_the_batches_are_the_same_whatever_the_number_of_loader_processes(tmp_pa
 
 
 def test_a_device_that_is_not_here_is_one_clear_line(tmp_path):
-    import pytest
 
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import train_detector
@@ -395,3 +391,9 @@ def test_a_tiny_training_run_records_how_often_it_drew_each_frame_and_resumes(tm
     again = train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=4, echo=said.append)
     assert [(r["from_step"], r["to_step"], r["draws_per_frame"]) for r in again["runs"]] == [(0, 3, 3.0), (3, 4, 1.0)]
     assert load_detector(tmp_path / "out").width == 8
+    # a head kept without its optimiser (checkpoints/) is grown from, not resumed: one clear line
+    s = torch.load(tmp_path / "out" / "detector.pt", weights_only=True)
+    del s["opt"]
+    torch.save(s, tmp_path / "out" / "detector.pt")
+    with pytest.raises(DetectorWeightsError, match="holds no optimiser state to resume: .*--grow-from"):
+        train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=5, echo=said.append)

@@ -413,6 +413,9 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         if not ckpt.exists():
             raise DetectorWeightsError(f"nothing to resume in {out_dir}: run `dynclevr train detector` without --resume")
         s = torch.load(ckpt, weights_only=True, map_location="cpu")
+        if "opt" not in s:
+            raise DetectorWeightsError(f"{ckpt} holds no optimiser state to resume: start a run from it with "
+                                       f"`--grow-from {out_dir} --out NEW_DIR`")
         net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
         net.load_state_dict(s["net"])
         opt_state, step, schedule_start = s["opt"], s["step"], s.get("schedule_start", 0)
