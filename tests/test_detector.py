@@ -263,7 +263,6 @@ def test_the_checkpoint_keeps_adams_moments_small_and_resumes_them_as_float32(tm
 
 
 def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
-
     from dynclevr.config import ConfigError
     from dynclevr.perception.detector_train import _grown
 
@@ -278,7 +277,6 @@ def test_growing_a_head_narrower_is_one_clear_line(tmp_path):
 
 
 def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path):
-
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import train_detector
 
@@ -292,7 +290,6 @@ def test_bad_growth_settings_are_one_clear_line_before_any_data_is_made(tmp_path
 
 
 def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
-
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import shards
 
@@ -315,7 +312,6 @@ def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
 
 
 def test_every_nth_shard_is_path_traced_and_kept_apart():
-
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_data import shard_backend, shard_path
 
@@ -364,7 +360,6 @@ def test_the_batches_are_the_same_whatever_the_number_of_loader_processes(tmp_pa
 
 
 def test_a_device_that_is_not_here_is_one_clear_line(tmp_path):
-
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_train import train_detector
 
