@@ -16,7 +16,7 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language.evaluate import out_of_scope
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import QuestionParser, program_shape, synonyms, well_formed
-from dynclevr.language.references import abstract_program, concrete_program, delexicalise
+from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
 from dynclevr.language.vocab import UNK_ID, Vocab
@@ -148,6 +148,20 @@ def test_copy_path_for_object_words():
         abstract_program("Objects filter_attributes[cyan] unique start is_static".split(), refs)
     # A lone 'bike' is a bicycle; in a sub-type's name it is that sub-type.
     assert delexicalise(tokenize("Did the red bike hit the road bike?"))[1] == [("red", "bicycle"), ("road_bike",)]
+
+
+def test_a_shorter_second_mention_is_the_same_object():
+    """'the bus' after 'the yellow double bus' can only be that bus (each reference picks out one object); a
+    description that says something the first did not, or fits two earlier ones, stays its own object."""
+    words, refs = corefer(*delexicalise(tokenize(
+        "When the cyan mountain bike hits the yellow double bus, is it slower than the bus?")))
+    assert refs == [("cyan", "mountain_bike"), ("yellow", "double_bus")]
+    assert words[-3:] == ["the", "<obj2>", "?"]
+    assert corefer(*delexicalise(tokenize("Is the gray dirtbike faster than the red car when the dirtbike hits it?"))
+                   )[1] == [("gray", "dirtbike"), ("red", "car")]
+    for text in ("When the school bus hits the red bus, is the school bus fast?",   # 'red' is new
+                 "Does the red sedan hit the red suv before the red one stops?"):  # fits both
+        assert corefer(*delexicalise(tokenize(text))) == delexicalise(tokenize(text)), text
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):
@@ -322,6 +336,8 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
         "is the red sedan moving fast at the beginning": f"{red} start is_moving_velocity[fast]",
         "Is the red sedan moving faster than the blue bus when they collide?":
             f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame faster_velocity",
+        "When the red sedan hits the blue bus, is it going slower than the bus?":
+            f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame slower_velocity",
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text

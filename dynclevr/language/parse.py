@@ -39,7 +39,7 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.references import (OBJECT_WORDS, concrete_program, delexicalise, is_description,
+from dynclevr.language.references import (OBJECT_WORDS, concrete_program, corefer, delexicalise, is_description,
                                           placeholders)
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
@@ -164,7 +164,7 @@ class QuestionParser:
             if why:
                 out[i] = Parse(None, why)
             else:
-                words, refs = delexicalise(words)
+                words, refs = corefer(*delexicalise(words))
                 why = self._objects(words, refs)
                 if why:
                     out[i] = Parse(None, why)

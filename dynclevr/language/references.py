@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 
+from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.questions.programs import ATTRIBUTE_VALUES
 
@@ -53,6 +54,34 @@ def delexicalise(words: list[str]) -> tuple[list[str], list[Ref]]:
             out.append(words[i])
             i += 1
     return out, refs
+
+
+def _generalises(short: Ref, full: Ref) -> bool:
+    """Every word of `short` says something `full` says: one of its values, or the category of its sub-type
+    ('the bus' of 'the yellow double bus', 'the dirtbike' of 'the gray dirtbike')."""
+    said = set(full) | {SUBTYPES[v][0] for v in full if v in SUBTYPES}
+    return set(short) <= said
+
+
+def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
+    """A later, shorter mention of an object as the placeholder of its first mention: 'When the cyan mountain bike
+    hits the yellow double bus, is it slower than *the bus*?'. A question's references each pick out one object of
+    the scene, so a reference that generalises an earlier one can only be that object again (were it another, the
+    earlier one would not be unique). Only where exactly one earlier reference fits; parsing only: the training
+    questions' random objects need not be unique (language/corpus.py)."""
+    merged = list(range(len(refs)))   # each placeholder's index into the kept references
+    kept: list[Ref] = []
+    for k, ref in enumerate(refs):
+        earlier = [j for j, r in enumerate(kept) if r != ref and _generalises(ref, r)]
+        if len(earlier) == 1:
+            merged[k] = earlier[0]
+        else:
+            merged[k] = len(kept)
+            kept.append(ref)
+    if len(kept) == len(refs):
+        return words, refs
+    out = [f"<obj{merged[int(m.group(1)) - 1] + 1}>" if (m := _PLACEHOLDER.fullmatch(w)) else w for w in words]
+    return out, kept
 
 
 def abstract_program(tokens: list[str], refs: list[Ref]) -> list[str]:
