@@ -104,6 +104,9 @@ class QuestionParser:
         # The operation sequences of the training programs: a decoded program must have one of them (as well as
         # pass `well_formed`), so a decoding that wanders off every template is unparsed, not executed.
         self.shapes = shapes
+        # A shorter later mention as its first mention's object (references.corefer): true of a scene's questions,
+        # where each description picks out one object; training reads its random objects without it.
+        self.corefer = True
         # Synonyms stand in only for words the parser does not know, and only by words it knows.
         self.synonyms = {w: known for w, known in synonyms().items()
                          if w not in self.known and all(k in self.known for k in known)}
@@ -164,7 +167,7 @@ class QuestionParser:
             if why:
                 out[i] = Parse(None, why)
             else:
-                words, refs = corefer(*delexicalise(words))
+                words, refs = corefer(*delexicalise(words)) if self.corefer else delexicalise(words)
                 why = self._objects(words, refs)
                 if why:
                     out[i] = Parse(None, why)

@@ -1,7 +1,8 @@
 """The copy path for object words. The sequence model never reads or writes a colour or a sub-type: each run of
 attribute words in the question ('red sedan', 'school bus', 'purple') becomes a placeholder (<obj1>, <obj2>, in
-order of first mention; the same words twice, the same placeholder), the model writes the placeholder where the
-program refers to that object, and the placeholder is copied back as the object's filter chain. So an object
+order of first mention; the same words twice, the same placeholder, and at parse time a shorter later mention of one
+object too: `corefer`), the model writes the placeholder where the program refers to that object, and the
+placeholder is copied back as the object's filter chain. So an object
 description the parser never saw with a sentence, or in a sentence it never saw, is carried over exactly, and the
 model's capacity goes to the sentence.
 """

@@ -86,6 +86,9 @@ def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=
         model = Seq2Seq(Dims(len(words), len(prog_vocab), params.embedding, params.hidden, params.layers,
                              params.dropout))
         parser = QuestionParser(model, words, prog_vocab, params, shapes)
+        # The grammar's questions draw their objects at random, not from a scene: 'the biplane ... the aeroplane' may
+        # be two objects there, so they are scored with every description its own object.
+        parser.corefer = False
         opt = torch.optim.Adam(model.parameters(), lr=params.lr)
         loss_fn = nn.CrossEntropyLoss(ignore_index=PAD_ID)
         best, best_state, stale, epoch, curve = (-1.0, -1.0), None, 0, 0, []
