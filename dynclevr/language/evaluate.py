@@ -5,7 +5,8 @@ Every question of the split is said again from its program: its family's objects
 of the program (`bindings`), then put into one phrasing from the grammar's seen pool and one from its held-out pool
 (phrasing.py). The split's own texts (drawn as `annotate.phrasings` says) are scored as they are. Questions outside
 what the parser can answer (OUT_OF_SCOPE_FILE: gibberish, objects no catalogue has, questions of no family) must
-come back unparsed; their share is reported too.
+come back unparsed; their share is reported too. Last, questions written by hand, not from the grammar
+(HANDWRITTEN_FILE), are scored by program exact match: the grammar's held-out phrasings are still its own phrases.
 """
 
 from __future__ import annotations
@@ -23,11 +24,35 @@ from dynclevr.questions.generate import phrase, reference, templates
 from dynclevr.questions.programs import Executor
 
 OUT_OF_SCOPE_FILE = Path(__file__).with_name("out_of_scope.txt")
+HANDWRITTEN_FILE = Path(__file__).with_name("handwritten.txt")
 _CHAIN = r"Objects(?: filter_attributes\[[a-z_]+\])+ unique"
 
 
 def out_of_scope() -> list[str]:
     return [line for line in OUT_OF_SCOPE_FILE.read_text().splitlines() if line and not line.startswith("#")]
+
+
+def handwritten() -> list[tuple[str, str]]:
+    """(text, program) of every question in HANDWRITTEN_FILE ('family | X | Y | slots | text')."""
+    fams = {f["name"]: f for f in templates()["families"]}
+    out = []
+    for n, line in enumerate(HANDWRITTEN_FILE.read_text().splitlines(), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        try:
+            family, x, y, slots, text = (part.strip() for part in line.split("|"))
+            objects = {name: {"program": "Objects " + " ".join(f"filter_attributes[{v}]" for v in words.split())
+                              + " unique"} for name, words in (("X", x), ("Y", y)) if words}
+            values = {name: templates()["slots"][name][key]
+                      for name, key in (kv.split("=") for kv in slots.split(",") if kv)}
+            program = fams[family]["program"]
+            for name, v in {**objects, **values}.items():
+                program = program.replace(f"<{name}>", v["program"])
+            out.append((text, " ".join(program.split())))
+        except (ValueError, KeyError) as e:
+            raise DynclevrError(f"{HANDWRITTEN_FILE}:{n}: expected 'family | X | Y | slots | text' naming a "
+                                f"family, attribute values and slots of templates.json ({e})") from None
+    return out
 
 
 def _pattern(fam: dict) -> re.Pattern:
@@ -98,7 +123,8 @@ def score(parser: QuestionParser, questions: list[dict], texts: list[str], execu
 
 
 def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_cfg: dict, seed: int = 0) -> dict:
-    """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'out_of_scope': ...}; `truth` maps scene name -> Scene4D."""
+    """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'handwritten': ..., 'out_of_scope': ...}; `truth` maps scene
+    name -> Scene4D."""
     executors = {name: Executor(scene, labels_cfg) for name, scene in truth.items()}
     rng = np.random.default_rng(np.random.SeedSequence([seed, 0xE7A1]))
     texts = {pool: [rephrase(q, pool, rng) for q in questions] for pool in ("seen", "heldout")}
@@ -110,6 +136,12 @@ def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_
         pick = [i for i, k in enumerate(known) if k == keep]
         out[key] = score(parser, [questions[i] for i in pick], [texts["heldout"][i] for i in pick], executors)
     out["dataset"] = score(parser, questions, [q["text"] for q in questions], executors)
+    hand = handwritten()
+    parses = parser.analyse_batch([t for t, _ in hand])
+    right = [p.program is not None and " ".join(p.program) == program for (_, program), p in zip(hand, parses)]
+    out["handwritten"] = {"questions": len(hand), "exact_match": float(np.mean(right)) if hand else 0.0,
+                          "unparsed": float(np.mean([p.program is None for p in parses])) if hand else 0.0,
+                          "missed": [t for (t, _), ok in zip(hand, right) if not ok]}
     oos = out_of_scope()
     parses = parser.analyse_batch(oos)
     out["out_of_scope"] = {"questions": len(oos), "unparsed": sum(p.program is None for p in parses) / len(oos),
@@ -128,11 +160,16 @@ def markdown(result: dict) -> str:
         r = result[key]
         lines.append(f"| {label} | {r['questions']} | {100 * r['exact_match']:.2f}% | "
                      f"{100 * r['answer_accuracy']:.2f}% | {100 * r['unparsed']:.2f}% |")
+    h = result["handwritten"]
+    lines.append(f"| questions written by hand, not from the grammar | {h['questions']} | "
+                 f"{100 * h['exact_match']:.2f}% | - | {100 * h['unparsed']:.2f}% |")
     o = result["out_of_scope"]
     lines.append(f"| out of scope (must be unparsed) | {o['questions']} | - | - | {100 * o['unparsed']:.2f}% |")
     worst = sorted(result["heldout"]["by_family"].items(), key=lambda kv: kv[1])[:5]
     lines += ["", "Held-out phrasings, lowest exact match by family: "
               + ", ".join(f"{f} {100 * v:.1f}%" for f, v in worst)]
+    if h["missed"]:
+        lines += ["", "Questions written by hand that the parser misses: " + "; ".join(f"'{t}'" for t in h["missed"])]
     if o["answered"]:
         lines += ["", "Out-of-scope questions given a program: " + "; ".join(f"'{t}'" for t in o["answered"])]
     return "\n".join(lines) + "\n"
