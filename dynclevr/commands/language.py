@@ -19,8 +19,9 @@ def register(app: typer.Typer) -> None:
     def eval_qparser(split: Optional[str] = SplitOpt, config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt,
                      seed: int = typer.Option(0, "--seed", help="seed of the re-phrasings")):
         """Program exact match and answer accuracy (on the truth) of the question parser for the split's questions
-        re-phrased in wordings seen in training and in held-out wordings, its own texts, and the share of
-        out-of-scope questions left unparsed. Needs annotate; writes <split>/qparser_eval.md and .json."""
+        re-phrased in wordings seen in training and in held-out wordings, its own texts, questions written by hand
+        (program exact match), and the share of out-of-scope questions left unparsed. Needs annotate; writes
+        <split>/qparser_eval.md and .json."""
         from dynclevr import DynclevrError
         from dynclevr.artifacts import write_json_atomic
         from dynclevr.cli import load_config
