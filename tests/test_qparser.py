@@ -342,6 +342,11 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text
+    # `ask` shows the second mention's reading among its evidence, and only a merged mention
+    said = parser.analyse_batch(["When the red sedan hits the blue bus, is it going slower than the bus?",
+                                 "Does the red sedan hit the bus before the sedan stops, and the school bus?"])
+    assert said[0].read_as == (("bus", "blue bus"),)
+    assert ("sedan", "red sedan") in said[1].read_as and not any(a == b for a, b in said[1].read_as)
 
 
 def test_handwritten_questions_are_read_into_their_families_programs(tmp_path, monkeypatch):

@@ -167,7 +167,9 @@ class QuestionParser:
             if why:
                 out[i] = Parse(None, why)
             else:
-                words, refs = corefer(*delexicalise(words)) if self.corefer else delexicalise(words)
+                said, named = delexicalise(words)
+                words, refs = corefer(said, named) if self.corefer else (said, named)
+                read_as[i] += _second_mentions(said, named, words, refs)
                 why = self._objects(words, refs)
                 if why:
                     out[i] = Parse(None, why)
@@ -268,6 +270,16 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+def _second_mentions(said: list[str], named: list, words: list[str], refs: list) -> tuple[tuple[str, str], ...]:
+    """(shorter mention, the description it was read as) for each mention `corefer` merged into an earlier one."""
+    def text(ref) -> str:
+        return " ".join(ref).replace("_", " ")
+
+    pairs = {(text(named[int(a[4:-1]) - 1]), text(refs[int(b[4:-1]) - 1]))
+             for a, b in zip(said, words) if a.startswith("<obj")}
+    return tuple(sorted((short, full) for short, full in pairs if short != full))
 
 
 STEMMER = snowballstemmer.stemmer("english")
