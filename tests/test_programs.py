@@ -229,6 +229,18 @@ def test_estimates_resolve_a_missed_collision_to_the_closest_approach(scene, lcf
         execute(program, estimate, lcfg, strict=True)
 
 
+def test_estimates_take_the_first_of_several_collision_partners(scene, lcfg):
+    """An estimate that gives an object several partners answers "what did X collide with" by the first of them,
+    whatever the objects' ids and confidences; a filter after it still narrows the partners."""
+    estimate = build_scene(scene.objects, scene.velocity, scene.position[0], scene.visible,
+                           collisions=[Collision(20, 1, 4), Collision(45, 0, 1), Collision(50, 1, 4)])
+    assert execute(f"Events {BUS} get_all_col_partners unique query_attributes[shape]", estimate, lcfg) == "suv"
+    assert execute(f"Events {BUS} get_all_col_partners filter_attributes[sedan] unique query_attributes[color]",
+                   estimate, lcfg) == "red"
+    with pytest.raises(ProgramError):   # strict mode (question generation) asks only of an object with one partner
+        execute(f"Events {BUS} get_all_col_partners unique query_attributes[shape]", estimate, lcfg, strict=True)
+
+
 def test_frame_outside_the_scene(scene, lcfg):
     short = build_scene(scene.objects, scene.velocity[:10], scene.position[0], collisions=[Collision(45, 1, 4)])
     with pytest.raises(ProgramError, match="outside the scene"):

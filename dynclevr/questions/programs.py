@@ -276,12 +276,19 @@ def _clear(w: World, events: CollisionEventSet) -> None:
 @op("get_all_col_partners", CollisionEventSet, Object, returns=ObjectSet)
 def get_all_col_partners(w: World, events: CollisionEventSet, obj: Object) -> ObjectSet:
     _clear(w, CollisionEventSet(unclear=[u for u in events.unclear if obj in (u[1].a, u[1].b)]))
-    partners = sorted({e.b if e.a == obj else e.a for e in events if obj in (e.a, e.b)})
+    first: dict[int, int] = {}   # each partner's first collision with obj
+    for e in sorted(events, key=lambda e: e.frame):
+        if obj in (e.a, e.b):
+            first.setdefault(e.b if e.a == obj else e.a, e.frame)
+    # Several partners in an estimate: the one obj collided with first is the likeliest meant (a question asks "the"
+    # partner only of an object with one), so each later one misses by a little. An estimate's later contacts are
+    # its weakest: they come after the bodies' motion changed, often while the estimated hulls still touch.
     # Non-partners miss by more than any filter can, nearest first: an estimate that missed the contact still
     # names the object that came closest.
-    misses = {o.id: 0.0 if o.id in partners else 2.0 + w.closest(int(obj), o.id)[1] / 100
+    order = {p: k for k, p in enumerate(sorted(first, key=lambda p: (first[p], p)))}
+    misses = {o.id: 1e-3 * order[o.id] if o.id in first else 2.0 + w.closest(int(obj), o.id)[1] / 100
               for o in w.scene.objects if o.id != obj}
-    return ObjectSet(partners, misses)
+    return ObjectSet(sorted(first), misses)
 
 
 @op("get_frame", Collision, returns=FrameID)

@@ -136,8 +136,10 @@ def _extra(store, cfg) -> dict[str, str]:
             **{f"qparser/{p.name}": file_digest(p) for p in weights}}
 
 
-# 5: the question parser reads a word after a whole object description as the sentence's (language/parse.py)
-STAGE = Stage("answer", 5, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
+# 5: the question parser reads a word after a whole object description as the sentence's (language/parse.py);
+# 6: a shorter second mention of an object is its first mention's (language/references.py), and of several collision
+# partners `unique` takes the first one (questions/programs.py, get_all_col_partners)
+STAGE = Stage("answer", 6, inputs=("parse-scene", "simulate-future"), params=lambda cfg: cfg.digest("labels"),
               outputs=(".parquet",), run_scene=run_scene, finalize=finalize, extra_inputs=_extra,
               # Before version 4 the split-level tables lay in answers/ beside the per-scene ones.
               retired=(ANSWERS_FILE, METRICS_FILE))
