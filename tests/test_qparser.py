@@ -364,6 +364,9 @@ def test_handwritten_questions_are_read_into_their_families_programs(tmp_path, m
     monkeypatch.setattr(qeval, "HANDWRITTEN_FILE", bad)
     with pytest.raises(DynclevrError, match="hand.txt:2: expected 'family"):
         handwritten()
+    monkeypatch.setattr(qeval, "HANDWRITTEN_FILE", tmp_path / "gone.txt")
+    with pytest.raises(DynclevrError, match="gone.txt is unreadable"):
+        handwritten()
 
 
 def test_shipped_weights_leave_most_out_of_scope_questions_unparsed():

@@ -36,7 +36,12 @@ def handwritten() -> list[tuple[str, str]]:
     """(text, program) of every question in HANDWRITTEN_FILE ('family | X | Y | slots | text')."""
     fams = {f["name"]: f for f in templates()["families"]}
     out = []
-    for n, line in enumerate(HANDWRITTEN_FILE.read_text().splitlines(), 1):
+    try:
+        text = HANDWRITTEN_FILE.read_text()
+    except (OSError, UnicodeDecodeError) as e:
+        raise DynclevrError(f"{HANDWRITTEN_FILE} is unreadable ({e}): restore it "
+                            "(`git checkout -- dynclevr/language/handwritten.txt`) or reinstall dynclevr") from None
+    for n, line in enumerate(text.splitlines(), 1):
         if not line.strip() or line.startswith("#"):
             continue
         try:

@@ -2,9 +2,8 @@
 attribute words in the question ('red sedan', 'school bus', 'purple') becomes a placeholder (<obj1>, <obj2>, in
 order of first mention; the same words twice, the same placeholder, and at parse time a shorter later mention of one
 object too: `corefer`), the model writes the placeholder where the program refers to that object, and the
-placeholder is copied back as the object's filter chain. So an object
-description the parser never saw with a sentence, or in a sentence it never saw, is carried over exactly, and the
-model's capacity goes to the sentence.
+placeholder is copied back as the object's filter chain. So an object description the parser never saw with a
+sentence, or in a sentence it never saw, is carried over exactly, and the model's capacity goes to the sentence.
 """
 
 from __future__ import annotations
@@ -69,7 +68,7 @@ def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
     hits the yellow double bus, is it slower than *the bus*?'. A question's references each pick out one object of
     the scene, so a reference that generalises an earlier one can only be that object again (were it another, the
     earlier one would not be unique). Only where exactly one earlier reference fits; parsing only: the training
-    questions' random objects need not be unique (language/corpus.py)."""
+    questions' random objects need not be unique, so training scores them without it (`QuestionParser.corefer`)."""
     merged = list(range(len(refs)))   # each placeholder's index into the kept references
     kept: list[Ref] = []
     for k, ref in enumerate(refs):

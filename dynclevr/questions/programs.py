@@ -75,10 +75,11 @@ class ObjectSet(tuple):
     """Object ids, ascending.
 
     `misses` remembers, for every object the set was narrowed from, how far it is from the description so far (the
-    filters it failed; a sub-type of the right category fails by half). `unique` uses it to resolve a reference that
-    an estimated scene matches with no object or several: perception is uncertain, and the object closest to the
-    description is the most likely referent. On the truth, generated references match exactly one object, so the
-    resolution never acts there, and strict mode (question generation) keeps it off."""
+    filters it failed; a sub-type of the right category fails by half; a later collision partner by a thousandth per
+    place, get_all_col_partners). `unique` uses it to resolve a reference that an estimated scene matches with no
+    object or several: perception is uncertain, and the object closest to the description is the most likely
+    referent. On the truth, generated references match exactly one object, so the resolution never acts there, and
+    strict mode (question generation) keeps it off."""
 
     misses: dict
 
