@@ -2,12 +2,15 @@
 text, held-out phrasings that training never sees, the reasons a question is unparsed, and the shipped weights on
 questions of scenes and wordings they never saw."""
 
+import copy
 import dataclasses
 import json
 import random
 import re
 
+import numpy as np
 import pytest
+import torch
 
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError
@@ -18,9 +21,10 @@ from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import QuestionParser, program_shape, synonyms, well_formed
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
+from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import UNK_ID, Vocab
+from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions.phrasing import grammar
@@ -240,6 +244,24 @@ def test_save_load_round_trip(synthetic_fit, tmp_path):
     assert [loaded.parse(t) for t in texts[:5]] == loaded.parse_batch(texts[:5])
 
 
+def test_an_ensemble_decodes_by_its_members_mean_probability(synthetic_fit):
+    """Alike members decode as one; a member that is sure of another first token outvotes a hesitant one."""
+    model = synthetic_fit.parser.model.members[0]
+    texts, _, _ = synthetic(30, seed=3)
+    src, lens = pad_batch([synthetic_fit.parser.words.encode(delexicalise(tokenize(t))[0]) for t in texts])
+    one, two = Ensemble([model]).greedy(src, lens, 48), Ensemble([model, model]).greedy(src, lens, 48)
+    assert [i for i, _, _ in one] == [i for i, _, _ in two]
+    assert np.allclose([p for _, p, _ in one], [p for _, p, _ in two], rtol=1e-5)
+    assert np.allclose([a for _, _, a in one][0], [a for _, _, a in two][0], atol=1e-6)
+    sure = copy.deepcopy(model)
+    with torch.no_grad():                  # the first step's readout: one token, far above every other
+        sure.out.weight.zero_()
+        sure.out.bias.fill_(-50.0)
+        sure.out.bias[EOS_ID] = 50.0
+    mixed = Ensemble([model, sure]).greedy(src, lens, 48)
+    assert all(ids == [] and 0.4 < p < 0.6 for ids, p, _ in mixed)   # <eos> first: mean of ~0 and ~1
+
+
 def test_missing_or_broken_weights_are_one_clear_error(synthetic_fit, tmp_path):
     with pytest.raises(ArtifactError, match="dynclevr train qparser"):
         QuestionParser.load(tmp_path / "nowhere")
@@ -270,7 +292,7 @@ def test_train_command_writes_loadable_weights_and_manifest(tmp_path):
     config = tmp_path / "qp.toml"
     config.write_text("[splits.qp-synthetic]\nseed = 5\nscenes = 10\n"
                       "[qparser]\nembedding = 16\nhidden = 32\nepochs_max = 1\nexamples_per_epoch = 300\n"
-                      "val_examples = 40\n")
+                      "val_examples = 40\nmembers = 2\n")
     cfg = Config.load(config)
     texts, programs, scenes = synthetic(300, seed=4, scenes=10)
     families = [p[-1] for p in programs]
@@ -283,12 +305,13 @@ def test_train_command_writes_loadable_weights_and_manifest(tmp_path):
     on_disk = json.loads((tmp_path / "out" / "manifest.json").read_text())
     assert on_disk == manifest and manifest["blind_questions"] == 300 and manifest["examples_per_epoch"] == 300
     assert manifest["blind_split"] == "qp-synthetic" and manifest["params"]["hidden"] == 32
-    assert {"questions_digest", "templates_digest", "val_exact_match", "heldout_phrasings_exact_match", "curve",
+    assert {"questions_digest", "templates_digest", "val_exact_match", "heldout_phrasings_exact_match", "members",
             "train_seconds", "torch"} <= set(manifest)
+    assert [m["seed"] for m in manifest["members"]] == [0, 1] and all(m["curve"] for m in manifest["members"])
     blind = json.loads((tmp_path / "out" / "blind.json").read_text())
     assert blind["overall"] == "true" and set(blind["majority"]) == set(families)
     loaded = QuestionParser.load(tmp_path / "out")
-    assert len(loaded.parse_batch(texts[:20])) == 20
+    assert len(loaded.model.members) == 2 and len(loaded.parse_batch(texts[:20])) == 20
 
 
 HELDOUT = "qparser-heldout"

@@ -19,6 +19,7 @@ class QParserParams:
     lr: float
     batch_size: int
     seed: int
+    members: int
     max_decode_len: int
     examples_per_epoch: int
     val_examples: int
@@ -37,7 +38,7 @@ class QParserParams:
             raise ConfigError(f"[qparser]: missing keys {sorted(missing)}, unknown keys {sorted(unknown)}: "
                               "compare with pipeline.toml")
         ints = {"embedding": 1, "hidden": 1, "layers": 1, "epochs_max": 1, "patience": 1, "batch_size": 1,
-                "seed": 0, "max_decode_len": 1, "max_unknown_words": 0, "examples_per_epoch": 1,
+                "seed": 0, "members": 1, "max_decode_len": 1, "max_unknown_words": 0, "examples_per_epoch": 1,
                 "val_examples": 1}
         for key, low in ints.items():
             v = d[key]

@@ -38,7 +38,7 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
-from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
+from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (OBJECT_WORDS, concrete_program, corefer, delexicalise, is_description,
                                           placeholders)
 from dynclevr.language.tokenize import tokenize
@@ -48,7 +48,7 @@ from dynclevr.questions.programs import parse as parse_program
 
 QUESTION_VOCAB = "question_vocab.json"
 PROGRAM_VOCAB = "program_vocab.json"
-SETTINGS = "parser.json"   # model dims, params and the training programs' shapes: what `load` rebuilds from
+SETTINGS = "parser.json"   # model dims, ensemble size, params, the training programs' shapes: what `load` rebuilds from
 MODEL = "model.pt"
 OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
@@ -96,7 +96,7 @@ class Parse:
 
 
 class QuestionParser:
-    def __init__(self, model: Seq2Seq, words: Vocab, programs: Vocab, params: QParserParams, shapes: set[str]):
+    def __init__(self, model: Ensemble, words: Vocab, programs: Vocab, params: QParserParams, shapes: set[str]):
         self.model = model.eval()
         self.words, self.programs, self.params = words, programs, params
         # Every word the parser knows: the model's, and the object words that the copy path carries past it.
@@ -128,7 +128,7 @@ class QuestionParser:
             settings = json.loads((dir / SETTINGS).read_text())
             params = QParserParams.from_dict(settings["params"])
             words, programs = Vocab.load(dir / QUESTION_VOCAB), Vocab.load(dir / PROGRAM_VOCAB)
-            model = Seq2Seq(Dims(**settings["model"]))
+            model = Ensemble([Seq2Seq(Dims(**settings["model"])) for _ in range(settings["members"])])
             model.load_state_dict(torch.load(dir / MODEL, map_location="cpu", weights_only=True))
             shapes = set(settings["shapes"])
         except FileNotFoundError as e:
@@ -144,14 +144,15 @@ class QuestionParser:
         dir.mkdir(parents=True, exist_ok=True)
         # Through a buffer: torch.save names the archive's root folder after the file, here a random temporary
         # name, which would make the same weights differ byte for byte.
+        # In half precision: fit() rounds the weights so, and loading casts them back to float32.
         buf = io.BytesIO()
-        torch.save(self.model.state_dict(), buf)
+        torch.save({k: v.half() for k, v in self.model.state_dict().items()}, buf)
         with atomic_path(dir / MODEL) as tmp:
             tmp.write_bytes(buf.getvalue())
         self.words.save(dir / QUESTION_VOCAB)
         self.programs.save(dir / PROGRAM_VOCAB)
-        write_json_atomic(dir / SETTINGS, {"model": self.model.dims.to_dict(), "params": self.params.to_dict(),
-                                           "shapes": sorted(self.shapes)})
+        write_json_atomic(dir / SETTINGS, {"model": self.model.dims.to_dict(), "members": len(self.model.members),
+                                           "params": self.params.to_dict(), "shapes": sorted(self.shapes)})
 
     def parse(self, text: str) -> list[str] | None:
         return self.parse_batch([text])[0]

@@ -1,4 +1,5 @@
-"""Bi-LSTM encoder, LSTM decoder with Luong (general) attention, greedy decoding. Plain torch, small.
+"""Bi-LSTM encoder, LSTM decoder with Luong (general) attention; an ensemble of them decoded greedily as one.
+Plain torch, small.
 
 The decoder does not feed its attentional state back as input (no input feeding), so that teacher-forced training
 runs the decoder LSTM over a whole batch of sequences in one call; programs are short and the questions are
@@ -74,13 +75,27 @@ class Seq2Seq(nn.Module):
         dec, _ = self.decoder(self.drop(self.tgt_embed(tgt_in)), state)
         return self._readout(dec, memory, keys, mask)[0]
 
+
+class Ensemble(nn.Module):
+    """Sequence models trained alike from different seeds, decoded as one: each step takes the token of highest mean
+    probability over the members. One model's errors on a wording it never saw are largely its own draw (another
+    seed errs elsewhere); the mean keeps what they agree on."""
+
+    def __init__(self, members: list[Seq2Seq]):
+        super().__init__()
+        if not members or len({m.dims for m in members}) != 1:
+            raise ValueError("an ensemble needs one or more members of the same dims")
+        self.members = nn.ModuleList(members)
+        self.dims = members[0].dims
+
     @torch.no_grad()
     def greedy(self, src: torch.Tensor, src_len: torch.Tensor, max_len: int
                ) -> list[tuple[list[int] | None, float, list[float]]]:
         """Greedy decoding; per question (the token ids before <eos>, or None when no <eos> came within max_len;
-        the decoding's probability, the product of each chosen token's probability; per question word, the most
-        attention any decoding step paid it)."""
-        memory, keys, mask, state = self.encode(src, src_len)
+        the decoding's probability, the product of each chosen token's mean probability; per question word, the
+        most mean attention any decoding step paid it)."""
+        encoded = [m.encode(src, src_len) for m in self.members]
+        states = [e[3] for e in encoded]
         B = src.shape[0]
         tok = torch.full((B, 1), SOS_ID, dtype=torch.long)
         steps = []
@@ -88,12 +103,17 @@ class Seq2Seq(nn.Module):
         attended = torch.zeros(src.shape)
         finished = torch.zeros(B, dtype=torch.bool)
         for _ in range(max_len + 1):   # + 1: room for the <eos> after a program of max_len tokens
-            dec, state = self.decoder(self.tgt_embed(tok), state)
-            logits, weights = self._readout(dec, memory, keys, mask)
-            best = torch.log_softmax(logits[:, 0], -1).max(-1)
-            attended = torch.where(finished[:, None], attended, torch.maximum(attended, weights[:, 0]))
+            probs, attention = [], []
+            for k, (m, (memory, keys, mask, _)) in enumerate(zip(self.members, encoded)):
+                dec, states[k] = m.decoder(m.tgt_embed(tok), states[k])
+                logits, weights = m._readout(dec, memory, keys, mask)
+                probs.append(torch.softmax(logits[:, 0], -1))
+                attention.append(weights[:, 0])
+            best = torch.stack(probs).mean(0).max(-1)
+            attended = torch.where(finished[:, None], attended,
+                                   torch.maximum(attended, torch.stack(attention).mean(0)))
             tok = best.indices[:, None]
-            logp += torch.where(finished, torch.zeros(B), best.values)
+            logp += torch.where(finished, torch.zeros(B), torch.log(best.values))
             steps.append(tok[:, 0])
             finished |= tok[:, 0] == EOS_ID
             if bool(finished.all()):

@@ -1,12 +1,14 @@
 """`dynclevr train qparser`: the question parser from the phrasing grammar, and the blind baseline from a split.
 
-The parser trains on questions drawn afresh every epoch from the grammar's *seen* phrasings with random objects
-(language/corpus.py; teacher forcing, Adam, word dropout); training stops early on the program exact match of more
-seen-phrasing questions drawn apart. Held-out phrasings never reach training or the choice of weights: their exact
-match is measured once, at the end, for the manifest (and by `dynclevr eval-qparser` on a split's truth).
+The parser is an ensemble of `members` sequence models, each trained from its own seed on questions drawn afresh
+every epoch from the grammar's *seen* phrasings with random objects (language/corpus.py; teacher forcing, Adam,
+word dropout); each stops early on the program exact match of more seen-phrasing questions drawn apart. Held-out
+phrasings never reach training or the choice of weights: their exact match is measured once, at the end, for the
+manifest (and by `dynclevr eval-qparser` on a split's truth). The members share the first one's vocabularies.
 The blind baseline (the majority answer per family) comes from the split's questions.parquet.
-Outputs, in `out_dir`: model.pt (state dict), question_vocab.json, program_vocab.json, parser.json (dims, params,
-program shapes), blind.json and manifest.json (data, curve, exact match seen and held out, training time).
+Outputs, in `out_dir`: model.pt (the ensemble's state dict), question_vocab.json, program_vocab.json, parser.json
+(dims, ensemble size, params, program shapes), blind.json and manifest.json (data, per member its curve and
+scores, the ensemble's exact match seen and held out, training time).
 """
 
 from __future__ import annotations
@@ -27,7 +29,7 @@ from dynclevr.config import Config, Split
 from dynclevr.language.corpus import synthesize
 from dynclevr.language.params import QParserParams, qparser_params
 from dynclevr.language.parse import QuestionParser, program_shape
-from dynclevr.language.seq2seq import Dims, Seq2Seq, one_thread, pad_batch
+from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import abstract_program, delexicalise
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import EOS_ID, PAD_ID, SOS_ID, UNK_ID, Vocab
@@ -69,23 +71,28 @@ def token_accuracy(model: Seq2Seq, src: list[list[int]], tgt: list[list[int]], b
     return right / max(1, total)
 
 
-def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=print) -> Fit:
-    """Train on `sample(k)` in epoch k + 1 (the vocabularies come from epoch 1's questions); keep the weights of the
-    best exact match on `val`."""
+def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=print, seed: int | None = None,
+        like: QuestionParser | None = None) -> Fit:
+    """Train one sequence model on `sample(k)` in epoch k + 1 from torch seed `seed` (default: params.seed); keep the
+    weights of the best exact match on `val`. The vocabularies and program shapes are `like`'s (another member of the
+    ensemble), else epoch 1's questions'."""
     start = time.perf_counter()
+    seed = params.seed if seed is None else seed
     first = [encoded(t, p) for t, p in sample(0)]
     if not first or any(not w or not p for w, p in first):
         raise DynclevrError("a training question or program is empty: check templates.json")
-    words = Vocab.build(w for w, _ in first)
-    prog_vocab = Vocab.build(p for _, p in first)
-    shapes = {program_shape(p) for _, p in first}
+    if like is None:
+        words, prog_vocab = Vocab.build(w for w, _ in first), Vocab.build(p for _, p in first)
+        shapes = {program_shape(p) for _, p in first}
+    else:
+        words, prog_vocab, shapes = like.words, like.programs, like.shapes
 
     with one_thread():
-        torch.manual_seed(params.seed)
-        gen = torch.Generator().manual_seed(params.seed)
+        torch.manual_seed(seed)
+        gen = torch.Generator().manual_seed(seed)
         model = Seq2Seq(Dims(len(words), len(prog_vocab), params.embedding, params.hidden, params.layers,
                              params.dropout))
-        parser = QuestionParser(model, words, prog_vocab, params, shapes)
+        parser = QuestionParser(Ensemble([model]), words, prog_vocab, params, shapes)
         # The grammar's questions draw their objects at random, not from a scene: 'the biplane ... the aeroplane' may
         # be two objects there, so they are scored with every description its own object.
         parser.corefer = False
@@ -131,8 +138,11 @@ def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=
             if stale >= params.patience:
                 break
         model.load_state_dict(best_state)
-        model.eval()
-    return Fit(parser, best[0], epoch, time.perf_counter() - start, curve)
+        # Rounded to half precision, as `QuestionParser.save` stores it (eight members in 7.5 MB): the weights
+        # scored here and in the manifest are the ones shipped.
+        model.half().float().eval()
+        em = exact_match(parser, val_texts, val_programs)
+    return Fit(parser, em, epoch, time.perf_counter() - start, curve)
 
 
 def encoded(text: str, program: list[str]) -> tuple[list[str], list[str]]:
@@ -177,28 +187,44 @@ def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo
     n = params.examples_per_epoch
     echo(f"qparser: {n} fresh questions per epoch from the phrasing grammar's seen phrasings; blind baseline from "
          f"{len(q['text'])} questions of split '{split.name}' ({path})")
-    # Seeds 1000 s + k: epoch k's questions; 1000 s + 999: validation; 1000 s + 998: held-out phrasings.
+    # Member k of the ensemble: torch seed s + k, epoch e's questions from seed 1000 (s + k) + e; validation (seed
+    # 1000 s + 999) and the held-out phrasings (1000 s + 998) are the same for all.
     base = 1000 * params.seed
-    result = fit(lambda k: grammar_pairs(n, base + k, "seen", augmented=True),
-                 grammar_pairs(params.val_examples, base + 999, "seen"), params, echo)
+    val = grammar_pairs(params.val_examples, base + 999, "seen")
+    fits: list[Fit] = []
+    for k in range(params.members):
+        data = 1000 * (params.seed + k)
+        echo(f"qparser: member {k + 1} of {params.members}")
+        fits.append(fit(lambda e, data=data: grammar_pairs(n, data + e, "seen", augmented=True), val, params, echo,
+                        seed=params.seed + k, like=fits[0].parser if fits else None))
+    first = fits[0].parser
+    parser = QuestionParser(Ensemble([f.parser.model.members[0] for f in fits]), first.words, first.programs,
+                            params, first.shapes)
+    parser.corefer = False   # as in fit: the grammar's random objects
+    val_em = exact_match(parser, [t for t, _ in val], [p for _, p in val])
     heldout = grammar_pairs(params.val_examples, base + 998, "heldout")
-    heldout_em = exact_match(result.parser, [t for t, _ in heldout], [p for _, p in heldout])
-    known = [(t, p) for t, p in heldout if all(w in result.parser.known for w in tokenize(t))]
-    known_em = exact_match(result.parser, [t for t, _ in known], [p for _, p in known])
+    heldout_em = exact_match(parser, [t for t, _ in heldout], [p for _, p in heldout])
+    known = [(t, p) for t, p in heldout if all(w in parser.known for w in tokenize(t))]
+    known_em = exact_match(parser, [t for t, _ in known], [p for _, p in known])
+    parser.corefer = True
     out_dir = Path(out_dir)
-    result.parser.save(out_dir)
+    parser.save(out_dir)
     write_json_atomic(out_dir / BLIND, {"split": split.name, "questions": len(q["answer"]),
                                         **blind_baseline(q["family"], q["answer"])})
     manifest = {"command": "dynclevr train qparser", "training_data": "phrasing grammar, seen phrasings",
                 "templates_digest": file_digest(TEMPLATES_PATH), "examples_per_epoch": n,
                 "blind_split": split.name, "blind_questions": len(q["text"]), "questions_digest": file_digest(path),
-                "params": params.to_dict(), "model": result.parser.model.dims.to_dict(),
-                "val_exact_match": result.val_exact_match, "heldout_phrasings_exact_match": heldout_em,
+                "params": params.to_dict(), "model": parser.model.dims.to_dict(),
+                "val_exact_match": val_em, "heldout_phrasings_exact_match": heldout_em,
                 "heldout_known_words_exact_match": known_em, "heldout_known_words_share": len(known) / len(heldout),
-                "curve": result.curve, "epochs": result.epochs, "train_seconds": round(result.seconds, 1),
-                "torch": torch.__version__}
+                "members": [{"seed": params.seed + k, "val_exact_match": f.val_exact_match,
+                             "heldout_phrasings_exact_match": exact_match(f.parser, [t for t, _ in heldout],
+                                                                          [p for _, p in heldout]),
+                             "epochs": f.epochs, "curve": f.curve, "train_seconds": round(f.seconds, 1)}
+                            for k, f in enumerate(fits)],
+                "train_seconds": round(sum(f.seconds for f in fits), 1), "torch": torch.__version__}
     write_json_atomic(out_dir / MANIFEST, manifest)
-    echo(f"qparser: exact match {result.val_exact_match:.4f} on seen phrasings, {heldout_em:.4f} on held-out "
-         f"phrasings ({params.val_examples} questions each; {known_em:.4f} on the {len(known)} of them whose words "
-         f"all occur in training), {result.epochs} epochs, {result.seconds:.0f} s; wrote {out_dir}")
+    echo(f"qparser: exact match {val_em:.4f} on seen phrasings, {heldout_em:.4f} on held-out phrasings "
+         f"({params.val_examples} questions each; {known_em:.4f} on the {len(known)} of them whose words all occur "
+         f"in training), {params.members} members, {manifest['train_seconds']:.0f} s; wrote {out_dir}")
     return manifest
