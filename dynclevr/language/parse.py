@@ -48,7 +48,7 @@ from dynclevr.questions.programs import parse as parse_program
 
 QUESTION_VOCAB = "question_vocab.json"
 PROGRAM_VOCAB = "program_vocab.json"
-SETTINGS = "parser.json"   # model dims, ensemble size, params, the training programs' shapes: what `load` rebuilds from
+SETTINGS = "parser.json"   # dims, ensemble size, params, the training programs' shapes: what `load` rebuilds from
 MODEL = "model.pt"
 OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
