@@ -103,6 +103,9 @@ def test_bad_config_is_one_clear_error(tmp_path):
     bad.write_text("[qparser]\nlr = 5.0\n")
     with pytest.raises(ConfigError, match="qparser.lr"):
         qparser_params(Config.load(bad))
+    bad.write_text("[qparser]\nmembers = 0\n")
+    with pytest.raises(ConfigError, match="qparser.members"):
+        qparser_params(Config.load(bad))
 
 
 def _templates_of(text: str, program: str) -> str:
