@@ -27,7 +27,8 @@ from dynclevr.language.train import blind_baseline, fit, train_qparser
 from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
-from dynclevr.questions.phrasing import grammar
+from dynclevr.questions import phrasing
+from dynclevr.questions.phrasing import Grammar, grammar
 from dynclevr.questions.tables import CANDIDATES_OUT, read_questions, write_questions
 
 COLORS = ["gray", "red", "blue", "green", "brown", "purple", "cyan", "yellow"]
@@ -81,6 +82,9 @@ def test_tokenize_splits_words_and_punctuation_and_unifies_spellings():
     assert tokenize("Is the grey SUV moving?") == ["is", "the", "gray", "suv", "moving", "?"]
     assert tokenize("What\u2019s  the colour,\tthen") == ["what", "'", "s", "the", "color", ",", "then"]
     assert tokenize("") == [] and tokenize("   ") == []
+    # short negations are said in full, as the grammar says them; a possessive "'s" is left alone
+    assert tokenize("Isn\u2019t it moving? It won't; it can't") == ["is", "not", "it", "moving", "?", "it", "will",
+                                                                     "not", ";", "it", "can", "not"]
 
 
 def test_vocab_round_trip_and_typo_fix(tmp_path):
@@ -120,16 +124,17 @@ def _templates_of(text: str, program: str) -> str:
 
 
 def test_held_out_phrasings_never_reach_training():
-    """The pools are disjoint phrase for phrase, and every training question is a phrasing of the seen pool."""
+    """The pools are disjoint phrase for phrase, and every training question is a phrasing of the training pool (the
+    seen and taught phrasings)."""
     g = grammar()
     fams = {f["name"]: f for f in templates()["families"]}
     lower, lower_held = {}, {}
     for name, fam in fams.items():
-        lower[name] = {t.lower() for c in g.slot_combinations(fam) for t in g.phrasings(name, "seen", c)}
+        lower[name] = {t.lower() for c in g.slot_combinations(fam) for t in g.phrasings(name, "train", c)}
         lower_held[name] = {t.lower() for c in g.slot_combinations(fam) for t in g.phrasings(name, "heldout", c)}
         assert lower[name] and lower_held[name] and not lower[name] & lower_held[name], name
         assert len(lower[name] | lower_held[name]) >= 20, name        # many phrasings per family
-    training = synthesize(600, seed=3, pool="seen")
+    training = synthesize(600, seed=3, pool="train")
     found = 0
     for e in training:
         t = _templates_of(e.text, e.program)
@@ -138,6 +143,30 @@ def test_held_out_phrasings_never_reach_training():
     assert found >= 0.95 * len(training)      # (the rest: a description that is also a word of the sentence)
     assert all(_templates_of(e.text, e.program) not in lower[e.family]
                for e in synthesize(300, seed=4, pool="heldout"))
+
+
+def test_taught_phrasings_are_checked(tmp_path, monkeypatch):
+    """taught.json naming a lexicon entry or family the grammar lacks, or not a JSON object, is one clear line."""
+    with pytest.raises(ConfigError, match=r"taught.json names \['NOPE'\]"):
+        Grammar(templates(), {"lexicon": {"NOPE": ["x"]}, "families": {}})
+    with pytest.raises(ConfigError, match="unknown lexicon entry @MISSING"):
+        Grammar(templates(), {"lexicon": {}, "families": {"collide_any": ["Does <X> @MISSING?"]}})
+    bad = tmp_path / "taught.json"
+    bad.write_text("[1, 2")
+    monkeypatch.setattr(phrasing, "TAUGHT_PATH", bad)
+    with pytest.raises(ConfigError, match="is not a JSON object of 'lexicon' and 'families'"):
+        phrasing.taught()
+
+
+def test_every_phrasing_names_its_objects():
+    """Every phrasing of every pool (training's seen and taught ones, the held-out ones) names each object its
+    family's program reads."""
+    g = grammar()
+    for fam in templates()["families"]:
+        for pool in ("train", "heldout"):
+            for name in fam["objects"]:
+                assert all(f"<{name}>" in t for c in g.slot_combinations(fam)
+                           for t in g.phrasings(fam["name"], pool, c)), (fam["name"], pool, name)
 
 
 def test_copy_path_for_object_words():
@@ -315,6 +344,11 @@ def test_train_command_writes_loadable_weights_and_manifest(tmp_path):
     assert blind["overall"] == "true" and set(blind["majority"]) == set(families)
     loaded = QuestionParser.load(tmp_path / "out")
     assert len(loaded.model.members) == 2 and len(loaded.parse_batch(texts[:20])) == 20
+    # Members trained in two processes are the same weights.
+    train_qparser(cfg, tmp_path / "data", cfg.split("qp-synthetic"), tmp_path / "two", echo=lambda *_: None,
+                  workers=2)
+    for name in ("model.pt", "question_vocab.json", "program_vocab.json", "parser.json"):
+        assert (tmp_path / "two" / name).read_bytes() == (tmp_path / "out" / name).read_bytes(), name
 
 
 HELDOUT = "qparser-heldout"

@@ -65,13 +65,15 @@ def register(app: typer.Typer) -> None:
 
     @train.command("qparser")
     def qparser(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,
-                data_dir: Path = DataOpt, out: Path = typer.Option(WEIGHTS_DIR / "qparser", "--out")):
+                data_dir: Path = DataOpt, out: Path = typer.Option(WEIGHTS_DIR / "qparser", "--out"),
+                workers: int = typer.Option(1, "--workers", min=1, help="ensemble members trained in parallel "
+                                                                         "processes (the same weights)")):
         """Question parser: attention LSTM seq2seq from question text to program; also the blind baseline."""
         from dynclevr.config import Config
         from dynclevr.language.train import train_qparser
 
         cfg = Config.load(config)
-        train_qparser(cfg, data_dir, cfg.split(split), out, echo=typer.echo)
+        train_qparser(cfg, data_dir, cfg.split(split), out, echo=typer.echo, workers=workers)
 
     @train.command("cnnlstm")
     def cnnlstm(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

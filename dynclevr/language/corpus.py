@@ -1,8 +1,9 @@
 """Questions for the question parser, drawn from the phrasing grammar with random objects: no scene is needed to
 learn how a question maps to its program, so the data is unlimited and any split of phrasings can be held out.
 
-`synthesize(n, seed, pool)`: n questions, families uniform, references and slot values at random; pool 'seen' for
-training (no held-out structure or phrase, dynclevr/questions/phrasing.py), 'heldout' to measure generalisation.
+`synthesize(n, seed, pool)`: n questions, families uniform, references and slot values at random; pool 'train' for
+training (seen and taught phrasings, no held-out structure or phrase: dynclevr/questions/phrasing.py), 'heldout' to
+measure generalisation.
 """
 
 from __future__ import annotations
@@ -59,7 +60,7 @@ def augment(text: str, rng: np.random.Generator) -> str:
     return text.lower() if rng.random() < 0.2 else text
 
 
-def synthesize(n: int, seed: int, pool: str = "seen", augmented: bool = False) -> list[Example]:
+def synthesize(n: int, seed: int, pool: str = "train", augmented: bool = False) -> list[Example]:
     rng = np.random.default_rng(np.random.SeedSequence([seed, 0x9A5]))
     fams = templates()["families"]
     out = []

@@ -10,9 +10,15 @@ _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 _SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
               "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes"}
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
+# Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"); "'s" stays, being a
+# possessive as often as "is".
+_NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|should|wo|ca)n't\b")
+_NOT_STEMS = {"wo": "will", "ca": "can"}
 
 
 def tokenize(text: str) -> list[str]:
-    """'Is the grey SUV moving?' -> ['is', 'the', 'gray', 'suv', 'moving', '?']. Never raises on a str."""
+    """'Is the grey SUV moving?' -> ['is', 'the', 'gray', 'suv', 'moving', '?']; "isn't" -> ['is', 'not']. Never
+    raises on a str."""
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
+    text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     return [_SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]

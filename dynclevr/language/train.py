@@ -1,8 +1,9 @@
 """`dynclevr train qparser`: the question parser from the phrasing grammar, and the blind baseline from a split.
 
 The parser is an ensemble of `members` sequence models, each trained from its own seed on questions drawn afresh
-every epoch from the grammar's *seen* phrasings with random objects (language/corpus.py; teacher forcing, Adam,
-word dropout); each stops early on the program exact match of more seen-phrasing questions drawn apart. Held-out
+every epoch from the grammar's *seen* and *taught* phrasings (pool 'train', questions/phrasing.py) with random
+objects (language/corpus.py; teacher forcing, Adam, word dropout); each stops early on the program exact match of
+more such questions drawn apart. Held-out
 phrasings never reach training or the choice of weights: their exact match is measured once, at the end, for the
 manifest (and by `dynclevr eval-qparser` on a split's truth). The members share the first one's vocabularies.
 The blind baseline (the majority answer per family) comes from the split's questions.parquet.
@@ -16,7 +17,9 @@ from __future__ import annotations
 import copy
 import time
 from collections import Counter, defaultdict
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
+from multiprocessing import get_context
 from pathlib import Path
 from typing import Callable
 
@@ -34,6 +37,7 @@ from dynclevr.language.references import abstract_program, delexicalise
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import EOS_ID, PAD_ID, SOS_ID, UNK_ID, Vocab
 from dynclevr.questions.generate import TEMPLATES_PATH
+from dynclevr.questions.phrasing import TAUGHT_PATH
 from dynclevr.questions.tables import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 from dynclevr.stages.annotate import QUESTIONS_FILE
 
@@ -71,21 +75,22 @@ def token_accuracy(model: Seq2Seq, src: list[list[int]], tgt: list[list[int]], b
     return right / max(1, total)
 
 
+def vocabularies(first: list[tuple[list[str], list[str]]]) -> tuple[Vocab, Vocab, set]:
+    """Encoded questions -> (word vocabulary, program vocabulary, program shapes)."""
+    if not first or any(not w or not p for w, p in first):
+        raise DynclevrError("a training question or program is empty: check templates.json and taught.json")
+    return Vocab.build(w for w, _ in first), Vocab.build(p for _, p in first), {program_shape(p) for _, p in first}
+
+
 def fit(sample: Callable[[int], Pairs], val: Pairs, params: QParserParams, echo=print, seed: int | None = None,
-        like: QuestionParser | None = None) -> Fit:
+        vocab: tuple[Vocab, Vocab, set] | None = None) -> Fit:
     """Train one sequence model on `sample(k)` in epoch k + 1 from torch seed `seed` (default: params.seed); keep the
-    weights of the best exact match on `val`. The vocabularies and program shapes are `like`'s (another member of the
-    ensemble), else epoch 1's questions'."""
+    weights of the best exact match on `val`. The vocabularies and program shapes are `vocab` (the ensemble's), else
+    epoch 1's questions'."""
     start = time.perf_counter()
     seed = params.seed if seed is None else seed
     first = [encoded(t, p) for t, p in sample(0)]
-    if not first or any(not w or not p for w, p in first):
-        raise DynclevrError("a training question or program is empty: check templates.json")
-    if like is None:
-        words, prog_vocab = Vocab.build(w for w, _ in first), Vocab.build(p for _, p in first)
-        shapes = {program_shape(p) for _, p in first}
-    else:
-        words, prog_vocab, shapes = like.words, like.programs, like.shapes
+    words, prog_vocab, shapes = vocab or vocabularies(first)
 
     with one_thread():
         torch.manual_seed(seed)
@@ -181,26 +186,39 @@ def load_questions(store: Store) -> tuple[Path, dict[str, list]]:
     return path, table
 
 
-def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo=print) -> dict:
+def _member(job: tuple[QParserParams, int, Callable]) -> Fit:
+    """Member k of the ensemble (see train_qparser)."""
+    params, k, echo = job
+    n, base = params.examples_per_epoch, 1000 * params.seed
+    data = 1000 * (params.seed + k)
+    vocab = vocabularies([encoded(t, p) for t, p in grammar_pairs(n, base, "train", augmented=True)])
+    echo(f"qparser: member {k + 1} of {params.members}")
+    return fit(lambda e: grammar_pairs(n, data + e, "train", augmented=True),
+               grammar_pairs(params.val_examples, base + 999, "train"), params, echo, seed=params.seed + k,
+               vocab=vocab)
+
+
+def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo=print, workers: int = 1) -> dict:
     params = qparser_params(cfg)
     path, q = load_questions(Store(Path(data_dir), split.name))
     n = params.examples_per_epoch
-    echo(f"qparser: {n} fresh questions per epoch from the phrasing grammar's seen phrasings; blind baseline from "
-         f"{len(q['text'])} questions of split '{split.name}' ({path})")
+    echo(f"qparser: {n} fresh questions per epoch from the phrasing grammar's seen and taught phrasings; blind "
+         f"baseline from {len(q['text'])} questions of split '{split.name}' ({path})")
     # Member k of the ensemble: torch seed s + k, epoch e's questions from seed 1000 (s + k) + e; validation (seed
-    # 1000 s + 999) and the held-out phrasings (1000 s + 998) are the same for all.
+    # 1000 s + 999) and the held-out phrasings (1000 s + 998) are the same for all, and so are the vocabularies
+    # (member 0's first epoch's). Members are independent, so `workers` processes train them alike.
     base = 1000 * params.seed
-    val = grammar_pairs(params.val_examples, base + 999, "seen")
-    fits: list[Fit] = []
-    for k in range(params.members):
-        data = 1000 * (params.seed + k)
-        echo(f"qparser: member {k + 1} of {params.members}")
-        fits.append(fit(lambda e, data=data: grammar_pairs(n, data + e, "seen", augmented=True), val, params, echo,
-                        seed=params.seed + k, like=fits[0].parser if fits else None))
+    if workers > 1:
+        echo(f"qparser: {params.members} members on {workers} processes")
+        with ProcessPoolExecutor(min(workers, params.members), mp_context=get_context("spawn")) as pool:
+            fits = list(pool.map(_member, [(params, k, print) for k in range(params.members)]))
+    else:
+        fits = [_member((params, k, echo)) for k in range(params.members)]
     first = fits[0].parser
     parser = QuestionParser(Ensemble([f.parser.model.members[0] for f in fits]), first.words, first.programs,
                             params, first.shapes)
     parser.corefer = False   # as in fit: the grammar's random objects
+    val = grammar_pairs(params.val_examples, base + 999, "train")
     val_em = exact_match(parser, [t for t, _ in val], [p for _, p in val])
     heldout = grammar_pairs(params.val_examples, base + 998, "heldout")
     heldout_em = exact_match(parser, [t for t, _ in heldout], [p for _, p in heldout])
@@ -211,8 +229,9 @@ def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo
     parser.save(out_dir)
     write_json_atomic(out_dir / BLIND, {"split": split.name, "questions": len(q["answer"]),
                                         **blind_baseline(q["family"], q["answer"])})
-    manifest = {"command": "dynclevr train qparser", "training_data": "phrasing grammar, seen phrasings",
-                "templates_digest": file_digest(TEMPLATES_PATH), "examples_per_epoch": n,
+    manifest = {"command": "dynclevr train qparser", "training_data": "phrasing grammar, seen and taught phrasings",
+                "templates_digest": file_digest(TEMPLATES_PATH), "taught_digest": file_digest(TAUGHT_PATH),
+                "examples_per_epoch": n,
                 "blind_split": split.name, "blind_questions": len(q["text"]), "questions_digest": file_digest(path),
                 "params": params.to_dict(), "model": parser.model.dims.to_dict(),
                 "val_exact_match": val_em, "heldout_phrasings_exact_match": heldout_em,
@@ -224,7 +243,7 @@ def train_qparser(cfg: Config, data_dir: Path, split: Split, out_dir: Path, echo
                             for k, f in enumerate(fits)],
                 "train_seconds": round(sum(f.seconds for f in fits), 1), "torch": torch.__version__}
     write_json_atomic(out_dir / MANIFEST, manifest)
-    echo(f"qparser: exact match {val_em:.4f} on seen phrasings, {heldout_em:.4f} on held-out phrasings "
+    echo(f"qparser: exact match {val_em:.4f} on seen and taught phrasings, {heldout_em:.4f} on held-out phrasings "
          f"({params.val_examples} questions each; {known_em:.4f} on the {len(known)} of them whose words all occur "
          f"in training), {params.members} members, {manifest['train_seconds']:.0f} s; wrote {out_dir}")
     return manifest

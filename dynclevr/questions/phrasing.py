@@ -9,20 +9,27 @@ Each family lists `texts` and `heldout_texts` (sentence structures), each lexico
 A phrasing is *held out* when it uses a held-out structure or a held-out phrase. The question parser trains only on
 phrasings that are not held out, so `dynclevr eval-qparser` can measure how it does on wordings it never saw; the
 dataset's own questions draw from every phrasing, as CLEVR's do.
+
+`taught.json` adds structures and phrases that only the question parser's training draws (pool 'train': seen and
+taught, never held out): sentence forms people use that the dataset's texts need not hold (passives, a fronted
+reference, a possessive), so adding to them changes no dataset question.
 """
 
 from __future__ import annotations
 
 import itertools
+import json
 import re
 from dataclasses import dataclass
 from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
 from dynclevr.config import ConfigError
 
-POOLS = ("all", "seen", "heldout")
+POOLS = ("all", "seen", "heldout", "train")
+TAUGHT_PATH = Path(__file__).with_name("taught.json")
 _LEX = re.compile(r"@([A-Z_]+)")
 
 
@@ -105,17 +112,24 @@ _parse = lru_cache(maxsize=4096)(parse)
 class Grammar:
     """The lexicon and every family's structures (parsed on first use)."""
 
-    def __init__(self, data: dict):
-        self.lexicon = {name: {pool: [parse(t) for t in entry.get(pool, [])] for pool in ("seen", "heldout")}
+    def __init__(self, data: dict, taught: dict | None = None):
+        taught = taught or {"lexicon": {}, "families": {}}
+        unknown = (set(taught["lexicon"]) - set(data.get("lexicon", {}))) | (
+            set(taught["families"]) - {f["name"] for f in data["families"]})
+        if unknown:
+            raise ConfigError(f"taught.json names {sorted(unknown)}, which templates.json lacks")
+        self.lexicon = {name: {**{pool: [parse(t) for t in entry.get(pool, [])] for pool in ("seen", "heldout")},
+                               "taught": [parse(t) for t in taught["lexicon"].get(name, [])]}
                         for name, entry in data.get("lexicon", {}).items()}
-        self.structures = {f["name"]: {"seen": list(f["texts"]), "heldout": list(f.get("heldout_texts", []))}
+        self.structures = {f["name"]: {"seen": list(f["texts"]), "heldout": list(f.get("heldout_texts", [])),
+                                       "taught": list(taught["families"].get(f["name"], []))}
                            for f in data["families"]}
         self.slots = data.get("slots", {})
         for fam in data["families"]:
             if not fam["texts"]:
                 raise ConfigError(f"templates.json family '{fam['name']}' has no texts")
             for combo in self.slot_combinations(fam):
-                for text in fam["texts"] + fam.get("heldout_texts", []):
+                for text in [t for pool in self.structures[fam["name"]].values() for t in pool]:
                     self._check(_parse(fill_slots(text, combo)), fam["name"])
         for entry in self.lexicon.values():
             for nodes in entry.values():
@@ -143,32 +157,34 @@ class Grammar:
         if pool not in POOLS:
             raise ValueError(f"pool must be one of {POOLS}")
         s, slots = self.structures[family], slots or {}
-        if pool == "seen":
-            node = _parse(fill_slots(s["seen"][rng.integers(len(s["seen"]))], slots))
-            return _tidy(self._expand(node, rng, False)[0])
+        if pool in ("seen", "train"):
+            pools = ("seen",) if pool == "seen" else ("seen", "taught")
+            texts = [t for p in pools for t in s[p]]
+            node = _parse(fill_slots(texts[rng.integers(len(texts))], slots))
+            return _tidy(self._expand(node, rng, pools)[0])
         everything = s["seen"] + s["heldout"]
         for _ in range(1000):
             k = int(rng.integers(len(everything)))
-            text, held = self._expand(_parse(fill_slots(everything[k], slots)), rng, True)
+            text, held = self._expand(_parse(fill_slots(everything[k], slots)), rng, ("seen", "heldout"))
             if pool == "all" or held or k >= len(s["seen"]):
                 return _tidy(text)
         raise ConfigError(f"templates.json family '{family}' has no held-out phrasing")
 
-    def _expand(self, node: Node, rng: np.random.Generator, any_pool: bool) -> tuple[str, bool]:
-        """-> (text, whether a held-out phrase was used)."""
+    def _expand(self, node: Node, rng: np.random.Generator, pools: tuple[str, ...]) -> tuple[str, bool]:
+        """-> (text, whether a held-out phrase was used); lexicon phrases drawn from `pools`."""
         if node.kind == "text":
             return node.value, False
         if node.kind == "seq":
-            out = [self._expand(p, rng, any_pool) for p in node.parts]
+            out = [self._expand(p, rng, pools) for p in node.parts]
             return "".join(t for t, _ in out), any(h for _, h in out)
         if node.kind == "alt":
-            return self._expand(node.parts[rng.integers(len(node.parts))], rng, any_pool)
+            return self._expand(node.parts[rng.integers(len(node.parts))], rng, pools)
         if node.kind == "opt":
-            return self._expand(node.parts[0], rng, any_pool) if rng.random() < 0.5 else ("", False)
+            return self._expand(node.parts[0], rng, pools) if rng.random() < 0.5 else ("", False)
         entry = self.lexicon[node.value]
-        options = [(n, False) for n in entry["seen"]] + ([(n, True) for n in entry["heldout"]] if any_pool else [])
+        options = [(n, pool == "heldout") for pool in pools for n in entry[pool]]
         choice, held = options[rng.integers(len(options))]
-        text, inner = self._expand(choice, rng, any_pool)
+        text, inner = self._expand(choice, rng, pools)
         return text, held or inner
 
     # ---- enumeration (for counting phrasings and testing that held-out ones are absent from training) -------------
@@ -176,39 +192,50 @@ class Grammar:
     def phrasings(self, family: str, pool: str, slots: dict | None = None, limit: int = 200_000) -> set[str]:
         """Every distinct phrasing of the family in the pool with these slot values (up to `limit`)."""
         s, out = self.structures[family], set()
-        for text, held_structure in [(t, False) for t in s["seen"]] + [(t, True) for t in s["heldout"]]:
-            for phrase, held in self._all(_parse(fill_slots(text, slots or {})), pool != "seen"):
-                if pool == "all" or (pool == "seen" and not (held or held_structure)) or (
-                        pool == "heldout" and (held or held_structure)):
-                    out.add(_tidy(phrase))
-                    if len(out) >= limit:
-                        return out
+        pools = {"seen": ("seen",), "train": ("seen", "taught")}.get(pool, ("seen", "heldout"))
+        for structure in pools:
+            for text in s[structure]:
+                for phrase, held in self._all(_parse(fill_slots(text, slots or {})), pools):
+                    held = held or structure == "heldout"
+                    if held if pool == "heldout" else pool == "all" or not held:
+                        out.add(_tidy(phrase))
+                        if len(out) >= limit:
+                            return out
         return out
 
-    def _all(self, node: Node, any_pool: bool):
+    def _all(self, node: Node, pools: tuple[str, ...]):
         if node.kind == "text":
             yield node.value, False
         elif node.kind == "seq":
-            for combo in itertools.product(*[list(self._all(p, any_pool)) for p in node.parts]):
+            for combo in itertools.product(*[list(self._all(p, pools)) for p in node.parts]):
                 yield "".join(t for t, _ in combo), any(h for _, h in combo)
         elif node.kind == "alt":
             for p in node.parts:
-                yield from self._all(p, any_pool)
+                yield from self._all(p, pools)
         elif node.kind == "opt":
             yield "", False
-            yield from self._all(node.parts[0], any_pool)
+            yield from self._all(node.parts[0], pools)
         else:
-            entry = self.lexicon[node.value]
-            for pool, held in (("seen", False), ("heldout", True)):
-                if held and not any_pool:
-                    continue
-                for n in entry[pool]:
-                    for text, inner in self._all(n, any_pool):
-                        yield text, held or inner
+            for pool in pools:
+                for n in self.lexicon[node.value][pool]:
+                    for text, inner in self._all(n, pools):
+                        yield text, pool == "heldout" or inner
+
+
+def taught() -> dict:
+    """taught.json: {"lexicon": {NAME: [phrases]}, "families": {family: [structures]}}; a missing file is none."""
+    if not TAUGHT_PATH.exists():
+        return {"lexicon": {}, "families": {}}
+    try:
+        data = json.loads(TAUGHT_PATH.read_text())
+        return {"lexicon": dict(data.get("lexicon", {})), "families": dict(data.get("families", {}))}
+    except (json.JSONDecodeError, AttributeError, TypeError) as e:
+        raise ConfigError(f"{TAUGHT_PATH} is not a JSON object of 'lexicon' and 'families' ({e}): restore it from "
+                          "the repository") from None
 
 
 @lru_cache(maxsize=1)
 def grammar() -> Grammar:
     from dynclevr.questions.generate import templates
 
-    return Grammar(templates())
+    return Grammar(templates(), taught())
