@@ -9,8 +9,9 @@ D holds a finished `dynclevr run --split S` (every row it compares against). C i
 (`[parser] filter = "particle"` makes the row the particle filter's). E, made here, shares D's truth, video, labels,
 questions and the head's cached detections (links, so nothing of D is written) and gets its own parses, futures and
 answers (`dynclevr run --no-ablation`: with the detections cached, 4-8 minutes a 100-video split on 2 cores).
---tree T runs the code and pipeline.toml of another checkout (e.g. a `git worktree`). An analysis: it reads the
-truth's answers to score, and is not part of the model.
+--tree T runs the code and pipeline.toml of another checkout (e.g. a `git worktree`); with --fresh-detections E
+computes the head's detections itself instead of linking D's (for a change to the head: a link would let E's new
+detections replace D's). An analysis: it reads the truth's answers to score, and is not part of the model.
 """
 
 import collections
@@ -35,6 +36,7 @@ ap.add_argument("--config", required=True, help="TOML merged over pipeline.toml:
 ap.add_argument("--out", required=True, help="a new folder for the copy")
 ap.add_argument("--tree", default=str(Path(__file__).resolve().parents[2]), help="the checkout whose code runs")
 ap.add_argument("--workers", default="2")
+ap.add_argument("--fresh-detections", action="store_true", help="compute the head's detections in E, not D's")
 args = ap.parse_args()
 src, out = Path(args.data_dir).resolve() / args.split, Path(args.out).resolve()
 if not (src / "manifests").is_dir():
@@ -48,7 +50,7 @@ for name in SHARED:
     (out / args.split / name).symlink_to(src / name)
 shutil.copytree(src / "manifests", out / args.split / "manifests")
 cache = Path(args.data_dir).resolve() / ".cache" / args.split / "detections"
-if cache.is_dir():
+if cache.is_dir() and not args.fresh_detections:
     (out / ".cache" / args.split).mkdir(parents=True)
     (out / ".cache" / args.split / "detections").symlink_to(cache)
 tree = Path(args.tree).resolve()
