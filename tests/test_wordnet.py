@@ -23,8 +23,8 @@ def test_wordnet_words_stand_in_with_the_ending_they_came_with(parser):
     assert parser._stand_in("proceed") == ["go"]              # a main sense of both
     assert parser._stand_in("proceeding") == ["going"]        # by its stem, said with its ending
     assert parser._stand_in("swifter") == ["faster"]          # a comparative of an adjective similar to 'fast'
-    assert parser._stand_in("has") == ["have"]                # WordNet's irregular forms, to the base ('had' is
-                                                              # the counterfactual's)
+    assert parser._stand_in("drove") == ["drive"]             # WordNet's irregular forms, to the base ('had' is
+    assert parser._stand_in("flew") == ["fly"]                # the counterfactual's, so 'has' read 'have')
     assert parser._stand_in("jets") == ["jets"] and parser._stand_in("jetting") == ["jetting"]   # an object's stem
     assert parser._stand_in("bigger") == ["bigger"]           # no main sense shared: the question stays unparsed
 

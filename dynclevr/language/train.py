@@ -3,9 +3,9 @@
 The parser is an ensemble of `members` sequence models, each trained from its own seed on questions drawn afresh
 every epoch from the grammar's *seen* and *taught* phrasings (pool 'train', questions/phrasing.py) with random
 objects (language/corpus.py; teacher forcing, Adam, word dropout); each stops early on the program exact match of
-more such questions drawn apart. Held-out
-phrasings never reach training or the choice of weights: their exact match is measured once, at the end, for the
-manifest (and by `dynclevr eval-qparser` on a split's truth). The members share the first one's vocabularies.
+more such questions drawn apart. Held-out phrasings never reach training or the choice of weights: their exact
+match is measured once, at the end, for the manifest (and by `dynclevr eval-qparser` on a split's truth). The
+members share the first one's vocabularies.
 The blind baseline (the majority answer per family) comes from the split's questions.parquet.
 Outputs, in `out_dir`: model.pt (the ensemble's state dict), question_vocab.json, program_vocab.json, parser.json
 (dims, ensemble size, params, program shapes), blind.json and manifest.json (data, per member its curve and
