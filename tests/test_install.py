@@ -42,7 +42,8 @@ def installed(tmp_path_factory) -> Path:
     names = set(zipfile.ZipFile(wheel).namelist())
     for name in ("dynclevr/_data/pipeline.toml", "dynclevr/_data/schemas/dynclevr.FrameStates.json",
                  "dynclevr/_data/weights/qparser/model.pt", "dynclevr/_data/weights/detector/detector.pt",
-                 "dynclevr/questions/templates.json", "dynclevr/language/out_of_scope.txt",
+                 "dynclevr/questions/templates.json", "dynclevr/questions/taught.json",
+                 "dynclevr/language/out_of_scope.txt",
                  "dynclevr/language/synonyms.txt", "dynclevr/language/wordnet.txt",
                  "dynclevr/assets/collision/sedan.obj"):
         assert name in names, name
