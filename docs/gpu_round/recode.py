@@ -19,7 +19,7 @@ if __name__ == "__main__":
         buf, off = z["jpeg"], z["offsets"]
         frames = []
         for k in range(len(off) - 1):
-            ok, b = cv2.imencode(".webp", cv2.imdecode(buf[off[k]:off[k + 1]], cv2.IMREAD_COLOR),
+            _, b = cv2.imencode(".webp", cv2.imdecode(buf[off[k]:off[k + 1]], cv2.IMREAD_COLOR),
                                  [cv2.IMWRITE_WEBP_QUALITY, 80])
             frames.append(b.tobytes())
         dst = out_dir / src.name
