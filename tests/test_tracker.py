@@ -15,7 +15,7 @@ from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, front_ba
                                           segment_motion, slope, smoothed_motion)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
-from dynclevr.perception.tracker import SceneParser, own_height
+from dynclevr.perception.tracker import SceneParser, Track, own_height
 from dynclevr.physics import Body, PhysicsParams, ground_height, simulate, yaw_quaternion
 
 from conftest import onehot
@@ -571,6 +571,33 @@ def test_after_a_long_gap_only_the_same_vehicle_joins(shape_after, third, object
     assert len(est.objects) == objects
 
 
+@pytest.mark.parametrize("bus_score, veto_score, minivan_takes_it", [(0.98, 0.9, False), (0.98, 1.0, True),
+                                                                     (0.6, 0.9, True)],
+                         ids=["confident-vetoed", "no-veto", "weak-not-vetoed"])
+def test_a_confident_detection_never_pairs_with_a_track_it_contradicts(bus_score, veto_score, minivan_takes_it):
+    """Full-test 000044: a brown minivan's track, coasting while the minivan was hidden behind a green double bus,
+    came out beside the bus's detection (score 0.98) while the bus's own track had drifted off, took it, and the two
+    tracks swapped for the rest of the video. A detection that sure of itself pairs only with a track whose category
+    and colour it does not contradict; a weak one (the head's names are unsure there) still may."""
+    cfg = Config.load()
+    cfg.data["parser"]["veto_score"] = veto_score
+    parser = SceneParser(ParserModel.load(), None, CAMERA, cfg)
+    bus = np.array([0.0, 0.0, resting_height("double_bus")])
+
+    def track(i: int, shape: str, colour: str) -> Track:
+        return Track(i, 0, 10 * onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
+                     10 * onehot(len(COLOR_NAMES), COLOR_NAMES.index(colour)))
+
+    (u, v), _ = CAMERA.project(bus)
+    det = Detection(float(u), float(v), bus_score, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index("double_bus")),
+                    onehot(len(COLOR_NAMES), COLOR_NAMES.index("green")), 0.0,
+                    float(np.linalg.norm(bus - np.asarray(CAMERA.position))), float(bus[2]))
+    tracks = [track(0, "double_bus", "green"), track(1, "minivan", "brown")]
+    # the bus track's prediction drifted 6 m off (out of reach), the minivan's 2 cm from the bus's centre
+    mu = np.array([[*(bus + [0.0, 6.0, 0.0]), 0, 0, 0], [*(bus + [0.02, 0.0, 0.0]), 0, 0, 0]])
+    assert (parser._associate(tracks, mu, [det]).get(1) == 0) == minivan_takes_it
+
+
 def _weak_bike(score: float, every: int = 1) -> list:
     """A parked mountain bike whose detections all score `score`, under the start bar (0.8), in every `every`-th
     frame only."""
@@ -612,7 +639,9 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("weak_track_frames", 2.5, "non-negative integer"),
                                                  ("heading_support", 0, "must be positive"),
                                                  ("parked_split", 1, "must be true or false"),
-                                                 ("engine_prior", 1.0, "must lie in")])
+                                                 ("engine_prior", 1.0, "must lie in"),
+                                                 ("veto_score", 0.0, "must lie in"),
+                                                 ("veto_agreement", 1.5, "must lie in")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 

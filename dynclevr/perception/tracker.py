@@ -81,9 +81,11 @@ def parser_params(cfg: Config) -> dict:
                 "start_speeds", "stitch", "parked_split"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
-    for key in ("stitch_agreement", "reid_agreement"):
+    for key in ("stitch_agreement", "reid_agreement", "veto_agreement"):
         if not 0 <= p[key] <= 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in [0, 1]")
+    if not 0 < p["veto_score"] <= 1:
+        raise ConfigError(f"'parser.veto_score' = {p['veto_score']!r} must lie in (0, 1] (1: no veto)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
         raise ConfigError("'parser.fit_window' must not exceed 'video.observed_frames': the object-level "
                           "engine / floating flags must be decided within the observed frames")
@@ -135,9 +137,14 @@ def _appearance(subtype_logp: np.ndarray, color_logp: np.ndarray) -> tuple[np.nd
     return CATEGORY_OF @ _distribution(subtype_logp), _distribution(color_logp)
 
 
+def _bhattacharyya(a: np.ndarray, b: np.ndarray) -> float:
+    """1 for alike distributions, 0 for disjoint ones."""
+    return float(np.sqrt(a * b).sum())
+
+
 def _agreement(cat_a, col_a, cat_b, col_b) -> float:
-    """Mean Bhattacharyya coefficient of the category and colour distributions: 1 alike, 0 disjoint."""
-    return 0.5 * float(np.sqrt(cat_a * cat_b).sum() + np.sqrt(col_a * col_b).sum())
+    """Mean Bhattacharyya coefficient of the category and colour distributions."""
+    return 0.5 * (_bhattacharyya(cat_a, cat_b) + _bhattacharyya(col_a, col_b))
 
 
 def _identity(a: "Track", b: "Track") -> float:
@@ -377,18 +384,24 @@ class SceneParser:
     def _associate(self, active: list[Track], mu: np.ndarray, dets: list[Detection]) -> dict[int, int]:
         """Track index -> detection index: Hungarian on image distance / gate + appearance disagreement; then the
         tracks left over (their prediction missed: a collision the engine did not see, a long occlusion) against
-        the detections left over, within `reacquire` gates where the appearance agrees."""
+        the detections left over, within `reacquire` gates where the appearance agrees. A detection at least
+        `veto_score` confident never pairs with a track whose category or colour it contradicts."""
         if not dets:
             return {}
         p = self.p
         dist = np.zeros((len(active), len(dets)))
         agree = np.zeros((len(active), len(dets)))
+        contradicts = np.zeros((len(active), len(dets)), bool)
         for i, k in enumerate(active):
             u, v = self._pixel(mu[i, :3])
             tc, tcol = _appearance(k.subtype_logp, k.color_logp)
             for j, d in enumerate(dets):
                 dist[i, j] = math.hypot(d.u - u, d.v - v)
-                agree[i, j] = _agreement(*_appearance(d.subtype_logp, d.color_logp), tc, tcol)
+                dc, dcol = _appearance(d.subtype_logp, d.color_logp)
+                agree[i, j] = _agreement(dc, dcol, tc, tcol)
+                # the weighted cost alone let a lost car's coasting track take a confident bus's detection
+                contradicts[i, j] = d.score >= p["veto_score"] and min(
+                    _bhattacharyya(dc, tc), _bhattacharyya(dcol, tcol)) < p["veto_agreement"]
         pairs: dict[int, int] = {}
         base = np.array([max(p["gate_pixels"], p["gate_share"] * self._radius(k, mu[i, :3]))
                          for i, k in enumerate(active)])[:, None]
@@ -398,8 +411,8 @@ class SceneParser:
             if not rows or not cols:
                 break
             sub_d, sub_a, g = dist[np.ix_(rows, cols)], agree[np.ix_(rows, cols)], gate[rows]
-            cost = np.where((sub_d <= g) & (sub_a >= min_agree), sub_d / g + 2 * p["appearance_weight"] * (1 - sub_a),
-                            1e6)
+            ok = (sub_d <= g) & (sub_a >= min_agree) & ~contradicts[np.ix_(rows, cols)]
+            cost = np.where(ok, sub_d / g + 2 * p["appearance_weight"] * (1 - sub_a), 1e6)
             for r, c in zip(*linear_sum_assignment(cost)):
                 if cost[r, c] < 1e6:
                     pairs[rows[r]] = cols[c]
