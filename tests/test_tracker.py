@@ -598,6 +598,19 @@ def test_a_confident_detection_never_pairs_with_a_track_it_contradicts(bus_score
     assert (parser._associate(tracks, mu, [det]).get(1) == 0) == minivan_takes_it
 
 
+@pytest.mark.parametrize("older_seen, younger_seen, ended", [(False, True, "older"), (True, False, "younger"),
+                                                            (True, True, "younger")])
+def test_of_two_converged_tracks_the_one_without_a_detection_ends(older_seen, younger_seen, ended):
+    """Two tracks within merge_radius are on one vehicle and one of them ends. Where only one holds a detection in
+    the frame, the other (a track coasting where it lost its own vehicle) ends, old or not; else the younger."""
+    parser = SceneParser(ParserModel.load(), None, CAMERA, Config.load())
+    tracks = [Track(i, i, np.zeros(len(SUBTYPE_NAMES)), np.zeros(len(COLOR_NAMES)), pose=[np.array(at)], seen=[seen])
+              for i, (at, seen) in enumerate((([0.0, 0.0, 0.7, 0, 0, 0], older_seen),
+                                              ([0.2, 0.1, 0.7, 0, 0, 0], younger_seen)))]
+    parser._merge(tracks, 40)
+    assert [k.end for k in tracks] == ([41, None] if ended == "older" else [None, 41])
+
+
 def _weak_bike(score: float, every: int = 1) -> list:
     """A parked mountain bike whose detections all score `score`, under the start bar (0.8), in every `every`-th
     frame only."""

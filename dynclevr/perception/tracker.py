@@ -544,12 +544,13 @@ class SceneParser:
             m.confidence = float(np.clip(ll[n] / area[n].clamp(min=1.0), 0.0, 1.0))
 
     def _merge(self, active: list[Track], t: int) -> None:
-        """Two tracks that converged on one object: the younger one ends."""
+        """Two tracks that converged on one object: the one without a detection in this frame ends (a track coasting
+        where it lost its vehicle, onto another vehicle's track), else the younger one."""
         for i, a in enumerate(active):
             for b in active[i + 1:]:
                 if a.end is None and b.end is None and \
                         np.linalg.norm(a.pose[-1][:3] - b.pose[-1][:3]) < self.p["merge_radius"]:
-                    b.end = t + 1
+                    (a if b.seen[-1] and not a.seen[-1] else b).end = t + 1
 
     def _record(self, k: Track, pose: np.ndarray, m: Measurement | None, t: int) -> None:
         k.pose.append(pose)
