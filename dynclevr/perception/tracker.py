@@ -400,7 +400,7 @@ class SceneParser:
                 dc, dcol = _appearance(d.subtype_logp, d.color_logp)
                 agree[i, j] = _agreement(dc, dcol, tc, tcol)
                 # the weighted cost alone let a lost car's coasting track take a confident bus's detection
-                contradicts[i, j] = d.score >= p["veto_score"] and min(
+                contradicts[i, j] = p["veto_score"] < 1 and d.score >= p["veto_score"] and min(
                     _bhattacharyya(dc, tc), _bhattacharyya(dcol, tcol)) < p["veto_agreement"]
         pairs: dict[int, int] = {}
         base = np.array([max(p["gate_pixels"], p["gate_share"] * self._radius(k, mu[i, :3]))
