@@ -73,6 +73,7 @@ def parser_params(cfg: Config) -> dict:
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
+                      ("coast_frames", "; 0: a coasting track pairs as any other"),
                       ("stitch_overlap", ""), ("weak_track_frames", "; 0: no track starts under the start bar"),
                       ("weak_track_window", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
@@ -81,7 +82,7 @@ def parser_params(cfg: Config) -> dict:
                 "start_speeds", "stitch", "parked_split"):
         if not isinstance(p[key], bool):
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be true or false")
-    for key in ("stitch_agreement", "reid_agreement", "veto_agreement"):
+    for key in ("stitch_agreement", "reid_agreement", "veto_agreement", "coast_agreement"):
         if not 0 <= p[key] <= 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in [0, 1]")
     if not 0 < p["veto_score"] <= 1:
@@ -385,7 +386,9 @@ class SceneParser:
         """Track index -> detection index: Hungarian on image distance / gate + appearance disagreement; then the
         tracks left over (their prediction missed: a collision the engine did not see, a long occlusion) against
         the detections left over, within `reacquire` gates where the appearance agrees. A detection at least
-        `veto_score` confident never pairs with a track whose category or colour it contradicts."""
+        `veto_score` confident never pairs with a track whose category or colour it contradicts, and a track that
+        missed its last `coast_frames` detections (its vehicle hidden, its estimate the engine's alone) pairs only
+        where the appearance agrees `coast_agreement` or more."""
         if not dets:
             return {}
         p = self.p
@@ -402,6 +405,11 @@ class SceneParser:
                 # the weighted cost alone let a lost car's coasting track take a confident bus's detection
                 contradicts[i, j] = p["veto_score"] < 1 and d.score >= p["veto_score"] and min(
                     _bhattacharyya(dc, tc), _bhattacharyya(dcol, tcol)) < p["veto_agreement"]
+        # a coasting track's estimate is the engine's alone and drifts: beside a hidden vehicle, whatever passes by
+        # comes within its gate, and it should take only what looks like its own vehicle
+        n = p["coast_frames"]
+        coasting = np.array([n > 0 and len(k.seen) >= n and not any(k.seen[-n:]) for k in active])
+        unalike = coasting[:, None] & (agree < p["coast_agreement"])
         pairs: dict[int, int] = {}
         base = np.array([max(p["gate_pixels"], p["gate_share"] * self._radius(k, mu[i, :3]))
                          for i, k in enumerate(active)])[:, None]
@@ -411,7 +419,7 @@ class SceneParser:
             if not rows or not cols:
                 break
             sub_d, sub_a, g = dist[np.ix_(rows, cols)], agree[np.ix_(rows, cols)], gate[rows]
-            ok = (sub_d <= g) & (sub_a >= min_agree) & ~contradicts[np.ix_(rows, cols)]
+            ok = (sub_d <= g) & (sub_a >= min_agree) & ~(contradicts | unalike)[np.ix_(rows, cols)]
             cost = np.where(ok, sub_d / g + 2 * p["appearance_weight"] * (1 - sub_a), 1e6)
             for r, c in zip(*linear_sum_assignment(cost)):
                 if cost[r, c] < 1e6:
