@@ -598,19 +598,19 @@ def test_a_confident_detection_never_pairs_with_a_track_it_contradicts(bus_score
     assert (parser._associate(tracks, mu, [det]).get(1) == 0) == minivan_takes_it
 
 
-@pytest.mark.parametrize("seen_lately, shape, colour, takes_it", [
-    (True, "road_bike", "blue", True), (False, "road_bike", "blue", False), (False, "fighter", "green", True)],
-    ids=["seen-takes-unalike", "coasting-refuses-unalike", "coasting-takes-alike"])
-def test_a_coasting_track_pairs_only_with_a_detection_that_looks_like_its_vehicle(seen_lately, shape, colour,
-                                                                                  takes_it):
-    """A green fighter's track whose fighter is hidden (no detection in its last 3 frames) coasts on the engine's
-    prediction; a blue road bike passing within its gate (score 0.85, under the veto's bar) is not its vehicle. A
-    track seen in the last frames still takes it (the head's names of one detection are unsure), and a coasting one
-    takes a detection that looks like its own vehicle."""
+@pytest.mark.parametrize("last_seen, shape, colour, takes_it", [
+    ([True] * 6, "road_bike", "blue", True), ([False] * 6, "road_bike", "blue", False),
+    ([False] * 5 + [True], "road_bike", "blue", False), ([False] * 6, "fighter", "green", True)],
+    ids=["seen-takes-unalike", "coasting-refuses-unalike", "just-found-again-refuses-unalike", "coasting-takes-alike"])
+def test_a_coasting_track_pairs_only_with_a_detection_that_looks_like_its_vehicle(last_seen, shape, colour, takes_it):
+    """A green fighter's track whose fighter is hidden (no detection in 3 of its last 6 frames) coasts on the engine's
+    prediction, or was found again a frame ago; a blue road bike passing within its gate (score 0.85, under the
+    veto's bar) is not its vehicle. A track seen in the last frames still takes it (the head's names of one detection
+    are unsure), and a coasting one takes a detection that looks like its own vehicle."""
     parser = SceneParser(ParserModel.load(), None, CAMERA, Config.load())
     at = np.array([0.0, 0.0, resting_height("fighter")])
     track = Track(0, 0, 10 * onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index("fighter")),
-                  10 * onehot(len(COLOR_NAMES), COLOR_NAMES.index("green")), seen=[True] * 20 + [seen_lately] * 3)
+                  10 * onehot(len(COLOR_NAMES), COLOR_NAMES.index("green")), seen=[True] * 20 + last_seen)
     (u, v), _ = CAMERA.project(at)
     det = Detection(float(u) + 3.0, float(v), 0.85, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)),
                     onehot(len(COLOR_NAMES), COLOR_NAMES.index(colour)), 0.0,
@@ -676,7 +676,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("veto_score", 0.0, "must lie in"),
                                                  ("veto_agreement", 1.5, "must lie in"),
                                                  ("coast_frames", -2, "non-negative integer"),
-                                                 ("coast_agreement", 1.2, "must lie in")])
+                                                 ("coast_agreement", 1.2, "must lie in"),
+                                                 ("coast_window", 2, "must be at least")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 

@@ -73,7 +73,7 @@ def parser_params(cfg: Config) -> dict:
         if not 0 < p[key] < 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
-                      ("coast_frames", "; 0: a coasting track pairs as any other"),
+                      ("coast_frames", "; 0: a coasting track pairs as any other"), ("coast_window", ""),
                       ("stitch_overlap", ""), ("weak_track_frames", "; 0: no track starts under the start bar"),
                       ("weak_track_window", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
@@ -85,6 +85,9 @@ def parser_params(cfg: Config) -> dict:
     for key in ("stitch_agreement", "reid_agreement", "veto_agreement", "coast_agreement"):
         if not 0 <= p[key] <= 1:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in [0, 1]")
+    if p["coast_window"] < p["coast_frames"]:
+        raise ConfigError(f"'parser.coast_window' = {p['coast_window']!r} must be at least 'parser.coast_frames' "
+                          f"({p['coast_frames']!r}): the misses are counted among its frames")
     if not 0 < p["veto_score"] <= 1:
         raise ConfigError(f"'parser.veto_score' = {p['veto_score']!r} must lie in (0, 1] (1: no veto)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
@@ -387,8 +390,8 @@ class SceneParser:
         tracks left over (their prediction missed: a collision the engine did not see, a long occlusion) against
         the detections left over, within `reacquire` gates where the appearance agrees. A detection at least
         `veto_score` confident never pairs with a track whose category or colour it contradicts, and a track that
-        missed its last `coast_frames` detections (its vehicle hidden, its estimate the engine's alone) pairs only
-        where the appearance agrees `coast_agreement` or more."""
+        missed `coast_frames` of its last `coast_window` detections (its vehicle hidden, its estimate the engine's
+        alone, or just found again) pairs only where the appearance agrees `coast_agreement` or more."""
         if not dets:
             return {}
         p = self.p
@@ -406,9 +409,11 @@ class SceneParser:
                 contradicts[i, j] = p["veto_score"] < 1 and d.score >= p["veto_score"] and min(
                     _bhattacharyya(dc, tc), _bhattacharyya(dcol, tcol)) < p["veto_agreement"]
         # a coasting track's estimate is the engine's alone and drifts: beside a hidden vehicle, whatever passes by
-        # comes within its gate, and it should take only what looks like its own vehicle
-        n = p["coast_frames"]
-        coasting = np.array([n > 0 and len(k.seen) >= n and not any(k.seen[-n:]) for k in active])
+        # comes within its gate, and it should take only what looks like its own vehicle, also in the frames just
+        # after one detection found it again (full-test 000016: a fighter's track, found again after 7 frames
+        # behind a truck, took a passing bike's detections two frames later and followed the bike to the end)
+        n, w = p["coast_frames"], p["coast_window"]
+        coasting = np.array([n > 0 and len(k.seen) >= w and w - sum(k.seen[-w:]) >= n for k in active])
         unalike = coasting[:, None] & (agree < p["coast_agreement"])
         pairs: dict[int, int] = {}
         base = np.array([max(p["gate_pixels"], p["gate_share"] * self._radius(k, mu[i, :3]))
