@@ -12,7 +12,7 @@ from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth, yaw_of
 from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, front_back_heading, heading_motion, ray_weights,
-                                          segment_motion, slope, smoothed_motion)
+                                          segment_motion, slope, smoothed_motion, spin)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser, Track, own_height
@@ -677,7 +677,9 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("veto_agreement", 1.5, "must lie in"),
                                                  ("coast_frames", -2, "non-negative integer"),
                                                  ("coast_agreement", 1.2, "must lie in"),
-                                                 ("coast_window", 2, "must be at least")])
+                                                 ("coast_window", 2, "must be at least"),
+                                                 ("spin_window", 0, "must be positive"),
+                                                 ("spin_significance", -1.0, "must be positive")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 
@@ -772,6 +774,26 @@ def test_front_back_heading_ignores_short_confusions_and_follows_lasting_ones():
     assert np.abs(out[25:] - yaws[25:]).max() < 1e-9
     turned = front_back_heading(np.r_[np.full(10, 0.5), np.full(10, 0.5 + np.pi)], 5, 0.05, 0.3)
     assert np.abs(turned[:15] - 0.5).max() < 1e-9 and abs(np.angle(np.exp(1j * (turned[-1] - 0.5 - np.pi)))) < 1e-6
+
+
+@pytest.mark.parametrize("rate", [0.0, 1.5, -2.5])
+def test_a_body_spins_only_after_an_impact_at_the_rate_its_heading_turns(rate):
+    """Before its impact a body has no spin whatever its heading's noise says; after it, the slope of the heading
+    once enough frames are seen, and 0 where the slope is the noise's. Causal: a frame's rate reads no later frame."""
+    rng = np.random.default_rng(4)
+    t = np.arange(60)
+    yaw = 3.0 + np.where(t > 20, rate * (t - 20) / FPS, 0.0) + rng.normal(0, np.radians(4), 60)
+    quats = np.array([yaw_quaternion(y) for y in yaw])
+    seen = np.ones(60, bool)
+    seen[40:43] = False
+    out = spin(quats, seen, [20], FPS, 15, 3.0, 6)
+    assert np.all(out[:26] == 0)                    # before the impact, and until 6 frames after it are seen
+    if rate:
+        assert np.abs(out[45:] - rate).max() < 0.25 * abs(rate)
+    else:
+        assert np.mean(out[27:] != 0) < 0.1
+    assert np.array_equal(spin(quats[:45], seen[:45], [20], FPS, 15, 3.0, 6), out[:45])
+    assert np.all(spin(quats, seen, [], FPS, 15, 3.0, 6) == 0)
 
 
 

@@ -58,7 +58,8 @@ POSITIVE = ("overlap_tolerance", "max_velocity_change", "reacquire",
             "measure_across", "measure_along", "measure_along_flying", "yaw_sigma", "measure_yaw", "kappa",
             "learning_rate", "iterations", "gate_pixels", "gate_share", "spawn_pixels", "spawn_share", "lost_frames",
             "confirm_frames", "confirm_window", "merge_radius", "fit_window", "particles", "min_fit_frames", "min_velocity_frames",
-            "angular_window", "stitch_radius", "stitch_length_share", "heading_support")
+            "spin_window", "spin_min_frames", "spin_significance", "stitch_radius", "stitch_length_share",
+            "heading_support")
 
 
 def parser_params(cfg: Config) -> dict:
@@ -168,7 +169,6 @@ class Track:
     yaws: list = field(default_factory=list)        # the head's heading per frame (NaN: no detection)
     vel: list = field(default_factory=list)
     acc: list = field(default_factory=list)
-    ang: list = field(default_factory=list)
     engine: list = field(default_factory=list)
     floating: list = field(default_factory=list)
     seen: list = field(default_factory=list)         # a detection was assigned in this frame
@@ -618,7 +618,6 @@ class SceneParser:
         k.moving = k.moving + 1 if np.linalg.norm(vel) > 0 else 0
         k.vel.append(vel)
         k.acc.append(acc)
-        k.ang.append(dynamics.angular_velocity(quats, self.fps, p["angular_window"]))
         if p["physics_prior"]:
             # The engine is a hidden state that the prior itself drives: read afresh each frame, an estimated
             # speed-up turns it on and the prediction then speeds up. So it is decided once, from the first fit
@@ -743,11 +742,11 @@ class SceneParser:
         p0, p1 = np.asarray(a.pose[keep - 1], float), np.asarray(b.pose[0], float)
         v = np.zeros(3) if gap <= 0 else np.array([*(p1[:2] - p0[:2]) * self.fps / (gap + 1), 0.0])
         fill = [p0 + (p1 - p0) * (j + 1) / (gap + 1) for j in range(gap)]
-        for name in ("pose", "quat", "yaws", "vel", "acc", "ang", "engine", "floating", "seen", "fvels", "z", "scores"):
+        for name in ("pose", "quat", "yaws", "vel", "acc", "engine", "floating", "seen", "fvels", "z", "scores"):
             if not getattr(a, name):     # the filter's velocities, without the prior
                 continue
             mid = {"pose": fill, "quat": [a.quat[keep - 1]] * gap, "yaws": [np.nan] * gap, "vel": [v] * gap,
-                   "fvels": [v] * gap, "acc": [np.zeros(3)] * gap, "ang": [np.zeros(3)] * gap, "engine": [False] * gap,
+                   "fvels": [v] * gap, "acc": [np.zeros(3)] * gap, "engine": [False] * gap,
                    "floating": [a.floating[keep - 1]] * gap, "seen": [False] * gap,
                    "z": [np.full(3, np.nan)] * gap, "scores": [0.0] * gap}[name]
             setattr(a, name, getattr(a, name)[:keep] + mid + getattr(b, name))
@@ -791,7 +790,7 @@ class SceneParser:
             n = len(k.pose)
             sl = slice(k.start, k.start + n)
             pos[sl, i], quat[sl, i] = np.array(k.pose)[:, :3], self._orientations(k)
-            vel[sl, i], acc[sl, i], ang[sl, i] = np.array(k.vel), np.array(k.acc), np.array(k.ang)
+            vel[sl, i], acc[sl, i] = np.array(k.vel), np.array(k.acc)
             eng[sl, i], flo[sl, i] = k.engine, k.floating
             # seen from its first confident frame (the track's start; issue 11), once confirmed, but in the observed
             # frames only where they confirmed it themselves (the predictive questions' parse reads them alone)
@@ -841,7 +840,7 @@ class SceneParser:
                 confidence=float(np.mean(seen_scores)) if seen_scores else 0.0))
         cut_state = None if cut >= T or not N else {
             "position": pos[cut].copy(), "orientation": quat[cut].copy(), "velocity": vel[cut].copy(),
-            "angular_velocity": ang[cut].copy(), "engine": eng[cut].copy(), "floating": flo[cut].copy()}
+            "angular_velocity": np.zeros((N, 3)), "engine": eng[cut].copy(), "floating": flo[cut].copy()}
         for i, (x, v, e) in causal_cut.items():
             cut_state["position"][i], cut_state["velocity"][i], cut_state["engine"][i] = x, v, e
         # an event's impulse: the reduced mass times the change of the pair's relative (filtered) velocity
@@ -854,9 +853,18 @@ class SceneParser:
         known = {k.id for k in tracks if k.confirmed <= cut}
         cut_events = None if cut_state is None else [e for e in events if e.frame + collisions.AFTER <= cut
                                                      and e.a in known and e.b in known]
+        for i, k in enumerate(tracks):
+            ang[:, i, 2] = self._spin(k, quat[:, i], vis[:, i], events)
+            if cut_state is not None:
+                cut_state["angular_velocity"][i, 2] = self._spin(k, quat[:cut + 1, i], vis[:cut + 1, i], cut_events)[-1]
         return Scene4D(name, self.fps, self.camera, objects, pos, quat, vel, ang, acc, eng, flo, vis,
                        collisions=events, observed_frames=self.observed, cut_state=cut_state,
                        cut_collisions=cut_events)
+
+    def _spin(self, k: Track, quats: np.ndarray, seen: np.ndarray, events: list[Collision]) -> np.ndarray:
+        """Its yaw rate per frame of `quats` (`dynamics.spin`), from its impacts among `events`."""
+        return dynamics.spin(quats, seen, [e.frame for e in events if k.id in (e.a, e.b)], self.fps,
+                             self.p["spin_window"], self.p["spin_significance"], self.p["spin_min_frames"])
 
     @staticmethod
     def _vertical(k: Track, vel: np.ndarray) -> None:
