@@ -90,15 +90,15 @@ def spin(quats: np.ndarray, seen: np.ndarray, impacts: list[int], fps: int, wind
     Nothing spins a body but an impact (the generator launches every one straight), so before its first impact the
     rate is 0. After one it is the slope of a line through the heading over the seen frames among the last `window`
     since that impact (at least `min_frames` of them), where that slope is `significance` standard errors from 0;
-    else 0.
-    Differences of the heading over a few frames read the head's heading noise as spin: on full-test they correlate
-    0.06 with the true spin at the cut, and a body without spin is then a better guess than them."""
-    x, y, z, w = np.moveaxis(np.asarray(quats, float), -1, 0)
-    yaw = np.unwrap(np.arctan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+    else 0. Differences of the heading over a few frames read the head's heading noise as spin: on full-test they
+    correlate 0.06 with the true spin at the cut, and a body without spin is then a better guess than them."""
+    fwd = heading(quats)
+    yaw = np.unwrap(np.arctan2(fwd[:, 1], fwd[:, 0]))
+    impacts = set(impacts)
     out = np.zeros(len(yaw))
     last = -1
     for t in range(len(yaw)):
-        last = max([last] + [f for f in impacts if f == t])
+        last = t if t in impacts else last
         if last < 0:
             continue
         f = np.arange(max(last + 1, t - window + 1), t + 1)
