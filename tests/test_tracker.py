@@ -679,6 +679,7 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("coast_agreement", 1.2, "must lie in"),
                                                  ("coast_window", 2, "must be at least"),
                                                  ("spin_window", 0, "must be positive"),
+                                                 ("spin_window", 15.5, "non-negative integer"),
                                                  ("spin_significance", -1.0, "must be positive")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
