@@ -91,9 +91,13 @@ if not Path(args.config).is_file():
 if out.exists():
     sys.exit(f"{out} exists: give --out a new folder (nothing is overwritten)")
 cache = Path(args.data_dir).resolve() / ".cache" / args.split / "detections"
-if args.better_head is not None and (args.better_head < 0 or args.fresh_detections or not cache.is_dir()):
-    sys.exit(f"--better-head {args.better_head} needs a scale >= 0, no --fresh-detections, and D's cached detections "
-             f"({cache}: run `dynclevr run --split {args.split} --data-dir {args.data_dir}` first)")
+if args.better_head is not None and args.better_head < 0:
+    sys.exit(f"--better-head {args.better_head}: the scale of the head's errors must be >= 0 (0: exact, 1: the head's)")
+if args.better_head is not None and args.fresh_detections:
+    sys.exit("--better-head rewrites D's cached detections: leave out --fresh-detections")
+if args.better_head is not None and not cache.is_dir():
+    sys.exit(f"--better-head needs D's cached detections ({cache}): run `dynclevr run --split {args.split} "
+             f"--data-dir {args.data_dir}` first")
 if args.truth_heading and args.better_head is None:
     sys.exit("--truth-heading goes with --better-head S (S = 1 keeps the head's placements)")
 (out / args.split).mkdir(parents=True)
