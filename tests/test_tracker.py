@@ -445,6 +445,29 @@ def test_heading_motion_reads_a_planes_speed_across_the_ray(v0, rate, flipped):
     assert heading_motion(z[:10], W[:10], FPS, axis, t0, starts, 8) is None
 
 
+def test_heading_motion_turns_from_a_wrong_heading_where_the_motion_crosses_the_ray():
+    """The same kind of plane flying across the camera ray at 6 m/s, whose heading the head reads 20 degrees off:
+    along that heading exactly the velocity is 20 degrees off (2 m/s). With a Gaussian prior of 4 degrees around
+    it, the measurements across the ray (good to 6 cm) turn the line towards the truth, part of the way (the
+    prior and the measurements meet between), and the start speed stays the truth's."""
+    rng = np.random.default_rng(1)
+    eye = np.array([0.0, 0.0, 3.0])
+    u = np.array([0.0, 1.0])                        # across the ray (which runs along x)
+    t = np.arange(30) / FPS
+    z = np.concatenate([[12.0, -1.5] + np.outer(6.0 * t, u), np.full((30, 1), 2.5)], 1)
+    z[:, :2] += np.outer(rng.normal(0, 0.7, 30), [1.0, 0.0]) + np.outer(rng.normal(0, 0.06, 30), [0.0, 1.0])
+    starts = [(0.0, 0.0), (3.0, 0.0), (6.0, 0.0), (3.0, 3.0), (6.0, 3.0)]
+    off = np.radians(20)
+    axis = np.array([np.sin(off), np.cos(off), 0.0])
+    W = ray_weights(z, eye, 0.06, 0.6)
+    along, _ = heading_motion(z, W, FPS, axis, 0.0, starts, 8)
+    turned, n = heading_motion(z, W, FPS, axis, 0.0, starts, 8, heading_sd=np.radians(4))
+    assert np.linalg.norm(along[-1, :2] - 6.0 * u) > 1.5
+    assert starts[n] == (6.0, 0.0)
+    assert np.linalg.norm(turned[-1, :2] - 6.0 * u) < np.linalg.norm(along[-1, :2] - 6.0 * u) - 0.5
+    assert abs(np.degrees(np.arctan2(turned[-1, 0], turned[-1, 1]))) < 15
+
+
 @pytest.mark.parametrize("speed, engine", [(3.0, True), (6.0, False), (3.0, False)])
 def test_the_cut_state_decides_the_engine_from_the_observed_frames(speed, engine):
     """A car simulated by the data's own physics, seen from frame 0: from the 30 observed frames alone (10 cm of
@@ -680,7 +703,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("coast_window", 2, "must be at least"),
                                                  ("spin_window", 0, "must be positive"),
                                                  ("spin_window", 15.5, "non-negative integer"),
-                                                 ("spin_significance", -1.0, "must be positive")])
+                                                 ("spin_significance", -1.0, "must be positive"),
+                                                 ("heading_motion_sd", -4.0, "must lie in")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 

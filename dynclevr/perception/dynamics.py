@@ -287,13 +287,19 @@ def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, spee
 
 
 def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarray, t0: float,
-                   starts: list[tuple[float, float]], min_samples: int) -> tuple[np.ndarray, int] | None:
+                   starts: list[tuple[float, float]], min_samples: int, heading_sd: float = 0.0
+                   ) -> tuple[np.ndarray, int] | None:
     """The physics prior for a body in the air before its first impact, whose distance is the head's alone: it
     moves along its heading (the generator launches every vehicle forwards), from a start speed at frame 0 changed
     since at a known rate. The heading fixes the line that `segment_motion` has to fit from the measurements, whose
     error is mostly along the camera ray; so the speed is read where the measurements are tight (across the ray),
     and the few start speeds (`starts`: (speed at frame 0, rate in m/s^2)) compete in the measurements' own metric
     (`weights` [n, 2, 2], `ray_weights`).
+
+    The heading is the head's, and a plane's can be tens of degrees off (read nose-on or tail-on): with
+    `heading_sd` (radians) > 0 the line may turn from the axis by up to HEADING_TURN, at a cost of its turn's
+    squared standard scores (a Gaussian prior around the heading), so that motion across the ray, which the
+    measurements fix to centimetres, sets the direction, and the heading still sets it along the ray.
 
     `z` [n, 3] measured positions (NaN: none) of frames t0 * fps + 0..n-1; `axis` [3] the heading's axis (either
     way). -> (horizontal velocities [n, 3], the index of the start that explains them best); None: fewer than
@@ -303,28 +309,35 @@ def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarra
         return None
     xy, W = z[idx, :2], weights[idx]
     tau = t0 + idx / fps
-    u = np.asarray(axis, float)[:2] / max(float(np.linalg.norm(axis[:2])), 1e-9)
+    base = math.atan2(axis[1], axis[0])
+    turns = np.arange(-HEADING_TURN, HEADING_TURN + 1e-9, HEADING_STEP) if heading_sd > 0 else np.zeros(1)
     best = None
-    for n, (v0, rate) in enumerate(starts):
-        travel = v0 * tau + 0.5 * rate * tau ** 2
-        for sign in ((1.0,) if v0 == 0 and rate == 0 else (1.0, -1.0)):
-            path = travel[:, None] * (sign * u)
-            keep = np.ones(len(idx), bool)
-            for _ in range(2):   # a bad detection out, as in segment_motion
-                x0 = np.linalg.solve(W[keep].sum(0), np.einsum("kij,kj->i", W[keep], (xy - path)[keep]))
-                r = xy - path - x0
-                d2 = np.einsum("ki,kij,kj->k", r, W, r)
-                ok = d2 <= max(9.0, 9.0 * float(np.median(d2)))
-                if (ok == keep).all() or ok.sum() < 2 * min_samples:
-                    break
-                keep = ok
-            cost = float(np.minimum(d2, 9.0 * max(1.0, float(np.median(d2)))).sum())
-            if best is None or cost < best[0]:
-                best = cost, n, sign
-    _, n, sign = best
+    for turn in turns:
+        u = np.array([math.cos(base + turn), math.sin(base + turn)])
+        prior = (turn / heading_sd) ** 2 if heading_sd > 0 else 0.0
+        for n, (v0, rate) in enumerate(starts):
+            travel = v0 * tau + 0.5 * rate * tau ** 2
+            for sign in ((1.0,) if v0 == 0 and rate == 0 else (1.0, -1.0)):
+                path = travel[:, None] * (sign * u)
+                keep = np.ones(len(idx), bool)
+                for _ in range(2):   # a bad detection out, as in segment_motion
+                    x0 = np.linalg.solve(W[keep].sum(0), np.einsum("kij,kj->i", W[keep], (xy - path)[keep]))
+                    r = xy - path - x0
+                    d2 = np.einsum("ki,kij,kj->k", r, W, r)
+                    ok = d2 <= max(9.0, 9.0 * float(np.median(d2)))
+                    if (ok == keep).all() or ok.sum() < 2 * min_samples:
+                        break
+                    keep = ok
+                cost = float(np.minimum(d2, 9.0 * max(1.0, float(np.median(d2)))).sum()) + prior
+                if best is None or cost < best[0]:
+                    best = cost, n, sign, u
+    _, n, sign, u = best
     v0, rate = starts[n]
     speed = v0 + rate * (t0 + np.arange(len(z)) / fps)
     return np.concatenate([speed[:, None] * (sign * u), np.zeros((len(z), 1))], 1), n
+
+
+HEADING_TURN, HEADING_STEP = math.radians(45), math.radians(2)   # heading_motion's turns from the head's heading
 
 
 def ray_weights(z: np.ndarray, eye: np.ndarray, across: float, along: float) -> np.ndarray:
