@@ -28,7 +28,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 39  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
+VERSION = 40  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
               # 7: robust smoothing; 8: smoothed velocities only where the filter converges; 9: segment motion;
               # 10: start speeds, the cut state from the segment motion of the observed frames; 11: slow to rest;
               # 12: cut_collisions, the collisions the observed frames decide (the predictive questions read them);
@@ -55,7 +55,8 @@ VERSION = 39  # 5: collisions from the learned classifier (weights/collision/); 
               # last detections pairs only with one that looks like it (parser.coast_frames); 37: ... also in the
               # frames just after it was found again (parser.coast_window); 38: the spin is the heading's fitted
               # slope since the last impact where significant, else 0 (parser.spin_window); 39: at the cut a plane's
-              # line may turn from the head's heading under a Gaussian prior (parser.heading_motion_sd)
+              # line may turn from the head's heading under a Gaussian prior (parser.heading_motion_sd); 40: at the
+              # cut, a stretch begun by a landing and too short for a fit goes on from the flight's velocity
 
 
 @lru_cache(maxsize=1)
