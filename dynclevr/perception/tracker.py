@@ -1058,8 +1058,9 @@ class SceneParser:
                     vel[lo:hi, 2] = vz
             f = fit(lo, hi, engines(lo))
             if f is None and cut and lo in landing and lo > 0:
-                # A landing leaves the horizontal velocity as it was, and from it friction slows the body: at the
-                # cut, a stretch too short for a fit of its own goes on from the flight's last velocity (the
+                # A landing keeps most of the horizontal velocity (friction at the touchdown takes some: a jet
+                # simulated landing at 3 m/s goes on at 2.6), and from it friction slows the body: at the cut, a
+                # stretch too short for a fit of its own goes on from the flight's last velocity (the
                 # filter's there lags the landing's bounce: on full-test, planes landed just before the cut read
                 # 1.5-1.9 against 2.5-3 m/s; moving planes' cut speed error, mean over full-test / full-val /
                 # full-new, 0.92 / 1.19 / 0.641 -> 0.82 / 1.13 / 0.639 m/s. In the factual arrays, seen whole, the
@@ -1104,7 +1105,8 @@ class SceneParser:
         yaw = np.array([math.atan2(h[1], h[0]) for h in heading(np.array(k.quat[:len(z)]))])
         axis = 0.5 * math.atan2(np.sin(2 * yaw).mean(), np.cos(2 * yaw).mean())
         g = dynamics.heading_motion(z, W, self.fps, np.array([math.cos(axis), math.sin(axis), 0.0]),
-                                    k.start / self.fps, starts, p["min_fit_frames"], math.radians(p["heading_motion_sd"]))
+                                    k.start / self.fps, starts, p["min_fit_frames"],
+                                    math.radians(p["heading_motion_sd"]))
         if g is None:
             return None
         return 0.0, g[1] > 2, g[0]
