@@ -11,8 +11,9 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth, yaw_of
-from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, front_back_heading, heading_motion, ray_weights,
-                                          segment_motion, slope, smoothed_motion, spin)
+from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, break_runs, front_back_heading, heading_motion,
+                                          impacts, path_motion, ray_weights, segment_motion, slope, smoothed_motion,
+                                          spin)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser, Track, own_height
@@ -164,6 +165,56 @@ def test_smoothed_motion_uses_both_sides_and_never_crosses_an_impact():
     np.testing.assert_allclose(v[:25, 1], -2.0, atol=1e-6)
     np.testing.assert_allclose(v[25:, 0], -4.0, atol=1e-6)        # neighbours bridge the gap
     assert np.isnan(smoothed_motion(z[:5], [], FPS, 12, 8)[1]).all()   # 5 samples < 8: no velocity
+
+
+def test_a_long_contact_is_one_impact_and_the_positions_go_on_through_it():
+    """Bodies in contact give a break every frame: cut at each, no window holds enough measurements for a fit (the
+    positions stayed the filter's there); as one impact (`break_runs`: its first frame and the frame after its
+    last) the fits on either side reach through it."""
+    breaks = [2] + list(range(20, 41)) + [90]
+    assert break_runs(breaks, 100, 16) == [(2, 3), (20, 41), (90, 91)]
+    assert break_runs(breaks, 100, 20) == [(2, 41), (90, 91)]
+    assert impacts(breaks, 100, 16) == [2, 20, 90]
+    t = np.arange(60) / FPS
+    z = np.stack([2.0 * t, np.ones_like(t), np.zeros_like(t)], 1)
+    assert np.isnan(smoothed_motion(z, list(range(20, 41)), FPS, 12, 8)[0][25:36]).all()
+    x = smoothed_motion(z, impacts(list(range(20, 41)), 60, 16), FPS, 12, 8)[0]
+    np.testing.assert_allclose(x, z, atol=1e-9)
+
+
+def _ray_measurements(path, bias, rng):
+    """Measured positions of a path [n, 3]: its camera ray to within a centimetre, its distance scaled by 1 + bias
+    [n] with 2% noise (the head's, for a plane in the air)."""
+    eye = np.asarray(CAMERA.position)
+    ray = path - eye
+    z = eye + ray * (1 + bias + rng.normal(0, 0.02, len(path)))[:, None]
+    return z + rng.normal(0, 0.01, z.shape)
+
+
+def test_path_motion_averages_the_distance_over_the_whole_flight():
+    """A floating plane struck in the air at frame 40. Straight at a constant velocity on either side of the
+    impact and continuous at it, the path is fixed by the rays up to about one scale about the camera, which the
+    distances of every frame set: (1) their frame-to-frame noise averages out; (2) read 10% too far after the
+    impact (tumbling), the path shares that bias with the stretch before (which the rays tie to it): less off
+    after, a little off before; (3) a stretch with too few measurements has no path."""
+    rng = np.random.default_rng(0)
+    eye = np.asarray(CAMERA.position)
+    n, hit = 100, 40
+    t = np.arange(n) / FPS
+    path = np.stack([-3.0 + 4.0 * t, 1.0 + 0.0 * t, 2.5 + 0.0 * t], 1)
+    path[hit:] = path[hit] + np.outer(t[hit:] - t[hit], [1.0, -3.0, 0.8])
+    dist = np.linalg.norm(path - eye, axis=1)
+
+    def fit(z):
+        return path_motion(z, eye, FPS, [0, hit, n], np.zeros((2, 3)), np.full(2, 0.3), 0.06, 0.6, 8)
+
+    z = _ray_measurements(path, np.zeros(n), rng)
+    assert np.median(np.linalg.norm(fit(z) - path, axis=1)) < 0.3 * np.median(np.linalg.norm(z - path, axis=1))
+    z = _ray_measurements(path, np.where(np.arange(n) >= hit, 0.10, 0.0), rng)
+    scale = ((fit(z) - path) * (path - eye)).sum(1) / dist ** 2      # relative error along the ray
+    assert np.median(scale[hit:]) < 0.09 and 0.005 < np.median(scale[:hit]) < 0.04
+    z[hit:hit + 55] = np.nan
+    assert fit(z) is None
 
 
 def test_a_car_seen_from_its_start_has_its_speed_there_and_a_causal_cut_state():

@@ -237,6 +237,23 @@ def smoothed_motion(z: np.ndarray, breaks: list[int], fps: int, half_window: int
     return pos, vel
 
 
+def break_runs(breaks: list[int], n: int, gap: int) -> list[tuple[int, int]]:
+    """The breaks (frames into a track of n) as runs, (first, last + 1), none more than `gap` frames after the
+    last: bodies in contact for a while give a break every frame, and a run of them is one impact."""
+    out = []
+    for b in sorted(b for b in breaks if 0 < b < n):
+        if out and b - (out[-1][1] - 1) <= gap:
+            out[-1] = (out[-1][0], b + 1)
+        else:
+            out.append((b, b + 1))
+    return out
+
+
+def impacts(breaks: list[int], n: int, gap: int) -> list[int]:
+    """The first frames of `break_runs`."""
+    return [a for a, _ in break_runs(breaks, n, gap)]
+
+
 SPEED_GRID = np.arange(0.0, 16.0, 0.02)    # m/s: the start speeds segment_motion tries (the fastest body: ~12.4)
 TRUNCATE = 0.3                              # metres: segment_motion's cost of a measurement at most this far off
 
@@ -335,6 +352,60 @@ def heading_motion(z: np.ndarray, weights: np.ndarray, fps: int, axis: np.ndarra
     v0, rate = starts[n]
     speed = v0 + rate * (t0 + np.arange(len(z)) / fps)
     return np.concatenate([speed[:, None] * (sign * u), np.zeros((len(z), 1))], 1), n
+
+
+def path_motion(z: np.ndarray, eye: np.ndarray, fps: int, edges: list[int], accel: np.ndarray,
+                accel_sd: np.ndarray, across: float, along: float, min_samples: int) -> np.ndarray | None:
+    """Positions [n, 3] of the path that explains measured positions z [n, 3] (NaN: none) best, seen whole: between
+    consecutive `edges` (frames, from 0 to n) a body moves at a constant acceleration, near accel[s] [S, 3] by a
+    Gaussian prior of accel_sd[s] (S stretches), and at an edge its position goes on (an impact changes the
+    velocity, not the position). Least squares in the measurements' metric (`ray_weights`, in 3D), robust like
+    `_robust_fit`; None where a stretch holds fewer than min_samples measurements.
+
+    Why: an aeroplane's distance is the head's alone, centimetres off across the camera ray but decimetres along
+    it, and off the same way over many frames. The rays fix a path of this kind up to about one scale about the
+    camera (exactly, for straight stretches), and the whole track's measurements that scale: their
+    frame-to-frame noise averages out, and a stretch's bias (tumbling after an impact, the head reads a plane 10%
+    too far for a second and more) is shared with the rest of the flight. `eye` [3]: the camera; `across` metres
+    of standard deviation across the ray, `along` per 10 m of distance along it (place.Measurement)."""
+    n, S = len(z), len(edges) - 1
+    seen = np.isfinite(z).all(1)
+    if any(seen[lo:hi].sum() < min_samples for lo, hi in zip(edges[:-1], edges[1:])):
+        return None
+    # p(f) = x0 + sum_s v_s tau_s(f) + a_s tau_s(f)^2 / 2, tau_s(f): the time spent in stretch s by frame f
+    B = np.zeros((n, 1 + 2 * S))
+    B[:, 0] = 1.0
+    f = np.arange(n)
+    for k, (lo, hi) in enumerate(zip(edges[:-1], edges[1:])):
+        tau = np.clip(f - lo, 0, hi - lo) / fps
+        B[:, 1 + 2 * k], B[:, 2 + 2 * k] = tau, 0.5 * tau * tau
+    ray = np.where(seen[:, None], z, 0.0) - eye
+    ray /= np.maximum(np.linalg.norm(ray, axis=1, keepdims=True), 1e-9)
+    sd_along = along * np.maximum(np.linalg.norm(np.where(seen[:, None], z, 0.0) - eye, axis=1), 1.0) / 10.0
+    W = (ray[:, :, None] * ray[:, None, :] * (1 / sd_along ** 2 - 1 / across ** 2)[:, None, None]
+         + np.eye(3) / across ** 2)
+    K = B.shape[1]
+    prior = np.zeros((K, 3, K, 3))
+    mean = np.zeros((K, 3))
+    for k in range(S):
+        a = 2 + 2 * k
+        prior[a, :, a, :] = np.eye(3) / accel_sd[k] ** 2
+        mean[a] = np.asarray(accel[k]) / accel_sd[k] ** 2
+        prior[a - 1, :, a - 1, :] = np.eye(3) * 1e-4     # a stretch's speed is the measurements' (20 m/s loose)
+    zs = np.where(seen[:, None], z, 0.0)
+    keep = seen.copy()
+    for _ in range(3):
+        M = np.einsum("fk,fl,fcd->kcld", B[keep], B[keep], W[keep]) + prior
+        rhs = np.einsum("fk,fcd,fd->kc", B[keep], W[keep], zs[keep]) + mean
+        theta = np.linalg.solve(M.reshape(3 * K, 3 * K), rhs.reshape(3 * K)).reshape(K, 3)
+        path = B @ theta
+        r = path - zs
+        d2 = np.einsum("fc,fcd,fd->f", r, W, r)
+        ok = seen & (d2 <= 9.0 * max(1.0, float(np.median(d2[keep]))))
+        if (ok == keep).all() or ok.sum() < min_samples:
+            break
+        keep = ok
+    return path
 
 
 HEADING_TURN, HEADING_STEP = math.radians(45), math.radians(2)   # heading_motion's turns from the head's heading
