@@ -196,7 +196,8 @@ def test_path_motion_averages_the_distance_over_the_whole_flight():
     impact and continuous at it, the path is fixed by the rays up to about one scale about the camera, which the
     distances of every frame set: (1) their frame-to-frame noise averages out; (2) read 10% too far after the
     impact (tumbling), the path shares that bias with the stretch before (which the rays tie to it): less off
-    after, a little off before; (3) a stretch with too few measurements has no path."""
+    after, a little off before; (3) a stretch whose measurements the path misses (no constant acceleration
+    explains a weave across the ray) has none there; (4) a stretch with too few measurements has no path."""
     rng = np.random.default_rng(0)
     eye = np.asarray(CAMERA.position)
     n, hit = 100, 40
@@ -213,6 +214,11 @@ def test_path_motion_averages_the_distance_over_the_whole_flight():
     z = _ray_measurements(path, np.where(np.arange(n) >= hit, 0.10, 0.0), rng)
     scale = ((fit(z) - path) * (path - eye)).sum(1) / dist ** 2      # relative error along the ray
     assert np.median(scale[hit:]) < 0.09 and 0.005 < np.median(scale[:hit]) < 0.04
+    across = np.cross(path[hit] - eye, [0.0, 0.0, 1.0])
+    weave = path + np.outer(np.where(np.arange(n) >= hit, np.sin(2 * np.pi * (t - t[hit])), 0.0),
+                            across / np.linalg.norm(across))
+    est = fit(_ray_measurements(weave, np.zeros(n), rng))
+    assert np.isfinite(est[:hit]).all() and np.isnan(est[hit:]).all()
     z[hit:hit + 55] = np.nan
     assert fit(z) is None
 

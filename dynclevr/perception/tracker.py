@@ -977,7 +977,8 @@ class SceneParser:
                                     self.p["measure_across"], self.p["measure_along_flying"],
                                     self.p["min_fit_frames"])
         if path is not None:
-            pos[airborne] = path[airborne]
+            held = airborne & np.isfinite(path).all(1)
+            pos[held] = path[held]
 
     def _segment_motion(self, k: Track, z: np.ndarray, pos: np.ndarray, vel: np.ndarray, engine: np.ndarray,
                         cut: bool = False) -> list[int]:
