@@ -950,8 +950,8 @@ class SceneParser:
         stretches of `_segment_motion` (`edges`) and the impacts' runs of breaks. In the air a floating plane holds
         its velocity (the floating force cancels gravity; no drag), a falling one falls at g, and an engine pushes
         along the motion; in contact, or on the ground (friction slows it and may stop it), the path's constant
-        acceleration follows loosely. Planes' position error, median over full-test / full-val / full-new: see the
-        journal (parse-scene 41)."""
+        acceleration follows loosely. The planes' position error on full-test, median / 90th percentile: 0.37 / 1.05
+        m from the local fits, 0.33 / 0.90 on this path (parse-scene 42)."""
         ph, n, short = self.physics, len(z), self.p["min_fit_frames"]
         airborne = pos[:, 2] > SUBTYPES[k.shape][1][2] / 2 + 0.2
         floating = np.array(k.floating, bool)
@@ -991,6 +991,8 @@ class SceneParser:
         change of motion noticed a few frames late. Seen whole, a run of them is one, which moves within
         +-break_shift frames to where the two stretches' motions explain the measurements best, and goes where one
         motion explains both stretches within break_penalty (square metres) of two.
+
+        -> the stretches' edges (frames, from 0 to n).
 
         `cut`: z holds the observed frames alone (the predictive questions' state). There, a plane's flight before
         its first impact follows its heading (`_heading_motion`): over half a second the head's distance is too
