@@ -936,6 +936,32 @@ def test_a_floating_plane_flying_away_with_its_engine_on_reads_accelerating_seen
     assert compute_labels(est, cfg["labels"]).accelerating[start, 0]
 
 
+def test_a_ground_vehicles_engine_is_decided_under_the_generators_prior():
+    """Over a short first stretch a slow car's engine (+2.2 m/s^2 net) and friction (-0.8) part by centimetres, the
+    depth noise of a detection: the decision is the generator's prior (`engine_prior`, its share of bodies with an
+    engine) against the likelihood. A higher prior never takes an engine away, and between a low and a high one
+    the decision moves."""
+    params = PhysicsParams.from_config(Config.load())
+    reads = {}
+    for engine in (False, True):
+        tr = simulate([Body("sedan", (-3.0, 1.0, ground_height("sedan")), yaw_quaternion(0.4),
+                            (3.0 * math.cos(0.4), 3.0 * math.sin(0.4), 0.0), engine_on=engine)], params, 24)
+        for seed in range(4):
+            dets = _detections(tr.position[:, 0], 0.4, "sedan", np.random.default_rng(seed), pixel_noise=1.5)
+            for prior in (0.2, 0.35, 0.5, 0.8):
+                cfg = Config.load()
+                cfg.data["parser"]["engine_prior"] = prior
+                est = SceneParser(ParserModel.load(), None, CAMERA, cfg).parse(
+                    np.zeros((24, 1, 1, 3), np.uint8), "syn", dets)
+                reads[engine, seed, prior] = bool(est.engine[10, 0])
+    for engine in (False, True):
+        for seed in range(4):
+            got = [reads[engine, seed, prior] for prior in (0.2, 0.35, 0.5, 0.8)]
+            assert got == sorted(got)
+    assert sum(reads[True, seed, 0.8] for seed in range(4)) > sum(reads[True, seed, 0.2] for seed in range(4)) \
+        or sum(reads[False, seed, 0.8] for seed in range(4)) > sum(reads[False, seed, 0.2] for seed in range(4))
+
+
 @pytest.mark.parametrize("drift", [0.0, 0.03])
 def test_a_falling_planes_engine_is_read_along_its_heading_through_the_distance_drift(drift):
     """While a plane falls the head's distance drifts with its drop, quadratic in time like an engine's motion: along
