@@ -998,9 +998,8 @@ class SceneParser:
         (`_heading_motion`): over half a second the head's distance is too noisy for a line of the plane's own, and
         over two seconds it drifts with the distance (the head reads near planes too far and far ones too near:
         full-new 000045's airliner, flying away from the camera with its engine on, fits "no engine" better along
-        its own line). Seen whole too
-        since parse-scene 43 (it was the cut's alone): velocity class 0.949 -> 0.954 and accelerating 0.945 -> 0.950
-        on full-val, 0.935 -> 0.936 and 0.936 -> 0.940 on full-test.
+        its own line). Seen whole too since parse-scene 43 (it was the cut's alone): velocity class 0.949 -> 0.954
+        and accelerating 0.945 -> 0.950 on full-val, 0.935 -> 0.936 and 0.936 -> 0.940 on full-test.
 
         `cut`: z holds the observed frames alone (the predictive questions' state)."""
         p, ph = self.p, self.physics
