@@ -168,18 +168,25 @@ def floating_vz(heights: np.ndarray, fps: int, min_samples: int) -> float | None
     return float(_robust_fit(t, heights[seen, None], min_samples, quadratic=False)[1, 0])
 
 
-def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, measure_yaw: float) -> np.ndarray:
+def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, measure_yaw: float,
+                       flip_weight: float = 1.0) -> np.ndarray:
     """The heading per frame from the head's readings `yaws` [n] (NaN: none), causal (frame t reads frames <= t).
 
     A body turns a few degrees a frame, even spun by an impact (the data's 90th percentile is 1.6 rad/s, under
     2 degrees a frame at 60 fps). So a reading within 45 degrees of the heading so far confirms it; one facing
     against it is the head's front/back flip, folded back; one further off either way is the head's confusion,
-    skipped. Flips and confusions count against the heading, confirmations for it (at most `support_cap`):
-    where those against outnumber them, the heading was the flip (it turns round) or the body turned where the
-    head lost it (the heading restarts at the reading). A filter that took each flip as a turn would be dragged by
-    its gain times 180 degrees, to either side."""
+    skipped. Flips (each `flip_weight`) and confusions (each 1) count against the heading, confirmations for it
+    (at most `support_cap`): where those against outnumber them, the heading was the flip (it turns round) or the
+    body turned where the head lost it (the heading restarts at the reading). A filter that took each flip as a
+    turn would be dragged by its gain times 180 degrees, to either side.
+
+    Why a flip weighs less than a confusion: a body that truly turns round passes through the angles between, which
+    the head reads as confusions, while a run of flips is the head reading a body backwards. That happens mostly
+    after an impact, when the body's motion no longer tells its front: full-test's long runs of reported headings
+    flipped against the truth had the head's readings flipped in nearly all their frames, and the confusions
+    during the impact had spent the support that the frames before it had built."""
     out = np.full(len(yaws), np.nan)
-    yaw, var, support = None, 0.0, 0
+    yaw, var, support = None, 0.0, 0.0
     for t, y in enumerate(yaws):
         var += yaw_sigma ** 2
         if not np.isnan(y):
@@ -187,7 +194,7 @@ def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, mea
             if off <= np.pi / 4:
                 support = min(support + 1, support_cap)
             else:
-                support -= 1
+                support -= flip_weight if off >= 0.75 * np.pi else 1.0
             if yaw is None or support < 0 and off < 0.75 * np.pi:
                 yaw, var, support, off = float(y), measure_yaw ** 2, 1, 0.0
             elif support < 0:

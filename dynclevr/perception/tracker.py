@@ -92,6 +92,9 @@ def parser_params(cfg: Config) -> dict:
     if not 0 <= p["heading_motion_sd"] <= 90:
         raise ConfigError(f"'parser.heading_motion_sd' = {p['heading_motion_sd']!r} must lie in [0, 90] (degrees; "
                           "0: along the head's heading exactly)")
+    if not 0 < p["heading_flip_weight"] <= 1:
+        raise ConfigError(f"'parser.heading_flip_weight' = {p['heading_flip_weight']!r} must lie in (0, 1] (what a "
+                          "reading facing against the heading counts against it; 1: as much as a confusion)")
     if not 0 < p["veto_score"] <= 1:
         raise ConfigError(f"'parser.veto_score' = {p['veto_score']!r} must lie in (0, 1] (1: no veto)")
     if p["fit_window"] > cfg["video"]["observed_frames"]:
@@ -774,7 +777,8 @@ class SceneParser:
             return np.array(k.quat)
         euler = np.array(k.pose)[:, 3:].copy()
         euler[:, 0] = dynamics.front_back_heading(np.array(k.yaws), self.p["heading_support"],
-                                                  self.p["yaw_sigma"], self.p["measure_yaw"])
+                                                  self.p["yaw_sigma"], self.p["measure_yaw"],
+                                                  self.p["heading_flip_weight"])
         return euler_to_quat(euler)
 
     def _scene(self, name: str, tracks: list[Track], T: int) -> Scene4D:
