@@ -779,7 +779,9 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("spin_window", 0, "must be positive"),
                                                  ("spin_window", 15.5, "non-negative integer"),
                                                  ("spin_significance", -1.0, "must be positive"),
-                                                 ("heading_motion_sd", -4.0, "must lie in")])
+                                                 ("heading_motion_sd", -4.0, "must lie in"),
+                                                 ("heading_flip_weight", 0.0, "must lie in"),
+                                                 ("heading_flip_weight", 1.5, "must lie in")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 
