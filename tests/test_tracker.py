@@ -626,6 +626,58 @@ def test_a_vehicle_lost_twice_is_one_object(stitch, objects):
     assert len(est.objects) == objects
 
 
+def _parked_track(tid: int, start: int, x: float, score: float, color: int = 1, meets: int = 0) -> Track:
+    """A confirmed track of a parked sedan (heading along x) from frame `start` to T - 1, detected in every frame
+    with `score`; 3 m to its side before frame `meets` (from then on at x)."""
+    k = Track(tid, start, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index("sedan")) * 20.0,
+              onehot(len(COLOR_NAMES), color) * 20.0, confirmed=start)
+    for f in range(start, T):
+        pose = np.array([x, 1.5 + (3.0 if f < meets else 0.0), resting_height("sedan"), 0.0, 0.0, 0.0])
+        k.pose.append(pose)
+        k.z.append(pose[:3].copy())
+        k.quat.append(np.array([0.0, 0.0, 0.0, 1.0]))
+        k.yaws.append(0.0)
+        for name in ("vel", "acc", "fvels"):
+            getattr(k, name).append(np.zeros(3))
+        k.engine.append(False)
+        k.floating.append(False)
+        k.seen.append(True)
+        k.scores.append(score)
+    return k
+
+
+@pytest.mark.parametrize("older_score, younger_score, younger_color, objects", [
+    (0.6, 0.9, 1, "joined"), (0.9, 0.6, 1, "younger gone"), (0.6, 0.9, 2, "two")])
+def test_two_tracks_on_one_vehicle_are_one_object(older_score, younger_score, younger_color, objects):
+    """Two alike tracks whose footprints overlap (0.8 m apart along a 3 m sedan) while both are detected are one
+    vehicle read twice (a second peak at the image's edge): the one whose detections score lower goes. The older
+    one, when it is the duplicate, keeps its frames before the younger began. Another colour: two vehicles."""
+    cfg = Config.load()
+    parser = SceneParser(ParserModel.load(), None, CAMERA, cfg)
+    older, younger = _parked_track(0, 0, 1.8, older_score), _parked_track(1, 40, 1.0, younger_score, younger_color)
+    parser._duplicates([older, younger])
+    if objects == "two":
+        assert older.confirmed is not None and younger.confirmed is not None
+        return
+    assert younger.confirmed is None and older.confirmed is not None and len(older.pose) == T
+    x = [pose[0] for pose in older.pose]
+    assert x[39] == pytest.approx(1.8) and x[60] == pytest.approx(1.0 if objects == "joined" else 1.8)
+
+
+def test_a_duplicate_met_after_the_cut_by_a_track_found_before_it_is_kept():
+    """The state at the cut reads no later frame: a younger track found by then whose footprint meets an alike
+    track's only after the cut stays an object (decided on the observed frames, where they are 3 m apart)."""
+    cfg = Config.load()
+    cut = cfg["video"]["observed_frames"] - 1
+    parser = SceneParser(ParserModel.load(), None, CAMERA, cfg)
+    older, younger = _parked_track(0, 0, 1.8, 0.9), _parked_track(1, cut - 10, 1.0, 0.6, meets=cut + 5)
+    parser._duplicates([older, younger])
+    assert younger.confirmed is not None
+    late = _parked_track(2, cut - 10, 1.0, 0.6)      # overlapping from its first frame: decided by the cut
+    parser._duplicates([older, late])
+    assert late.confirmed is None
+
+
 def test_a_track_joined_across_the_cut_keeps_the_cut_state_of_the_observed_frames():
     """A car lost before the cut and found again after it is one object, and the predictive questions' state at the
     last observed frame reads no later frame: it is the state a parse of the observed frames alone gives."""
@@ -773,6 +825,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("engine_prior", 1.0, "must lie in"),
                                                  ("veto_score", 0.0, "must lie in"),
                                                  ("veto_agreement", 1.5, "must lie in"),
+                                                 ("duplicate_overlap", 0.0, "must lie in \\(0, 1\\]"),
+                                                 ("duplicate_share", 1.5, "must lie in \\(0, 1\\]"),
                                                  ("coast_frames", -2, "non-negative integer"),
                                                  ("coast_agreement", 1.2, "must lie in"),
                                                  ("coast_window", 2, "must be at least"),

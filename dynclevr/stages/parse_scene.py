@@ -28,7 +28,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 44  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
+VERSION = 45  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
               # 7: robust smoothing; 8: smoothed velocities only where the filter converges; 9: segment motion;
               # 10: start speeds, the cut state from the segment motion of the observed frames; 11: slow to rest;
               # 12: cut_collisions, the collisions the observed frames decide (the predictive questions read them);
@@ -60,7 +60,8 @@ VERSION = 44  # 5: collisions from the learned classifier (weights/collision/); 
               # 41: reported positions through long contacts, an aeroplane's in the air its flight path
               # 42: ... but not in a stretch the path misses; 43: a plane's flight before its first impact along
               # its heading from a start speed seen whole too, not at the cut alone; 44: a reading facing against
-              # the heading counts half a confusion against it (parser.heading_flip_weight)
+              # the heading counts half a confusion against it (parser.heading_flip_weight); 45: two alike ground
+              # tracks whose footprints overlap while both are detected are one vehicle (parser.duplicate_*)
 
 
 @lru_cache(maxsize=1)
