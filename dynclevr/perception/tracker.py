@@ -687,17 +687,8 @@ class SceneParser:
         cut = self.observed - 1
         while True:     # one at a time: a joined track may duplicate a third
             live = [k for k in tracks if k.confirmed is not None and SUBTYPES[k.shape][0] != "aeroplane"]
-            found = None
-            for a in live:
-                for b in live:
-                    if b.start < a.start or (b.start == a.start and b.id <= a.id):
-                        continue
-                    verdict = self._duplicate(a, b, cut)
-                    if verdict is not None:
-                        found = (a, b, verdict)
-                        break
-                if found:
-                    break
+            pairs = ((a, b) for a in live for b in live if (b.start, b.id) > (a.start, a.id))
+            found = next(((a, b, v) for a, b in pairs if (v := self._duplicate(a, b, cut)) is not None), None)
             if found is None:
                 return
             a, b, older_is_duplicate = found
