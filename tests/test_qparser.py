@@ -19,7 +19,7 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import QuestionParser, program_shape, synonyms, well_formed
+from dynclevr.language.parse import QuestionParser, program_shape, synonyms, time_clause_last, well_formed
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -199,6 +199,20 @@ def test_a_shorter_second_mention_is_the_same_object():
     for text in ("When the school bus hits the red bus, is the school bus fast?",   # 'red' is new
                  "Does the red sedan hit the red suv before the red one stops?"):  # fits both
         assert corefer(*delexicalise(tokenize(text))) == delexicalise(tokenize(text)), text
+
+
+def test_a_clause_of_time_said_first_is_also_read_last():
+    """People front a clause of time; the grammar mostly says it last, where a pronoun in it follows its object. A
+    counterfactual's condition is not a time and stays where it is, and so does a question without the clause."""
+    assert time_clause_last(tokenize("When it hits the blue bus, is the red sedan parked?")) == tokenize(
+        "Is the red sedan parked when it hits the blue bus?")
+    assert time_clause_last(tokenize("At the moment of impact with the bus, how fast is the red car going")) == \
+        tokenize("how fast is the red car going at the moment of impact with the bus")
+    for text in ("In case the red sedan had stopped, would it hit the blue bus?",
+                 "In a world where the red sedan had been still, would it hit the blue bus?",
+                 "Is the red sedan parked when it hits the blue bus?", "Suppose it stops, is it slow?",
+                 "At the start,", "at the start"):
+        assert time_clause_last(tokenize(text)) is None, text
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):
@@ -399,6 +413,11 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
             f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame faster_velocity",
         "When the red sedan hits the blue bus, is it going slower than the bus?":
             f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame slower_velocity",
+        # a clause of time first, its pronoun before the object it stands for (read with the clause last)
+        "When it crashes into the blue bus, how fast is the red sedan going?":
+            f"{red} Events {red} filter_collision {blue} filter_collision unique get_frame query_moving_velocity",
+        "At the moment the red sedan hits it, is the blue bus standing still?":
+            f"{blue} Events {blue} filter_collision {red} filter_collision unique get_frame is_static",
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text

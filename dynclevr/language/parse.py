@@ -161,29 +161,32 @@ class QuestionParser:
         return [p.program for p in self.analyse_batch(texts)]
 
     def analyse_batch(self, texts: list[str]) -> list[Parse]:
-        out: list[Parse | None] = [None] * len(texts)
-        todo, read_as = [], {}
+        # Each question is read as said and, where it opens with a clause of time, with the clause put last
+        # (`time_clause_last`); the reading the decoder is surer of wins, the question as said on a tie.
+        readings: list[list[Parse]] = [[] for _ in texts]
+        todo = []
         for i, t in enumerate(texts):
-            words, why, read_as[i] = self._words(t)
+            words, why, read_as = self._words(t)
             if why:
-                out[i] = Parse(None, why)
-            else:
-                said, named = delexicalise(words)
-                words, refs = corefer(said, named) if self.corefer else (said, named)
-                read_as[i] += _second_mentions(said, named, words, refs)
-                why = self._objects(words, refs)
-                if why:
-                    out[i] = Parse(None, why)
-                else:
-                    todo.append((i, words, refs))
+                readings[i].append(Parse(None, why, read_as=read_as))
+                continue
+            for order in filter(None, (words, time_clause_last(words))):
+                said, named = delexicalise(order)
+                order, refs = corefer(said, named) if self.corefer else (said, named)
+                seen_as = read_as + _second_mentions(said, named, order, refs)
+                why = self._objects(order, refs)
+                readings[i].append(Parse(None, why, read_as=seen_as))
+                if not why:
+                    todo.append((i, len(readings[i]) - 1, order, refs))
         for start in range(0, len(todo), BATCH):
             chunk = todo[start:start + BATCH]
-            src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in words] for _, words, _ in chunk])
+            src, lens = pad_batch([[self.words.stoi.get(w, UNK_ID) for w in order] for _, _, order, _ in chunk])
             with torch.inference_mode(), one_thread():
                 decoded = self.model.greedy(src, lens, self.params.max_decode_len)
-            for (i, words, refs), (ids, p, attended) in zip(chunk, decoded):
-                out[i] = self._check(words, refs, ids, p, attended)
-        return [replace(p, read_as=read_as[i]) if read_as[i] else p for i, p in enumerate(out)]
+            for (i, k, order, refs), (ids, p, attended) in zip(chunk, decoded):
+                readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as)
+        # max keeps the first of equals: the question as said, whose reason stands when no reading parses
+        return [max(parses, key=lambda p: p.confidence if p.program is not None else -1.0) for parses in readings]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -271,6 +274,28 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+# Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
+TIME_OPENERS = {"at", "when", "during", "in", "as", "on", "upon", "while", "just", "right"}
+# ... unless it is a counterfactual's condition ('In case X had stopped, would it hit Y?'), whose 'it' must follow it
+CONDITION_WORDS = {"had", "were", "case", "world", "if", "suppose"}
+
+
+def time_clause_last(words: list[str]) -> list[str] | None:
+    """A question that opens with a clause of time, the clause put last: 'when it hits the bus , is the red car
+    parked ?' -> 'is the red car parked when it hits the bus ?' (None if it does not open so). People front the
+    clause; the grammar mostly says it last, and a pronoun in it ('when it hits') then follows its object. The
+    reading is a second candidate, never a replacement: 'In a world where X had stopped, would it hit Y?' keeps its
+    own reading wherever the decoder is surer of it; a condition is never moved."""
+    if not words or words[0] not in TIME_OPENERS or "," not in words:
+        return None
+    k = words.index(",")
+    clause, main = words[:k], words[k + 1:]
+    if not main or CONDITION_WORDS.intersection(clause):
+        return None
+    end = main[-1:] if main[-1] in ("?", ".", "!") else []
+    return main[:len(main) - len(end)] + clause + end
 
 
 def _second_mentions(said: list[str], named: list, words: list[str], refs: list) -> tuple[tuple[str, str], ...]:
