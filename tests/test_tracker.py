@@ -664,6 +664,26 @@ def test_two_tracks_on_one_vehicle_are_one_object(older_score, younger_score, yo
     assert x[39] == pytest.approx(1.8) and x[60] == pytest.approx(1.0 if objects == "joined" else 1.8)
 
 
+@pytest.mark.parametrize("gap, apart, near_frames, objects", [
+    (6, 0.5, 8, 1), (6, 0.5, 0, 2), (12, 0.5, 8, 2), (6, 1.5, 8, 2)],
+    ids=["misread-colour", "rule-off", "longer-gap", "further-off"])
+def test_a_short_gap_joins_a_track_whose_colour_was_misread(gap, apart, near_frames, objects):
+    """A parked sedan read blue for 40 frames, then lost, then found again as red `gap` frames later and `apart`
+    metres on: one vehicle when the gap is short and the place the same (only the colour disagrees), two
+    otherwise."""
+    cfg = Config.load()
+    cfg.data["parser"]["stitch_near_frames"] = near_frames
+    parser = SceneParser(ParserModel.load(), None, CAMERA, cfg)
+    older, younger = _parked_track(0, 0, 1.0, 0.9, color=2), _parked_track(1, 40 + gap, 1.0 + apart, 0.9, color=1)
+    for name in ("pose", "z", "quat", "yaws", "vel", "acc", "fvels", "engine", "floating", "seen", "scores"):
+        setattr(older, name, getattr(older, name)[:40])
+    parser._stitch([older, younger])
+    assert [older.confirmed is not None, younger.confirmed is not None] == ([True, False] if objects == 1 else
+                                                                          [True, True])
+    if objects == 1:
+        assert len(older.pose) == T and older.pose[-1][0] == pytest.approx(1.0 + apart)
+
+
 def test_a_duplicate_met_after_the_cut_by_a_track_found_before_it_is_kept():
     """The state at the cut reads no later frame: a younger track found by then whose footprint meets an alike
     track's only after the cut stays an object (decided on the observed frames, where they are 3 m apart)."""
@@ -814,6 +834,7 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
 
 @pytest.mark.parametrize("key, value, message", [("stitch_agreement", 1.5, "must lie in"),
                                                  ("stitch_frames", -1, "non-negative integer"),
+                                                 ("stitch_near_frames", 3.5, "non-negative integer"),
                                                  ("stitch_radius", 0.0, "must be positive"),
                                                  ("stitch_length_share", -0.5, "must be positive"),
                                                  ("reid_agreement", -0.1, "must lie in"),
