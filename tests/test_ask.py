@@ -69,6 +69,11 @@ def test_ask_says_which_words_it_read_as_others(data):
     assert out.stdout.startswith("program:  Events "), out.stdout + out.stderr
     evidence = [line for line in out.stdout.splitlines() if line.startswith("evidence: read ")]
     assert evidence == ["evidence: read 'ram' as 'hit'", "evidence: read 'footage' as 'video'"]
+    # ... and a question read with its clause of time put last says so
+    out = cli(data, "ask", "When it hits the blue bus, how fast is the red sedan going?", "--scene", "0", "--on",
+              "truth")
+    assert "evidence: read with its clause of time last: 'how fast is the red sedan going when it hits the blue bus ?'" \
+        in out.stdout.splitlines(), out.stdout + out.stderr
 
 
 @pytest.mark.parametrize("args,exit_code,says", [

@@ -421,6 +421,11 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text
+    # the parse says where it moved a clause, and only there
+    moved, said = parser.analyse_batch(["When it crashes into the blue bus, how fast is the red sedan going?",
+                                        "Did the red sedan crash into the blue bus?"])
+    assert moved.reordered == "how fast is the red sedan going when it crashes into the blue bus ?"
+    assert said.reordered == ""
     # `ask` shows the second mention's reading among its evidence, and only a merged mention
     said = parser.analyse_batch(["When the red sedan hits the blue bus, is it going slower than the bus?",
                                  "Does the red sedan hit the bus before the sedan stops, and the school bus?"])

@@ -138,6 +138,8 @@ def _answer(parser, text: str, scene, labels_cfg: dict) -> dict:
 
     p = parser.analyse_batch([text])[0]
     read = [f"read '{w}' as '{k}'" for w, k in p.read_as]
+    if p.reordered:
+        read.append(f"read with its clause of time last: '{p.reordered}'")
     if p.program is None:
         return {"program": "", "answer": "", "status": "unparsed", "reason": p.reason, "evidence": read}
     trace: list = []

@@ -87,12 +87,14 @@ def program_shape(tokens: list[str]) -> str:
 
 @dataclass(frozen=True)
 class Parse:
-    """A question's program (None: unparsed), why it is unparsed, the decoding's probability, and the words it
-    read as others (the synonym lexicon's and the stems': ('rammed', 'hit'))."""
+    """A question's program (None: unparsed), why it is unparsed, the decoding's probability, the words it read as
+    others (the synonym lexicon's and the stems': ('rammed', 'hit')), and the sentence it read where it moved a
+    clause."""
     program: list[str] | None
     reason: str = ""
     confidence: float = 0.0
     read_as: tuple[tuple[str, str], ...] = ()
+    reordered: str = ""      # the words as read, where a clause of time was put last (`time_clause_last`)
 
 
 class QuestionParser:
@@ -172,10 +174,11 @@ class QuestionParser:
                 continue
             for order in filter(None, (words, time_clause_last(words))):
                 said, named = delexicalise(order)
+                moved = " ".join(order) if order is not words else ""
                 order, refs = corefer(said, named) if self.corefer else (said, named)
                 seen_as = read_as + _second_mentions(said, named, order, refs)
                 why = self._objects(order, refs)
-                readings[i].append(Parse(None, why, read_as=seen_as))
+                readings[i].append(Parse(None, why, read_as=seen_as, reordered=moved))
                 if not why:
                     todo.append((i, len(readings[i]) - 1, order, refs))
         for start in range(0, len(todo), BATCH):
@@ -184,7 +187,8 @@ class QuestionParser:
             with torch.inference_mode(), one_thread():
                 decoded = self.model.greedy(src, lens, self.params.max_decode_len)
             for (i, k, order, refs), (ids, p, attended) in zip(chunk, decoded):
-                readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as)
+                readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
+                                         reordered=readings[i][k].reordered)
         # max keeps the first of equals: the question as said, whose reason stands when no reading parses
         return [max(parses, key=lambda p: p.confidence if p.program is not None else -1.0) for parses in readings]
 
