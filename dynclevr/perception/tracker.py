@@ -76,8 +76,8 @@ def parser_params(cfg: Config) -> dict:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must lie in (0, 1)")
     for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
                       ("coast_frames", "; 0: a coasting track pairs as any other"), ("coast_window", ""),
-                      ("stitch_overlap", ""), ("stitch_near_frames", "; 0: appearance decides every stitch"), ("weak_track_frames", "; 0: no track starts under the start bar"),
-                      ("weak_track_window", ""), ("spin_window", ""), ("spin_min_frames", "")):
+                      ("stitch_overlap", ""), ("stitch_near_frames", "; 0: appearance decides every stitch"),
+                      ("weak_track_frames", "; 0: no track starts under the start bar"), ("weak_track_window", ""), ("spin_window", ""), ("spin_min_frames", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
     for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion",
@@ -744,10 +744,9 @@ class SceneParser:
         stitch_near_frames and stitch_radius one category is enough: over a short stretch the head misreads a
         vehicle's colour (full-test 000051: a gray mountain bike read blue for its first 14 frames, then found again
         0.85 m on, 6 frames later, as gray), and a vehicle of that kind appearing just there as another vanishes is
-        much the rarer event. Causal at the cut: the
-        predictive questions' state at the last observed frame reads no later frame, so a track found by then joins
-        on the observed frames alone, and a join across the cut keeps the older's estimate up to it (which it
-        still coasts on there)."""
+        much the rarer event. Causal at the cut: the predictive questions' state at the last observed frame reads no
+        later frame, so a track found by then joins on the observed frames alone, and a join across the cut keeps
+        the older's estimate up to it (which it still coasts on there)."""
         if not self.p["stitch"]:
             return
         while True:     # one join at a time: the joined track may join the next fragment of the same vehicle
