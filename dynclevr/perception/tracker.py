@@ -77,7 +77,8 @@ def parser_params(cfg: Config) -> dict:
     for key, hint in (("smooth_window", "; 0: the causal filter's velocities"), ("stitch_frames", ""),
                       ("coast_frames", "; 0: a coasting track pairs as any other"), ("coast_window", ""),
                       ("stitch_overlap", ""), ("stitch_near_frames", "; 0: appearance decides every stitch"),
-                      ("weak_track_frames", "; 0: no track starts under the start bar"), ("weak_track_window", ""), ("spin_window", ""), ("spin_min_frames", "")):
+                      ("weak_track_frames", "; 0: no track starts under the start bar"), ("weak_track_window", ""),
+                      ("spin_window", ""), ("spin_min_frames", "")):
         if not isinstance(p[key], int) or isinstance(p[key], bool) or p[key] < 0:
             raise ConfigError(f"'parser.{key}' = {p[key]!r} must be a non-negative integer (frames{hint})")
     for key in ("detector_flip", "physics_prior", "refine", "monotone_speed", "smooth_positions", "segment_motion",
