@@ -6,8 +6,8 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green'; a word of the synonym
   lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video'; failing
   that, a word with the stem of a known word or of a lexicon word counts as that word: 'hovered' as 'hovering'; and
-  last, a word of WordNet's lexicon, WORDNET_FILE, as the known word it shares a main sense with: 'proceeding' as
-  'going');
+  last, a word of WordNet's lexicon, WORDNET_FILE, as the known word it shares a main sense with: 'journeying' as
+  'travelling');
 - a word it does not know carries the question: some step of the decoding attends to it more than
   `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
   the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
@@ -220,7 +220,7 @@ class QuestionParser:
     def _stand_in(self, word: str) -> list[str]:
         """Known words for an unknown one: its synonym, else the known (or lexicon) word of its stem with the same
         ending ('hovered' -> 'hovering' when no 'hovered' is known, 'zooms' -> 'zooming'), else WordNet's word for
-        it, said with its ending ('proceeding' -> 'going'), else itself."""
+        it, said with its ending ('journeying' -> 'travelling'), else itself."""
         if word in self.synonyms:
             return self.synonyms[word]
         stem = STEMMER.stemWord(word)
