@@ -626,13 +626,14 @@ def test_a_vehicle_lost_twice_is_one_object(stitch, objects):
     assert len(est.objects) == objects
 
 
-def _parked_track(tid: int, start: int, x: float, score: float, color: int = 1, meets: int = 0) -> Track:
-    """A confirmed track of a parked sedan (heading along x) from frame `start` to T - 1, detected in every frame
+def _parked_track(tid: int, start: int, x: float, score: float, color: int = 1, meets: int = 0,
+                  shape: str = "sedan") -> Track:
+    """A confirmed track of a parked `shape` (heading along x) from frame `start` to T - 1, detected in every frame
     with `score`; 3 m to its side before frame `meets` (from then on at x)."""
-    k = Track(tid, start, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index("sedan")) * 20.0,
+    k = Track(tid, start, onehot(len(SUBTYPE_NAMES), SUBTYPE_NAMES.index(shape)) * 20.0,
               onehot(len(COLOR_NAMES), color) * 20.0, confirmed=start)
     for f in range(start, T):
-        pose = np.array([x, 1.5 + (3.0 if f < meets else 0.0), resting_height("sedan"), 0.0, 0.0, 0.0])
+        pose = np.array([x, 1.5 + (3.0 if f < meets else 0.0), resting_height(shape), 0.0, 0.0, 0.0])
         k.pose.append(pose)
         k.z.append(pose[:3].copy())
         k.quat.append(np.array([0.0, 0.0, 0.0, 1.0]))
@@ -682,6 +683,23 @@ def test_a_short_gap_joins_a_track_whose_colour_was_misread(gap, apart, near_fra
                                                                           [True, True])
     if objects == 1:
         assert len(older.pose) == T and older.pose[-1][0] == pytest.approx(1.0 + apart)
+
+
+@pytest.mark.parametrize("older_shape, older_color, gap, objects", [
+    ("mountain_bike", 2, 6, 1), ("sedan", 2, 6, 2), ("utility_bike", 1, 45, 1), ("utility_bike", 2, 45, 2)],
+    ids=["near-misread", "near-car", "later-same-colour", "later-other-colour"])
+def test_two_wheelers_read_as_either_kind_are_one_vehicle(older_shape, older_color, gap, objects):
+    """A parked scooter read as another two-wheeler for 40 frames, then found again as a scooter `gap` frames later
+    and 0.5 m on, is one vehicle: a bicycle and a motorbike are one kind to a stitch (tracker.KINDS). Soon after,
+    the colour may be misread too; after a longer gap the colour must agree. A sedan there before it is another
+    vehicle."""
+    parser = SceneParser(ParserModel.load(), None, CAMERA, Config.load())
+    older = _parked_track(0, 0, 1.0, 0.9, color=older_color, shape=older_shape)
+    younger = _parked_track(1, 40 + gap, 1.5, 0.9, color=1, shape="scooter")
+    for name in ("pose", "z", "quat", "yaws", "vel", "acc", "fvels", "engine", "floating", "seen", "scores"):
+        setattr(older, name, getattr(older, name)[:40])
+    parser._stitch([older, younger])
+    assert (younger.confirmed is None) == (objects == 1) and older.confirmed is not None
 
 
 def test_a_duplicate_met_after_the_cut_by_a_track_found_before_it_is_kept():
