@@ -755,11 +755,11 @@ class SceneParser:
         has their kind (KINDS: a bicycle and a motorbike are one) and colour, kind and colour agreement as above (a
         few frames of a vehicle half in view read another sub-type of its kind: on full-test this joins 3 of 12
         duplicate estimates). Within stitch_near_frames and stitch_radius one kind is enough: over a short stretch
-        the head misreads a vehicle's colour (full-test 000051: a gray mountain bike read blue for its first 14 frames, then found again
-        0.85 m on, 6 frames later, as gray), and a vehicle of that kind appearing just there as another vanishes is
-        much the rarer event. Causal at the cut: the predictive questions' state at the last observed frame reads no
-        later frame, so a track found by then joins on the observed frames alone, and a join across the cut keeps
-        the older's estimate up to it (which it still coasts on there)."""
+        the head misreads a vehicle's colour (full-test 000051: a gray mountain bike read blue for its first 14
+        frames, then found again 0.85 m on, 6 frames later, as gray), and a vehicle of that kind appearing just
+        there as another vanishes is much the rarer event. Causal at the cut: the predictive questions' state at
+        the last observed frame reads no later frame, so a track found by then joins on the observed frames alone,
+        and a join across the cut keeps the older's estimate up to it (which it still coasts on there)."""
         if not self.p["stitch"]:
             return
         while True:     # one join at a time: the joined track may join the next fragment of the same vehicle
@@ -775,8 +775,7 @@ class SceneParser:
         pairs = []
         # each track's kind and colour (their likeliest): after a long gap, a vehicle of a kind and colour that no
         # third track has is the same one, whatever sub-type its few frames read
-        kinds = {k.id: (int(np.argmax(KIND_OF @ _appearance(k.subtype_logp, k.color_logp)[0])),
-                        int(np.argmax(k.color_logp))) for k in live}
+        kinds = {k.id: (int(np.argmax(_kind(k)[0])), int(np.argmax(k.color_logp))) for k in live}
         for a in live:
             pa, ca = _appearance(a.subtype_logp, a.color_logp)
             for b in live:
