@@ -806,6 +806,27 @@ def test_a_coasting_track_pairs_only_with_a_detection_that_looks_like_its_vehicl
     assert (parser._associate([track], np.array([[*at, 0, 0, 0]]), [det]).get(0) == 0) == takes_it
 
 
+@pytest.mark.parametrize("det_dist, depth_gate, takes_it", [(8.6, 0.35, False), (8.6, 0.0, True), (13.5, 0.35, True)],
+                         ids=["nearer-plane-refused", "no-gate", "own-distance-noise"])
+def test_a_vehicle_passing_in_front_does_not_take_the_track_of_the_one_it_covers(det_dist, depth_gate, takes_it):
+    """Full-test 000078: a cyan fighter 14.3 m from the camera is covered by a nearer plane whose peak, which the
+    head places 7.8-8.8 m off, falls within the fighter track's pixel gate while the fighter's own peak fades. The
+    pixels cannot tell the two apart; the head's distance can: a detection more than a factor exp(depth_gate) off
+    the track's distance is not its vehicle, while the head's noise on the fighter (a few per cent) still pairs."""
+    cfg = Config.load()
+    cfg.data["parser"]["depth_gate"] = depth_gate
+    parser = SceneParser(ParserModel.load(), None, CAMERA, cfg)
+    eye = np.asarray(CAMERA.position, float)
+    ray = np.array([0.0, 0.0, resting_height("fighter")]) - eye
+    at = eye + 14.0 * ray / np.linalg.norm(ray)
+    fighter, cyan = SUBTYPE_NAMES.index("fighter"), COLOR_NAMES.index("cyan")
+    track = Track(0, 0, 10 * onehot(len(SUBTYPE_NAMES), fighter), 10 * onehot(len(COLOR_NAMES), cyan), seen=[True] * 20)
+    (u, v), _ = CAMERA.project(at)
+    det = Detection(float(u) + 2.0, float(v), 0.9, onehot(len(SUBTYPE_NAMES), fighter), onehot(len(COLOR_NAMES), cyan),
+                    0.0, det_dist, 1.0)
+    assert (parser._associate([track], np.array([[*at, 0, 0, 0]]), [det]).get(0) == 0) == takes_it
+
+
 @pytest.mark.parametrize("older_seen, younger_seen, ended", [(False, True, "older"), (True, False, "younger"),
                                                             (True, True, "younger")])
 def test_of_two_converged_tracks_the_one_without_a_detection_ends(older_seen, younger_seen, ended):
@@ -874,7 +895,8 @@ def test_detections_under_the_start_bar_start_a_track_where_they_persist(score, 
                                                  ("spin_significance", -1.0, "must be positive"),
                                                  ("heading_motion_sd", -4.0, "must lie in"),
                                                  ("heading_flip_weight", 0.0, "must lie in"),
-                                                 ("heading_flip_weight", 1.5, "must lie in")])
+                                                 ("heading_flip_weight", 1.5, "must lie in"),
+                                                 ("depth_gate", -0.1, "non-negative number")])
 def test_a_bad_tracking_value_is_one_clear_line(key, value, message):
     from dynclevr.config import ConfigError
 
