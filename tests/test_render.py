@@ -79,6 +79,52 @@ def test_centre_projects_into_own_mask_and_depth_matches(rendered, spread_scene)
             assert xs.max() - xs.min() > 0.6 * np.ptp(uv[:, 0])
 
 
+def _coverage_centroid(coverage: np.ndarray) -> np.ndarray:
+    """(u, v) of an image's coverage-weighted centre, pixel centres at half-integers as the calibration has them."""
+    v, u = np.mgrid[0:coverage.shape[0], 0:coverage.shape[1]] + 0.5
+    return np.array([(coverage * u).sum(), (coverage * v).sum()]) / coverage.sum()
+
+
+@pytest.mark.parametrize("supersample", [1, 2])
+def test_vehicles_are_drawn_where_the_calibration_projects_them(supersample):
+    """A sphere rasterised through the fast backend's view and projection (at its supersampling, area-averaged as
+    the backend averages) is centred where the recorded calibration projects its centre, to a tenth of a pixel
+    (TinyRenderer samples pixel corners: without the half-pixel terms of gl_projection it lands 0.5 px off)."""
+    from dynclevr.physics import p
+    from dynclevr.render.tiny import gl_projection, gl_view
+
+    cam = Camera((0.0, -10.0, 3.0), (0.0, 0.0, 0.5), 35.0, 36.0, 160, 120)
+    hi = cam.with_resolution(cam.width * supersample, cam.height * supersample)
+    client = p.connect(p.DIRECT)
+    try:
+        for centre in ((0.0, 0.0, 0.5), (2.0, 1.0, 0.5), (-3.0, 2.0, 1.0)):
+            body = p.createMultiBody(0, -1, p.createVisualShape(p.GEOM_SPHERE, radius=0.4, physicsClientId=client),
+                                     basePosition=centre, physicsClientId=client)
+            seg = p.getCameraImage(hi.width, hi.height, gl_view(hi), gl_projection(hi),
+                                   renderer=p.ER_TINY_RENDERER, physicsClientId=client)[4]
+            inside = (np.asarray(seg).reshape(hi.height, hi.width) == body).astype(float)
+            coverage = inside.reshape(cam.height, supersample, cam.width, supersample).mean((1, 3))
+            uv, _ = cam.project(np.array(centre))
+            assert np.abs(_coverage_centroid(coverage) - uv).max() < 0.1, (centre, _coverage_centroid(coverage), uv)
+            p.removeBody(body, physicsClientId=client)
+    finally:
+        p.disconnect(client)
+
+
+def test_shadows_are_drawn_where_the_calibration_projects_them(spread_scene):
+    """A square on the ground, drawn as the fast backend draws shadows (cv2, pixel centres at integers), is centred
+    where the calibration projects its centre, to a tenth of a pixel."""
+    from dynclevr.render.tiny import TinyRenderer
+
+    cam = spread_scene.camera
+    with TinyRenderer(spread_scene, cam, environments.environment(0), [0, 0, 0]) as r:
+        img = np.zeros((cam.height, cam.width), np.uint8)
+        square = np.array([[sx, sy, 0.0] for sx, sy in ((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))])
+        r._fill(img, square, 16)
+    uv, _ = cam.project(np.zeros(3))
+    assert np.abs(_coverage_centroid(img.astype(float)) - uv).max() < 0.1
+
+
 def test_mask_depth_agrees_with_camera_distance(rendered, spread_scene):
     """Every mask pixel, lifted to 3D with its depth through the recorded calibration, lies on its own object: inside
     its bounding box (in the object's frame), and within the box's reach of the centre's camera distance."""

@@ -30,9 +30,13 @@ MAX_GROUND_M = 5000.0   # rays closer than this to the horizon count as sky-colo
 
 
 def gl_projection(camera: Camera) -> list[float]:
-    """OpenGL projection matching the pinhole K exactly (principal point at the image centre), column-major."""
+    """OpenGL projection matching the pinhole K exactly (principal point at the image centre), column-major.
+
+    TinyRenderer samples pixel (i, j) at the point (i, j) of its viewport, where K's pixel centres lie at (i + 0.5,
+    j + 0.5): without the half-pixel terms below, vehicles and masks land 0.5 px right of and above where the
+    recorded calibration projects them (tests/test_render.py measures it)."""
     W, H, f = camera.width, camera.height, camera.fx
-    P = np.array([[2 * f / W, 0, 0, 0], [0, 2 * f / H, 0, 0],
+    P = np.array([[2 * f / W, 0, 1 / W, 0], [0, 2 * f / H, 1 / H, 0],
                   [0, 0, -(FAR + NEAR) / (FAR - NEAR), -2 * FAR * NEAR / (FAR - NEAR)], [0, 0, -1, 0]])
     return P.ravel(order="F").tolist()
 
@@ -211,7 +215,8 @@ class TinyRenderer:
         q = ground_pts @ self._P[:, :3].T + self._P[:, 3]
         if (q[:, 2] <= NEAR).any():
             return
-        hull = cv2.convexHull((q[:, :2] / q[:, 2:] * scale).astype(np.int32))
+        # cv2 puts pixel centres at integers, K at half-integers
+        hull = cv2.convexHull(np.round((q[:, :2] / q[:, 2:] - 0.5) * scale).astype(np.int32))
         cv2.fillConvexPoly(img, hull, value, lineType=cv2.LINE_AA, shift=4)
 
     def _raster(self, t: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

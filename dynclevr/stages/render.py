@@ -23,7 +23,7 @@ from dynclevr.render.environments import choose, environment
 from dynclevr.scene import Scene4D
 from dynclevr.video import VideoWriter
 
-VERSION = 1
+VERSION = 2  # 2: vehicles, masks and shadows where the calibration projects them (half a pixel)
 # The render draws use their own stream of the scene seed, so they are independent of simulate's draws.
 STREAM = 0x52454E44
 
