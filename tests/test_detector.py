@@ -1,5 +1,6 @@
 """The detection head's targets and decoding, and 3D placement from the camera geometry."""
 
+import json
 import math
 
 import numpy as np
@@ -112,6 +113,18 @@ def test_targets_decode_back_to_the_labels():
         assert int(np.argmax(d.color_logp)) == int(row[COL["color"]])
         assert abs(d.alpha - row[COL["alpha"]]) < 1e-5
         assert abs(math.log(d.dist) - row[COL["logdist"]]) < 1e-5 and abs(d.height - row[COL["height"]]) < 1e-5
+
+
+def test_a_heads_pixel_offset_moves_every_decoded_centre():
+    """A head trained on frames whose vehicles lay off their labels carries the offset in its manifest, and the
+    decoded centres move by it (nothing else does)."""
+    lab = _labels([dict(u=101.3, v=77.9, pixels=900, subtype=5, color=2, alpha=1.0, logdist=math.log(9.0),
+                        height=0.6, radius=30)])
+    h, w = 240 // STRIDE, 320 // STRIDE
+    maps = _maps(targets(lab, h, w), h, w)
+    (plain,), (moved,) = decode(maps, 0.5), decode(maps, 0.5, offset=(0.25, -0.44))
+    assert moved.u == pytest.approx(plain.u + 0.25) and moved.v == pytest.approx(plain.v - 0.44)
+    assert (moved.score, moved.alpha, moved.dist, moved.height) == (plain.score, plain.alpha, plain.dist, plain.height)
 
 
 def _maps(tg: dict, h: int, w: int) -> torch.Tensor:
@@ -311,6 +324,16 @@ def test_a_run_reads_its_shards_from_the_first_one_and_holds_out_the_last():
         shards(cfg)
 
 
+def test_a_shard_drawn_by_another_render_version_is_drawn_again(tmp_path):
+    """Render version 1 drew vehicles half a pixel off their labels: its shards are not reused."""
+    from dynclevr.perception.detector_data import _made_by
+
+    old, new = tmp_path / "old.npz", tmp_path / "new.npz"
+    np.savez(old, jpeg=np.zeros(1, np.uint8))
+    np.savez(new, jpeg=np.zeros(1, np.uint8), render_version=2)
+    assert not _made_by(old, 2) and _made_by(old, 1) and _made_by(new, 2) and not _made_by(tmp_path / "no.npz", 2)
+
+
 def test_every_nth_shard_is_path_traced_and_kept_apart():
     from dynclevr.config import Config, ConfigError
     from dynclevr.perception.detector_data import shard_backend, shard_path
@@ -386,9 +409,15 @@ def test_a_tiny_training_run_records_how_often_it_drew_each_frame_and_resumes(tm
     again = train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=4, echo=said.append)
     assert [(r["from_step"], r["to_step"], r["draws_per_frame"]) for r in again["runs"]] == [(0, 3, 3.0), (3, 4, 1.0)]
     assert load_detector(tmp_path / "out").width == 8
+    # a manifest's pixel offset is read with the weights, and training on (frames on their labels) drops it
+    manifest = json.loads((tmp_path / "out" / "manifest.json").read_text())
+    (tmp_path / "out" / "manifest.json").write_text(json.dumps({**manifest, "pixel_offset": [0.0, -0.44]}))
+    assert load_detector(tmp_path / "out").pixel_offset == (0.0, -0.44)
+    train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=5, echo=said.append)
+    assert load_detector(tmp_path / "out").pixel_offset == (0.0, 0.0)
     # a head kept without its optimiser (checkpoints/) is grown from, not resumed: one clear line
     s = torch.load(tmp_path / "out" / "detector.pt", weights_only=True)
     del s["opt"]
     torch.save(s, tmp_path / "out" / "detector.pt")
     with pytest.raises(DetectorWeightsError, match="holds no optimiser state to resume: .*--grow-from"):
-        train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=5, echo=said.append)
+        train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=6, echo=said.append)

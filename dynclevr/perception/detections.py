@@ -29,7 +29,7 @@ _SCALARS = ("u", "v", "score", "alpha", "dist", "height")
 def detect(net, frames: np.ndarray, parser: dict) -> list[list[Detection]]:
     """Per frame, the head's detections as `parser` (the [parser] section) decodes them."""
     maps = run(net, frames, flip=parser["detector_flip"])
-    return [decode(m, parser["detect_threshold"], parser["max_detections"]) for m in maps]
+    return [decode(m, parser["detect_threshold"], parser["max_detections"], offset=net.pixel_offset) for m in maps]
 
 
 def cache_path(store: Store, scene: str) -> Path:

@@ -63,6 +63,9 @@ class DetectNet(nn.Module):
         super().__init__()
         w = width
         self.width, self.blocks, self.fine_blocks = width, blocks, fine_blocks
+        # pixels added to every decoded centre (the manifest's `pixel_offset`): a head trained on frames whose
+        # vehicles lay off their labels reads them off by as much (detector_train.load_detector)
+        self.pixel_offset = (0.0, 0.0)
         self.s2 = _conv(3, w // 2, 2, k=5)                                        # 160x120
         self.s4 = nn.Sequential(_conv(w // 2, w, 2), _conv(w, w))                # 80x60
         self.s8 = nn.Sequential(_conv(w, 2 * w, 2), _conv(2 * w, 2 * w),         # 40x30
@@ -195,8 +198,10 @@ class Detection:
     height: float            # centre z, metres
 
 
-def decode(maps: torch.Tensor, threshold: float, limit: int = 20, window: int = 5) -> list[Detection]:
-    """One frame's maps [OUT, h, w] -> detections at the heatmap's local maxima above `threshold`."""
+def decode(maps: torch.Tensor, threshold: float, limit: int = 20, window: int = 5,
+           offset: tuple[float, float] = (0.0, 0.0)) -> list[Detection]:
+    """One frame's maps [OUT, h, w] -> detections at the heatmap's local maxima above `threshold`, their centres
+    moved by `offset` pixels (DetectNet.pixel_offset)."""
     prob = torch.sigmoid(maps[0])
     is_max = prob == F.max_pool2d(prob[None, None], window, 1, window // 2)[0, 0]
     rows, cols = torch.nonzero(is_max & (prob > threshold), as_tuple=True)
@@ -208,7 +213,8 @@ def decode(maps: torch.Tensor, threshold: float, limit: int = 20, window: int = 
         r, c = int(rows[k]), int(cols[k])
         off = maps[CHANNELS["offset"], r, c]
         sa, ca = maps[CHANNELS["alpha"], r, c].tolist()
-        out.append(Detection(u=(c + 0.5 + float(off[0])) * STRIDE, v=(r + 0.5 + float(off[1])) * STRIDE,
+        out.append(Detection(u=(c + 0.5 + float(off[0])) * STRIDE + offset[0],
+                             v=(r + 0.5 + float(off[1])) * STRIDE + offset[1],
                              score=float(prob[r, c]), subtype_logp=sub[:, r, c].numpy().copy(),
                              color_logp=col[:, r, c].numpy().copy(), alpha=float(np.arctan2(sa, ca)),
                              dist=math.exp(float(maps[CHANNELS["logdist"], r, c])),

@@ -18,7 +18,7 @@ come from the truth and the exact instance mask:
 | radius | the object's projected half size, pixels (the heatmap's spread) |
 
 Shards (`<data>/<split>/detector/shard_NNNN.npz`) hold `scenes` of them; a shard is written atomically and reused
-when it exists, so generation resumes where it stopped. With `parser.detector_realistic_every` = K, every K-th shard
+when it exists from the render stage's version, so generation resumes where it stopped. With `parser.detector_realistic_every` = K, every K-th shard
 (index K-1 mod K) is path-traced by the realistic backend instead (`detector-mitsuba/shard_NNNN.npz`), so that the
 head learns what a vehicle looks like under sky light and soft shadows, not only TinyRenderer's shading.
 """
@@ -122,9 +122,11 @@ def shard_path(data_dir: Path, split: Split, shard: int, backend: str = "tiny") 
 
 def make_shard(cfg: Config, split: Split, data_dir: Path, shard: int, scenes_per_shard: int,
                frames_per_video: int) -> Path:
+    from dynclevr.stages.render import VERSION
+
     backend = shard_backend(cfg, shard)
     out = shard_path(data_dir, split, shard, backend)
-    if out.exists():
+    if _made_by(out, VERSION):
         return out
     jpegs, labels = [], []
     for i in range(shard * scenes_per_shard, min((shard + 1) * scenes_per_shard, split.scenes)):
@@ -137,9 +139,17 @@ def make_shard(cfg: Config, split: Split, data_dir: Path, shard: int, scenes_per
     out.parent.mkdir(parents=True, exist_ok=True)
     with atomic_path(out) as tmp:
         with open(tmp, "wb") as f:
-            np.savez(f, jpeg=np.frombuffer(b"".join(jpegs), np.uint8), offsets=offsets,
+            np.savez(f, jpeg=np.frombuffer(b"".join(jpegs), np.uint8), offsets=offsets, render_version=VERSION,
                      labels=np.array(labels, np.float32).reshape(-1, len(LABEL_COLUMNS)))
     return out
+
+
+def _made_by(path: Path, render_version: int) -> bool:
+    """A shard already there from this render stage's version (version 1 drew vehicles half a pixel off)."""
+    if not path.exists():
+        return False
+    with np.load(path) as z:
+        return int(z["render_version"]) == render_version if "render_version" in z.files else render_version == 1
 
 
 def load_shard(path: Path) -> tuple[np.ndarray, np.ndarray]:

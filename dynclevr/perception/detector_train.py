@@ -62,6 +62,7 @@ def load_detector(weights_dir: Path = DEFAULT_DIR) -> DetectNet:
     s = torch.load(path, weights_only=True, map_location="cpu")
     net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
     net.load_state_dict(s["net"])
+    net.pixel_offset = tuple(float(x) for x in m.get("pixel_offset", (0.0, 0.0)))
     net.eval()
     return net
 
@@ -420,6 +421,10 @@ def train_detector(cfg: Config, data_dir: Path, out_dir: Path = DEFAULT_DIR, wor
         net.load_state_dict(s["net"])
         opt_state, step, schedule_start = s["opt"], s["step"], s.get("schedule_start", 0)
         manifest = json.loads((Path(out_dir) / MANIFEST).read_text())
+        # the manifest's pixel_offset is for frames of render version 1 (load_detector); training on, the frames
+        # have their vehicles on their labels
+        for key in ("pixel_offset", "pixel_offset_why"):
+            manifest.pop(key, None)
         echo(f"train detector: resuming at step {step}")
     elif grow_from is not None:
         net, step = _grown(grow_from, p["detector_width"], blocks, fine_blocks)
