@@ -413,6 +413,10 @@ def test_a_tiny_training_run_records_how_often_it_drew_each_frame_and_resumes(tm
     manifest = json.loads((tmp_path / "out" / "manifest.json").read_text())
     (tmp_path / "out" / "manifest.json").write_text(json.dumps({**manifest, "pixel_offset": [0.0, -0.44]}))
     assert load_detector(tmp_path / "out").pixel_offset == (0.0, -0.44)
+    (tmp_path / "out" / "manifest.json").write_text(json.dumps({**manifest, "pixel_offset": "up"}))
+    with pytest.raises(DetectorWeightsError, match="'pixel_offset' = 'up' must be two numbers"):
+        load_detector(tmp_path / "out")
+    (tmp_path / "out" / "manifest.json").write_text(json.dumps({**manifest, "pixel_offset": [0.0, -0.44]}))
     train_detector(cfg, tmp_path / "data", tmp_path / "out", resume=True, steps=5, echo=said.append)
     assert load_detector(tmp_path / "out").pixel_offset == (0.0, 0.0)
     # a head kept without its optimiser (checkpoints/) is grown from, not resumed: one clear line

@@ -62,7 +62,12 @@ def load_detector(weights_dir: Path = DEFAULT_DIR) -> DetectNet:
     s = torch.load(path, weights_only=True, map_location="cpu")
     net = DetectNet(s["width"], s.get("blocks", 0), s.get("fine_blocks", 0))
     net.load_state_dict(s["net"])
-    net.pixel_offset = tuple(float(x) for x in m.get("pixel_offset", (0.0, 0.0)))
+    offset = m.get("pixel_offset", (0.0, 0.0))
+    if not (isinstance(offset, (list, tuple)) and len(offset) == 2
+            and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in offset)):
+        raise DetectorWeightsError(f"{manifest}: 'pixel_offset' = {offset!r} must be two numbers (pixels across and "
+                                   "down added to every centre; [0, 0] for a head trained on render version 2)")
+    net.pixel_offset = (float(offset[0]), float(offset[1]))
     net.eval()
     return net
 
