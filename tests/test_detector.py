@@ -332,6 +332,8 @@ def test_a_shard_drawn_by_another_render_version_is_drawn_again(tmp_path):
     np.savez(old, jpeg=np.zeros(1, np.uint8))
     np.savez(new, jpeg=np.zeros(1, np.uint8), render_version=2)
     assert not _made_by(old, 2) and _made_by(old, 1) and _made_by(new, 2) and not _made_by(tmp_path / "no.npz", 2)
+    (tmp_path / "torn.npz").write_bytes(new.read_bytes()[:40])     # a damaged shard is drawn again, not read
+    assert not _made_by(tmp_path / "torn.npz", 2)
 
 
 def test_every_nth_shard_is_path_traced_and_kept_apart():

@@ -18,14 +18,16 @@ come from the truth and the exact instance mask:
 | radius | the object's projected half size, pixels (the heatmap's spread) |
 
 Shards (`<data>/<split>/detector/shard_NNNN.npz`) hold `scenes` of them; a shard is written atomically and reused
-when it exists from the render stage's version, so generation resumes where it stopped. With `parser.detector_realistic_every` = K, every K-th shard
-(index K-1 mod K) is path-traced by the realistic backend instead (`detector-mitsuba/shard_NNNN.npz`), so that the
-head learns what a vehicle looks like under sky light and soft shadows, not only TinyRenderer's shading.
+when it is there, readable and of the render stage's version, so generation resumes where it stopped. With
+`parser.detector_realistic_every` = K, every K-th shard (index K-1 mod K) is path-traced by the realistic backend
+instead (`detector-mitsuba/shard_NNNN.npz`), so that the head learns what a vehicle looks like under sky light and
+soft shadows, not only TinyRenderer's shading.
 """
 
 from __future__ import annotations
 
 import math
+import zipfile
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -145,11 +147,13 @@ def make_shard(cfg: Config, split: Split, data_dir: Path, shard: int, scenes_per
 
 
 def _made_by(path: Path, render_version: int) -> bool:
-    """A shard already there from this render stage's version (version 1 drew vehicles half a pixel off)."""
-    if not path.exists():
+    """A readable shard already there from this render stage's version (version 1 drew vehicles half a pixel off);
+    anything else is drawn again."""
+    try:
+        with np.load(path) as z:
+            return int(z["render_version"]) == render_version if "render_version" in z.files else render_version == 1
+    except (OSError, ValueError, zipfile.BadZipFile):
         return False
-    with np.load(path) as z:
-        return int(z["render_version"]) == render_version if "render_version" in z.files else render_version == 1
 
 
 def load_shard(path: Path) -> tuple[np.ndarray, np.ndarray]:
