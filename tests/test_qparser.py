@@ -19,7 +19,8 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import QuestionParser, program_shape, synonyms, time_clause_last, well_formed
+from dynclevr.language.parse import (QuestionParser, program_shape, request_as_imperative, synonyms, time_clause_last,
+                                     well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -213,6 +214,22 @@ def test_a_clause_of_time_said_first_is_also_read_last():
                  "Is the red sedan parked when it hits the blue bus?", "Suppose it stops, is it slow?",
                  "At the start,", "at the start"):
         assert time_clause_last(tokenize(text)) is None, text
+
+
+def test_a_question_asked_as_a_request_is_read_as_tell_me():
+    """'Could you tell me ...', 'I'd like to know ...', 'I wonder ...': the grammar words requests as 'Tell me ...'.
+    A request said later, or words that only look like one, stay as they are."""
+    for text in ("Could you tell me the speed of the red sedan at the start?", "I'd like to know the speed of the "
+                 "red sedan at the start?", "Please, can you please tell me the speed of the red sedan at the start?",
+                 "do you happen to know the speed of the red sedan at the start?"):
+        words, read_as = request_as_imperative(tokenize(text))
+        assert words == tokenize("tell me the speed of the red sedan at the start?"), text
+        assert read_as[0][1] == "tell me" and tokenize(text)[:len(read_as[0][0].split())] == read_as[0][0].split()
+    assert request_as_imperative(tokenize("I wonder whether the red sedan hits the bus."))[0] == tokenize(
+        "tell me whether the red sedan hits the bus.")
+    for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
+                 "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
+        assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):
@@ -418,6 +435,10 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
             f"{red} Events {red} filter_collision {blue} filter_collision unique get_frame query_moving_velocity",
         "At the moment the red sedan hits it, is the blue bus standing still?":
             f"{blue} Events {blue} filter_collision {red} filter_collision unique get_frame is_static",
+        # a request for the question, read as the grammar's 'tell me'
+        "Can you tell me the speed of the red sedan at the start?": f"{red} start query_moving_velocity",
+        "I'd like to know whether the red sedan hits the blue bus.":
+            f"Events {red} filter_collision {blue} filter_collision exist",
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text

@@ -28,6 +28,7 @@ from __future__ import annotations
 import io
 import json
 import pickle
+import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -202,8 +203,9 @@ class QuestionParser:
             return [], "empty question", ()
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
+        words, request = request_as_imperative(words)
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
-        read_as = tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
+        read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
         # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
         # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
@@ -278,6 +280,26 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+# A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
+# 'I wonder ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as 'Tell me ...'.
+REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please )?"
+                     r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to )"
+                     r"(?:like to |love to )?know|i (?:am |' m )?wondering|i wonder|please tell me|let me know)"
+                     r" (?:, )?(?:please )?")
+
+
+def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question that opens with a request for it, the request read as the grammar's 'tell me': 'can you tell me
+    the speed of the red car at the start ?' -> 'tell me the speed of ...'; with the words read so (`Parse.read_as`),
+    or the words as they are and ()."""
+    m = REQUEST.match(" ".join(words) + " ")
+    if not m:
+        return words, ()
+    rest = " ".join(words)[m.end():].split()
+    said = " ".join(words[:len(words) - len(rest)])
+    return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
