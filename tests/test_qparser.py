@@ -19,8 +19,8 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (QuestionParser, program_shape, request_as_imperative, synonyms, time_clause_last,
-                                     well_formed)
+from dynclevr.language.parse import (QuestionParser, asks_motion_as_rest, program_shape, request_as_imperative,
+                                     synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -232,6 +232,19 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
 
 
+def test_a_question_of_motion_is_never_read_as_one_of_rest():
+    """No operation negates, so 'is it moving?' read as is_static would answer the opposite: it is unparsed. Rest
+    said as rest or as negated motion stays a question of rest."""
+    static = "<obj1> start is_static".split()
+    assert asks_motion_as_rest(tokenize("is <obj1> moving at the start ?"), static)
+    assert asks_motion_as_rest(tokenize("is <obj1> in motion at the start ?"), static)
+    for text in ("is <obj1> not moving at the start ?", "is <obj1> standing still ?", "had <obj1> never moved , "
+                 "would it hit <obj2> ?", "is <obj1> non-moving at first ?", "is <obj1> parked at the start ?"):
+        assert not asks_motion_as_rest(tokenize(text), static), text
+    assert not asks_motion_as_rest(tokenize("is <obj1> moving fast at the start ?"),
+                                   "<obj1> start is_moving_velocity[fast]".split())
+
+
 def test_tiny_model_learns_template_programs(synthetic_fit):
     assert synthetic_fit.val_exact_match >= 0.98
     texts, programs, _ = synthetic(400, seed=1)     # new questions, new object combinations
@@ -413,6 +426,8 @@ def test_shipped_weights_parse_held_out_questions(heldout_questions):
     # a synonym never seen is mostly unparsed, see the README).
     assert manifest["val_exact_match"] >= 0.995 and manifest["heldout_known_words_exact_match"] >= 0.95
     assert parser.parse("florp zzk blarg?") is None and parser.parse("") is None
+    moving = parser.analyse_batch(["Is the red sedan moving at the start?"])[0]
+    assert moving.program is None and "asks whether an object is moving" in moving.reason
 
 
 def test_shipped_weights_read_the_papers_and_peoples_wordings():

@@ -18,6 +18,9 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   word, except a word after a whole description, which is the sentence's: 'the red sedan *ends* up hitting'),
   compares objects by what no question asks ('the red sedan *bigger* than'), or runs object words together that
   describe no one object ('red blue green');
+- the program asks whether an object is at rest while the question asks whether it moves ('Is the red sedan
+  moving at the start?': no operation negates, and the grammar says rest only as rest or 'not moving', so the
+  model reads a bare 'moving' as its nearest phrase, 'not moving', and would answer the opposite);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -274,6 +277,9 @@ class QuestionParser:
             return Parse(None, "the question matches no known question family", p)
         if p < self.params.min_confidence:
             return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
+        if asks_motion_as_rest(words, abstract):
+            return Parse(None, "the question asks whether an object is moving, which no question here asks (ask "
+                               "whether it is static, or slow or fast)", p)
         unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
                   if k not in placeholders(abstract)]
         if unused:
@@ -300,6 +306,22 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)])
     return ["tell", "me"] + rest, ((said, "tell me"),)
+
+
+# A question of rest ('is_static', 'filter_static', 'Counterfactual_static') must say rest: a word of it, or a
+# negation ('not moving', 'never moved'). Words of motion alone ask the opposite, which no operation says.
+REST_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
+REST_WORDS = {"static", "stationary", "still", "stop", "stops", "stopped", "stopping", "parked", "park", "rest",
+              "motionless", "standing", "stand", "stands", "standstill", "halt", "halted", "idle", "stay", "stays",
+              "stayed", "put", "kept", "frozen", "immobile", "unmoving", "not", "non", "never", "no", "nothing", "without"}
+MOTION_WORDS = {"moving", "move", "moves", "moved", "motion", "driving", "going", "travelling", "traveling",
+                "rolling", "flying", "running", "underway"}
+
+
+def asks_motion_as_rest(words: list[str], abstract: list[str]) -> bool:
+    """The program asks about rest, the question (its words as read) names motion and no rest."""
+    return (any(operation(t) in REST_OPERATIONS for t in abstract) and bool(MOTION_WORDS.intersection(words))
+            and not REST_WORDS.intersection(words))
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
