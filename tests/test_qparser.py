@@ -19,7 +19,7 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (QuestionParser, asks_motion_as_rest, program_shape, request_as_imperative,
+from dynclevr.language.parse import (QuestionParser, program_shape, request_as_imperative, reversed_reading,
                                      synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -232,17 +232,28 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
 
 
-def test_a_question_of_motion_is_never_read_as_one_of_rest():
-    """No operation negates, so 'is it moving?' read as is_static would answer the opposite: it is unparsed. Rest
-    said as rest or as negated motion stays a question of rest."""
-    static = "<obj1> start is_static".split()
-    assert asks_motion_as_rest(tokenize("is <obj1> moving at the start ?"), static)
-    assert asks_motion_as_rest(tokenize("is <obj1> in motion at the start ?"), static)
-    for text in ("is <obj1> not moving at the start ?", "is <obj1> standing still ?", "had <obj1> never moved , "
-                 "would it hit <obj2> ?", "is <obj1> non-moving at first ?", "is <obj1> parked at the start ?"):
-        assert not asks_motion_as_rest(tokenize(text), static), text
-    assert not asks_motion_as_rest(tokenize("is <obj1> moving fast at the start ?"),
-                                   "<obj1> start is_moving_velocity[fast]".split())
+def test_a_reading_that_asks_the_opposite_of_the_question_is_refused():
+    """No operation negates, so 'is it moving?' read as is_static, 'is it not accelerating?' as is_accelerating or
+    'does it miss the bus?' as a collision would answer the opposite: each is unparsed. Rest said as rest or as
+    negated motion, a negated fall and 'or not' stay in scope, and no wording of the grammar is refused."""
+    static, floating = "<obj1> start is_static".split(), "<obj1> start is_floating".split()
+    collide, accel = "Events <obj1> filter_collision <obj2> filter_collision exist".split(), \
+        "<obj1> start is_accelerating".split()
+    refused = [("is <obj1> moving at the start ?", static), ("is <obj1> in motion at the start ?", static),
+               ("is <obj1> not accelerating at the start ?", accel), ("is the engine of <obj1> off at first ?", accel),
+               ("does <obj1> never hit <obj2> ?", collide), ("does <obj1> miss <obj2> ?", collide),
+               ("is <obj1> on the ground at the start ?", floating), ("is <obj1> grounded at first ?", floating)]
+    for text, program in refused:
+        assert reversed_reading(tokenize(text), program), text
+    kept = [("is <obj1> not moving at the start ?", static), ("is <obj1> standing still ?", static),
+            ("is <obj1> non-moving at first ?", static), ("is <obj1> not in motion ?", static),
+            ("without <obj1> moving at the start , would it hit <obj2> ?", static),
+            ("is <obj1> accelerating or not at the start ?", accel), ("does <obj1> stay off the ground ?", floating),
+            ("is <obj1> moving fast at the start ?", "<obj1> start is_moving_velocity[fast]".split())]
+    for text, program in kept:
+        assert not reversed_reading(tokenize(text), program), text
+    for e in synthesize(3000, 11, "all", augmented=True):
+        assert not reversed_reading(tokenize(e.text), e.program.split()), e.text
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):

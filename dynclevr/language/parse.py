@@ -18,9 +18,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   word, except a word after a whole description, which is the sentence's: 'the red sedan *ends* up hitting'),
   compares objects by what no question asks ('the red sedan *bigger* than'), or runs object words together that
   describe no one object ('red blue green');
-- the program asks whether an object is at rest while the question asks whether it moves ('Is the red sedan
-  moving at the start?': no operation negates, and the grammar says rest only as rest or 'not moving', so the
-  model reads a bare 'moving' as its nearest phrase, 'not moving', and would answer the opposite);
+- the program asks the opposite of the question: motion asked as rest ('Is the red sedan moving at the start?'
+  read as is_static), a negation the grammar never says ('not accelerating', 'never hit'), or a word reversing the
+  program's predicate ('miss', 'decelerating', 'grounded'). No operation negates, so the model reads such a
+  wording as its nearest phrase, the unreversed one, and would answer the opposite;
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -277,9 +278,9 @@ class QuestionParser:
             return Parse(None, "the question matches no known question family", p)
         if p < self.params.min_confidence:
             return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
-        if asks_motion_as_rest(words, abstract):
-            return Parse(None, "the question asks whether an object is moving, which no question here asks (ask "
-                               "whether it is static, or slow or fast)", p)
+        reverse = reversed_reading(words, abstract)
+        if reverse:
+            return Parse(None, reverse, p)
         unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
                   if k not in placeholders(abstract)]
         if unused:
@@ -308,20 +309,58 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
-# A question of rest ('is_static', 'filter_static', 'Counterfactual_static') must say rest: a word of it, or a
-# negation ('not moving', 'never moved'). Words of motion alone ask the opposite, which no operation says.
+# No operation negates, and the grammar words each question one way round: a model reads a reversed wording ('is it
+# moving?', 'is it not accelerating?', 'does it miss the bus?') as its nearest phrase, the unreversed one, and its
+# answer would be the opposite. So a reading is kept only where the question's words say what its program asks.
 REST_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
 REST_WORDS = {"static", "stationary", "still", "stop", "stops", "stopped", "stopping", "parked", "park", "rest",
-              "motionless", "standing", "stand", "stands", "standstill", "halt", "halted", "idle", "stay", "stays",
-              "stayed", "put", "kept", "frozen", "immobile", "unmoving", "not", "non", "never", "no", "nothing", "without"}
+              "motionless", "standing", "stand", "stands", "stood", "standstill", "halt", "halted", "idle", "stay",
+              "stays", "stayed", "put", "kept", "frozen", "immobile", "unmoving", "resting", "without"}
 MOTION_WORDS = {"moving", "move", "moves", "moved", "motion", "driving", "going", "travelling", "traveling",
                 "rolling", "flying", "running", "underway"}
+NEGATIONS = {"not", "never", "nothing", "neither", "nor", "non"}
+# what a negation may deny in the grammar's own questions: motion ('not moving': rest) and a fall ('had never come
+# down': floating); 'X or not' offers both answers
+DENIABLE = MOTION_WORDS | {"fall", "falls", "fell", "fallen", "falling", "come", "came", "drop", "dropped", "land",
+                           "landed", "descend", "descended", "sink", "sank", "sunk"}
+PAST = {"been", "have", "has", "had", "even", "at", "all", "ever", "once", "yet", "really", "actually", "-"}
+# words that reverse a predicate, by the operations that ask it
+REVERSERS = {
+    ("filter_collision",): {"miss", "misses", "missed", "missing", "avoid", "avoids", "avoided", "avoiding",
+                            "dodge", "dodges", "dodged", "evade", "evades", "evaded", "escape", "escapes"},
+    ("is_accelerating", "filter_accelerating", "Counterfactual_accelerating"):
+        {"decelerating", "decelerate", "decelerates", "decelerated", "deceleration", "slowing", "braking", "brake",
+         "brakes", "braked", "off"},
+    ("is_floating", "filter_floating", "Counterfactual_floating"): {"grounded", "landed", "landing", "ground"},
+}
+ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
+ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': not accelerating
 
 
-def asks_motion_as_rest(words: list[str], abstract: list[str]) -> bool:
-    """The program asks about rest, the question (its words as read) names motion and no rest."""
-    return (any(operation(t) in REST_OPERATIONS for t in abstract) and bool(MOTION_WORDS.intersection(words))
-            and not REST_WORDS.intersection(words))
+def reversed_reading(words: list[str], abstract: list[str]) -> str:
+    """Why the program asks the opposite of the question ('' when it does not): motion asked as rest, a negation
+    the grammar never says, or a word that reverses the program's predicate ('miss', 'decelerating', 'grounded')."""
+    ops = {operation(t) for t in abstract}
+    if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
+        return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
+                "static, or slow or fast)")
+    for k, w in enumerate(words):
+        if w not in NEGATIONS or (k and words[k - 1] == "or"):
+            continue
+        after = [v for v in words[k + 1:k + 5] if v not in PAST]
+        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"]:
+            said = " ".join(words[k:k + 3])
+            return (f"the question is negated ('{said}'), which no question here asks: ask it without the "
+                    "negation and take the opposite answer")
+    if not NEGATIONS.intersection(words):
+        for asked, reversers in REVERSERS.items():
+            hit = [w for k, w in enumerate(words) if w in reversers
+                   and not (w == "off" and not ENGINE_WORDS.intersection(words))     # 'it starts off slowly'
+                   and not (w == "ground" and ALOFT.intersection(words[max(k - 2, 0):k]))]
+            if ops.intersection(asked) and hit:
+                return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
+                        "way round and take the opposite answer")
+    return ""
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
