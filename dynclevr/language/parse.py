@@ -305,7 +305,7 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     if not m:
         return words, ()
     rest = " ".join(words)[m.end():].split()
-    said = " ".join(words[:len(words) - len(rest)])
+    said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
