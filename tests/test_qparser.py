@@ -224,7 +224,8 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
                  "do you happen to know the speed of the red sedan at the start?"):
         words, read_as = request_as_imperative(tokenize(text))
         assert words == tokenize("tell me the speed of the red sedan at the start?"), text
-        assert read_as[0][1] == "tell me" and tokenize(text)[:len(read_as[0][0].split())] == read_as[0][0].split()
+        assert "' " not in read_as[0][0], read_as       # said as written: "i'd like to know"
+        assert read_as[0][1] == "tell me" and tokenize(text)[:len(tokenize(read_as[0][0]))] == tokenize(read_as[0][0])
     assert request_as_imperative(tokenize("I wonder whether the red sedan hits the bus."))[0] == tokenize(
         "tell me whether the red sedan hits the bus.")
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
