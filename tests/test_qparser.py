@@ -86,6 +86,10 @@ def test_tokenize_splits_words_and_punctuation_and_unifies_spellings():
     # short negations are said in full, as the grammar says them; a possessive "'s" is left alone
     assert tokenize("Isn\u2019t it moving? It won't; it can't") == ["is", "not", "it", "moving", "?", "it", "will",
                                                                      "not", ";", "it", "can", "not"]
+    # typed without the apostrophe, too; other words ending in "nt" are left alone
+    assert tokenize("it isnt moving, didnt hit, wont") == ["it", "is", "not", "moving", ",", "did", "not", "hit", ",",
+                                                           "will", "not"]
+    assert tokenize("want cantilever isnt") == ["want", "cantilever", "is", "not"]
 
 
 def test_vocab_round_trip_and_typo_fix(tmp_path):

@@ -10,9 +10,9 @@ _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 _SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
               "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes"}
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
-# Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"); "'s" stays, being a
-# possessive as often as "is".
-_NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|should|wo|ca)n't\b")
+# Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
+# the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
+_NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|should|wo|ca)n'?t\b")
 _NOT_STEMS = {"wo": "will", "ca": "can"}
 
 
