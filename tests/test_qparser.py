@@ -442,8 +442,10 @@ def test_shipped_weights_parse_held_out_questions(heldout_questions):
     # a synonym never seen is mostly unparsed, see the README).
     assert manifest["val_exact_match"] >= 0.995 and manifest["heldout_known_words_exact_match"] >= 0.95
     assert parser.parse("florp zzk blarg?") is None and parser.parse("") is None
-    moving = parser.analyse_batch(["Is the red sedan moving at the start?"])[0]
+    moving, slowing = parser.analyse_batch(["Is the red sedan moving at the start?",
+                                            "Is the red sedan decelerating at the start?"])
     assert moving.program is None and "asks whether an object is moving" in moving.reason
+    assert slowing.program is None and "slows down" in slowing.reason      # not WordNet's 'slow', a speed
 
 
 def test_shipped_weights_read_the_papers_and_peoples_wordings():

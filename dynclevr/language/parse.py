@@ -20,7 +20,8 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   describe no one object ('red blue green');
 - the program asks the opposite of the question: motion asked as rest ('Is the red sedan moving at the start?'
   read as is_static), a negation the grammar never says ('not accelerating', 'never hit'), or a word reversing the
-  program's predicate ('miss', 'decelerating', 'grounded'). No operation negates, so the model reads such a
+  program's predicate ('miss', 'braking', 'grounded'; 'decelerating' is refused as said, before WordNet reads it
+  as 'slow'). No operation negates, so the model reads such a
   wording as its nearest phrase, the unreversed one, and would answer the opposite;
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
@@ -208,6 +209,11 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, request = request_as_imperative(words)
+        # WordNet reads 'decelerate' as 'slow' (a speed); slowing down is what no question asks, the opposite of
+        # accelerating, so it is refused before any word stands in for it
+        if any(w.startswith("decelerat") for w in words):
+            return [], ("the question asks whether an object slows down, which no question here asks: ask whether it "
+                        "is accelerating and take the opposite answer"), request
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
@@ -329,8 +335,7 @@ REVERSERS = {
     ("filter_collision",): {"miss", "misses", "missed", "missing", "avoid", "avoids", "avoided", "avoiding",
                             "dodge", "dodges", "dodged", "evade", "evades", "evaded", "escape", "escapes"},
     ("is_accelerating", "filter_accelerating", "Counterfactual_accelerating"):
-        {"decelerating", "decelerate", "decelerates", "decelerated", "deceleration", "slowing", "braking", "brake",
-         "brakes", "braked", "off"},
+        {"braking", "brake", "brakes", "braked", "off"},
     ("is_floating", "filter_floating", "Counterfactual_floating"): {"grounded", "landed", "landing", "ground"},
 }
 ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
@@ -339,7 +344,7 @@ ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': no
 
 def reversed_reading(words: list[str], abstract: list[str]) -> str:
     """Why the program asks the opposite of the question ('' when it does not): motion asked as rest, a negation
-    the grammar never says, or a word that reverses the program's predicate ('miss', 'decelerating', 'grounded')."""
+    the grammar never says, or a word that reverses the program's predicate ('miss', 'braking', 'grounded')."""
     ops = {operation(t) for t in abstract}
     if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
