@@ -446,6 +446,12 @@ def test_shipped_weights_parse_held_out_questions(heldout_questions):
                                             "Is the red sedan decelerating at the start?"])
     assert moving.program is None and "asks whether an object is moving" in moving.reason
     assert slowing.program is None and "slows down" in slowing.reason      # not WordNet's 'slow', a speed
+    # the passive says the other one is faster, the way round from the lexicon's 'outpace' -> 'move faster than'
+    outpaced, outruns = parser.analyse_batch(["Is the blue bus outpaced by the red sedan at the start?",
+                                              "Does the red sedan outrun the blue bus at the start?"])
+    assert outpaced.program is None and "passive" in outpaced.reason
+    assert outruns.program == ("Objects filter_attributes[red] filter_attributes[sedan] unique Objects "
+                               "filter_attributes[blue] filter_attributes[bus] unique start faster_velocity").split()
 
 
 def test_shipped_weights_read_the_papers_and_peoples_wordings():

@@ -214,6 +214,11 @@ class QuestionParser:
         if any(w.startswith("decelerat") for w in words):
             return [], ("the question asks whether an object slows down, which no question here asks: ask whether it "
                         "is accelerating and take the opposite answer"), request
+        # 'Is the bus outpaced by the car?': the lexicon reads 'outpaced' as 'moves faster than', the subject first
+        passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]
+        if passive:
+            return [], (f"the question compares in the passive ('{passive[0]} by'): ask whether the one named last is "
+                        "faster or slower than the other"), request
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
@@ -366,6 +371,12 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
                 return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
                         "way round and take the opposite answer")
     return ""
+
+
+# Passive participles of outdoing: 'X is outpaced by Y' says Y is faster, the other way round from how the
+# lexicon reads the word ('outpace' -> 'move faster than')
+OUTDONE = {"outpaced", "outrun", "outran", "overtaken", "outstripped", "passed", "beaten", "outsped", "outdone",
+           "surpassed", "outperformed", "bested", "exceeded", "outdistanced", "outraced"}
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
