@@ -209,16 +209,9 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, request = request_as_imperative(words)
-        # WordNet reads 'decelerate' as 'slow' (a speed); slowing down is what no question asks, the opposite of
-        # accelerating, so it is refused before any word stands in for it
-        if any(w.startswith("decelerat") for w in words):
-            return [], ("the question asks whether an object slows down, which no question here asks: ask whether it "
-                        "is accelerating and take the opposite answer"), request
-        # 'Is the bus outpaced by the car?': the lexicon reads 'outpaced' as 'moves faster than', the subject first
-        passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]
-        if passive:
-            return [], (f"the question compares in the passive ('{passive[0]} by'): ask whether the one named last is "
-                        "faster or slower than the other"), request
+        reverse = reversed_as_said(words)
+        if reverse:
+            return [], reverse, request
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
@@ -377,6 +370,20 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
 # lexicon reads the word ('outpace' -> 'move faster than')
 OUTDONE = {"outpaced", "outrun", "outran", "overtaken", "outstripped", "passed", "beaten", "outsped", "outdone",
            "surpassed", "outperformed", "bested", "exceeded", "outdistanced", "outraced"}
+
+
+def reversed_as_said(words: list[str]) -> str:
+    """Reversals that the words standing in for unknown ones would hide, so read before they stand in: 'decelerate'
+    (WordNet's 'slow', a speed; slowing down is what no question asks, the opposite of accelerating) and a
+    comparison in the passive ('Is the bus outpaced by the car?'). '' when there is none."""
+    if any(w.startswith("decelerat") for w in words):
+        return ("the question asks whether an object slows down, which no question here asks: ask whether it is "
+                "accelerating and take the opposite answer")
+    passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]
+    if passive:
+        return (f"the question compares in the passive ('{passive[0]} by'): ask whether the one named last is faster "
+                "or slower than the other")
+    return ""
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
