@@ -19,8 +19,9 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (QuestionParser, program_shape, request_as_imperative, reversed_reading,
-                                     synonyms, time_clause_last, well_formed)
+from dynclevr.language.parse import (QuestionParser, height_as_aloft, noun_phrase_as_question, program_shape,
+                                     request_as_imperative, reversed_as_said, reversed_reading, synonyms,
+                                     time_clause_last, well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -204,6 +205,11 @@ def test_a_shorter_second_mention_is_the_same_object():
     for text in ("When the school bus hits the red bus, is the school bus fast?",   # 'red' is new
                  "Does the red sedan hit the red suv before the red one stops?"):  # fits both
         assert corefer(*delexicalise(tokenize(text))) == delexicalise(tokenize(text)), text
+    # Said before its fuller mention, as a clause of time put last says it: numbered again in order of mention.
+    words, refs = corefer(*delexicalise(tokenize(
+        "Is the airliner fast when the blue airliner and the green scooter collide?")))
+    assert refs == [("blue", "airliner"), ("green", "scooter")]
+    assert [w for w in words if w.startswith("<")] == ["<obj1>", "<obj1>", "<obj2>"]
 
 
 def test_a_clause_of_time_said_first_is_also_read_last():
@@ -218,6 +224,12 @@ def test_a_clause_of_time_said_first_is_also_read_last():
                  "Is the red sedan parked when it hits the blue bus?", "Suppose it stops, is it slow?",
                  "At the start,", "at the start"):
         assert time_clause_last(tokenize(text)) is None, text
+    # An object named in the clause and 'it' in the question change places, so that the pronoun follows it again;
+    # not where the question names an object of its own before its 'it'.
+    assert time_clause_last(tokenize("Once the cyan tandem bike shows up, how fast is it moving?")) == tokenize(
+        "how fast is the cyan tandem bike moving once it shows up?")
+    assert time_clause_last(tokenize("When the bus hits the red car, is the car faster than it?")) == tokenize(
+        "is the car faster than it when the bus hits the red car?")
 
 
 def test_a_question_asked_as_a_request_is_read_as_tell_me():
@@ -237,6 +249,40 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
 
 
+def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_it():
+    """'speed of the red car at the start?' asks what the speed is; 'high above the ground' is up in the air, not the
+    'high' of 'at high speed'."""
+    words, read_as = noun_phrase_as_question(tokenize("speed of red sedan at start?"))
+    assert words == tokenize("what is the speed of red sedan at start?") and read_as == (("speed of",
+                                                                                          "what is the speed of"),)
+    assert noun_phrase_as_question(tokenize("the colour of the thing that floats?"))[0][:4] == ["what", "is", "the",
+                                                                                               "color"]
+    for text in ("What is the speed of the red car?", "Is the speed of the red car high?"):
+        assert noun_phrase_as_question(tokenize(text)) == (tokenize(text), ()), text
+    assert height_as_aloft(tokenize("is the jet high above the ground?"))[0] == tokenize("is the jet up above the "
+                                                                                         "ground?")
+    assert height_as_aloft(tokenize("is the jet high up at first?"))[0] == tokenize("is the jet up at first?")
+    for text in ("is the jet moving at high speed?", "is the jet flying high?"):
+        assert height_as_aloft(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_slowing_down_however_said_is_refused():
+    """The lexicon would read 'slowing down' as the speed 'slow' and 'losing speed' or 'getting slower' as
+    accelerating: each asks what no question here asks. Slowness and comparisons stay in scope, and no wording of
+    the grammar is refused."""
+    for text in ("Is the bus slowing down?", "Is the bus slowing at first?", "Does the car slow down at the start?",
+                 "Is the red car losing speed?", "Is the car reducing its speed?", "Does the car's speed drop?",
+                 "Is its speed going down?", "Is the truck getting slower at the start?",
+                 "Is the red car coming to a stop?", "Is the car decelerating?"):
+        assert reversed_as_said(tokenize(text)).startswith("the question asks whether an object slows down"), text
+    for text in ("Is the bus moving slowly at the start?", "Is the bus slower than the car?",
+                 "Is the jet dropping at high speed?", "Had the car come to a stop, would it hit the bus?",
+                 "Is the bus getting slower than the car?"):
+        assert not reversed_as_said(tokenize(text)), text
+    for e in synthesize(3000, 12, "all", augmented=True):
+        assert not reversed_as_said(tokenize(e.text)), e.text
+
+
 def test_a_reading_that_asks_the_opposite_of_the_question_is_refused():
     """No operation negates, so 'is it moving?' read as is_static, 'is it not accelerating?' as is_accelerating or
     'does it miss the bus?' as a collision would answer the opposite: each is unparsed. Rest said as rest or as
@@ -254,6 +300,7 @@ def test_a_reading_that_asks_the_opposite_of_the_question_is_refused():
             ("is <obj1> non-moving at first ?", static), ("is <obj1> not in motion ?", static),
             ("without <obj1> moving at the start , would it hit <obj2> ?", static),
             ("is <obj1> accelerating or not at the start ?", accel), ("does <obj1> stay off the ground ?", floating),
+            ("is <obj1> up in the air or on the ground ?", floating),
             ("is <obj1> moving fast at the start ?", "<obj1> start is_moving_velocity[fast]".split())]
     for text, program in kept:
         assert not reversed_reading(tokenize(text), program), text

@@ -112,7 +112,7 @@ class QuestionParser:
         # The operation sequences of the training programs: a decoded program must have one of them (as well as
         # pass `well_formed`), so a decoding that wanders off every template is unparsed, not executed.
         self.shapes = shapes
-        # A shorter later mention as its first mention's object (references.corefer): true of a scene's questions,
+        # A shorter mention as its fuller mention's object (references.corefer): true of a scene's questions,
         # where each description picks out one object; training reads its random objects without it.
         self.corefer = True
         # Synonyms stand in only for words the parser does not know, and only by words it knows.
@@ -209,6 +209,9 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, request = request_as_imperative(words)
+        words, asked = noun_phrase_as_question(words)
+        words, aloft = height_as_aloft(words)
+        request += asked + aloft
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -294,10 +297,12 @@ class QuestionParser:
 
 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
-# 'I wonder ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as 'Tell me ...'.
+# 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
+# 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please )?"
                      r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to )"
-                     r"(?:like to |love to )?know|i (?:am |' m )?wondering|i wonder|please tell me|let me know)"
+                     r"(?:like to |love to )?know|i (?:am |' m )?wondering|i wonder"
+                     r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know)"
                      r" (?:, )?(?:please )?")
 
 
@@ -311,6 +316,36 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
     return ["tell", "me"] + rest, ((said, "tell me"),)
+
+
+QUERY_NOUNS = {"speed", "velocity", "direction", "heading", "color", "type", "shape", "kind", "sort"}
+
+
+def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
+    thing that floats?') read as 'what is ...'; with the words read so, or the words as they are and ()."""
+    k = 1 if words[:1] == ["the"] else 0
+    if words[k:k + 1] and words[k] in QUERY_NOUNS and words[k + 1:k + 2] == ["of"]:
+        return ["what", "is", "the"] + words[k:], ((" ".join(words[:k + 2]), f"what is the {words[k]} of"),)
+    return words, ()
+
+
+ALOFT_AFTER = {"above", "over", "in", "up", "off", "aloft"}
+
+
+def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'high above the ground', 'high in the sky', 'high up' said of a vehicle: up in the air, which the grammar
+    says 'up in the air' ('high' alone is the grammar's speed, as in 'at high speed')."""
+    out, read = [], []
+    for k, w in enumerate(words):
+        after = words[k + 1] if k + 1 < len(words) else ""
+        if w == "high" and after in ALOFT_AFTER:
+            read.append((f"high {after}", "up" if after == "up" else f"up {after}"))
+            if after != "up":
+                out.append("up")
+        else:
+            out.append(w)
+    return out, tuple(read)
 
 
 # No operation negates, and the grammar words each question one way round: a model reads a reversed wording ('is it
@@ -358,6 +393,7 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     if not NEGATIONS.intersection(words):
         for asked, reversers in REVERSERS.items():
             hit = [w for k, w in enumerate(words) if w in reversers
+                   and "or" not in words[max(k - 4, 0):k]     # 'in the air or on the ground?' offers both answers
                    and not (w == "off" and not ENGINE_WORDS.intersection(words))     # 'it starts off slowly'
                    and not (w == "ground" and ALOFT.intersection(words[max(k - 2, 0):k]))]
             if ops.intersection(asked) and hit:
@@ -372,11 +408,41 @@ OUTDONE = {"outpaced", "outrun", "outran", "overtaken", "outstripped", "passed",
            "surpassed", "outperformed", "bested", "exceeded", "outdistanced", "outraced"}
 
 
+LOSING = {"lose", "loses", "losing", "lost", "shed", "sheds", "shedding", "drop", "drops", "dropping", "reduce",
+          "reduces", "reducing", "reduced", "decrease", "decreases", "decreasing", "decreased", "cut", "cuts",
+          "cutting", "bleed", "bleeds", "bleeding"}
+SPEED_NOUNS = {"speed", "velocity", "pace", "momentum"}
+FALLING = {"drop", "drops", "dropping", "dropped", "decrease", "decreases", "decreasing", "decreased", "fall", "falls",
+           "falling", "fell"}
+GETTING = {"get", "gets", "getting", "become", "becomes", "becoming", "grow", "grows", "growing"}
+HALTS = {"stop", "halt", "standstill", "rest"}
+
+
+def slowing_down(words: list[str]) -> bool:
+    """'slowing (down)', 'losing (its) speed', 'its speed drops', 'getting slower', 'coming to a stop': a slowing
+    down, which the lexicon would read as a speed ('slow') or as its opposite ('accelerating', 'static')."""
+    for k, w in enumerate(words):
+        after = words[k + 1:k + 4]
+        if w == "slowing" or w in ("slow", "slows", "slowed") and after[:1] == ["down"]:
+            return True
+        if w in LOSING and SPEED_NOUNS.intersection(after[:2]):
+            return True
+        verb = after[1:3] if after[:1] == ["is"] else after[:2]
+        if w in SPEED_NOUNS and (verb[:1] and verb[0] in FALLING or verb in (["goes", "down"], ["going", "down"])):
+            return True
+        if w in GETTING and (after[:1] == ["slower"] or after[:2] == ["more", "slowly"]) and "than" not in after:
+            return True
+        if w in ("come", "comes", "coming") and "had" not in words[max(k - 4, 0):k] and after[:1] == ["to"] and \
+                HALTS.intersection(after[1:3]):     # 'had it come to a stop' is a counterfactual's rest
+            return True
+    return False
+
+
 def reversed_as_said(words: list[str]) -> str:
     """Reversals that the words standing in for unknown ones would hide, so read before they stand in: 'decelerate'
-    (WordNet's 'slow', a speed; slowing down is what no question asks, the opposite of accelerating) and a
-    comparison in the passive ('Is the bus outpaced by the car?'). '' when there is none."""
-    if any(w.startswith("decelerat") for w in words):
+    (WordNet's 'slow', a speed; slowing down, however said, is what no question asks, the opposite of
+    accelerating) and a comparison in the passive ('Is the bus outpaced by the car?'). '' when there is none."""
+    if any(w.startswith("decelerat") for w in words) or slowing_down(words):
         return ("the question asks whether an object slows down, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")
     passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]
@@ -387,7 +453,7 @@ def reversed_as_said(words: list[str]) -> str:
 
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
-TIME_OPENERS = {"at", "when", "during", "in", "as", "on", "upon", "while", "just", "right"}
+TIME_OPENERS = {"at", "when", "during", "in", "as", "on", "upon", "while", "just", "right", "once"}
 # ... unless it is a counterfactual's condition ('In case X had stopped, would it hit Y?'), whose 'it' must follow it
 CONDITION_WORDS = {"had", "were", "case", "world", "if", "suppose"}
 
@@ -405,11 +471,37 @@ def time_clause_last(words: list[str]) -> list[str] | None:
     if not main or CONDITION_WORDS.intersection(clause):
         return None
     end = main[-1:] if main[-1] in ("?", ".", "!") else []
-    return main[:len(main) - len(end)] + clause + end
+    main, clause = _antecedent_first(main[:len(main) - len(end)], clause)
+    return main + clause + end
+
+
+DETERMINERS = {"the", "a", "an", "that", "this"}
+GENERIC_NOUNS = {"thing", "object", "vehicle", "one"}
+
+
+def _antecedent_first(main: list[str], clause: list[str]) -> tuple[list[str], list[str]]:
+    """'once the cyan bike shows up , how fast is it moving' names the object in the clause and says 'it' in the
+    main question: put last, the clause would follow its pronoun, so the object and the pronoun change places
+    ('how fast is the cyan bike moving once it shows up'). Only where the main question names no object before its
+    'it' and the clause says no 'it' of its own."""
+    if "it" not in main or {"it", "its"}.intersection(clause):
+        return main, clause
+    k = main.index("it")
+    start = next((i for i, w in enumerate(clause) if w in OBJECT_WORDS), None)
+    if start is None or OBJECT_WORDS.intersection(main[:k]):
+        return main, clause
+    end = start
+    while end < len(clause) and clause[end] in OBJECT_WORDS:
+        end += 1
+    if end < len(clause) and clause[end] in GENERIC_NOUNS:
+        end += 1
+    if start and clause[start - 1] in DETERMINERS:
+        start -= 1
+    return main[:k] + clause[start:end] + main[k + 1:], clause[:start] + ["it"] + clause[end:]
 
 
 def _second_mentions(said: list[str], named: list, words: list[str], refs: list) -> tuple[tuple[str, str], ...]:
-    """(shorter mention, the description it was read as) for each mention `corefer` merged into an earlier one."""
+    """(shorter mention, the description it was read as) for each mention `corefer` merged into a fuller one."""
     def text(ref) -> str:
         return " ".join(ref).replace("_", " ")
 

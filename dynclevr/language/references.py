@@ -1,9 +1,10 @@
 """The copy path for object words. The sequence model never reads or writes a colour or a sub-type: each run of
 attribute words in the question ('red sedan', 'school bus', 'purple') becomes a placeholder (<obj1>, <obj2>, in
-order of first mention; the same words twice, the same placeholder, and at parse time a shorter later mention of one
-object too: `corefer`), the model writes the placeholder where the program refers to that object, and the
-placeholder is copied back as the object's filter chain. So an object description the parser never saw with a
-sentence, or in a sentence it never saw, is carried over exactly, and the model's capacity goes to the sentence.
+order of first mention; the same words twice, the same placeholder, and at parse time a shorter mention of one
+object, before or after its fuller one, too: `corefer`), the model writes the placeholder where the program refers
+to that object, and the placeholder is copied back as the object's filter chain. So an object description the parser
+never saw with a sentence, or in a sentence it never saw, is carried over exactly, and the model's capacity goes to
+the sentence.
 """
 
 from __future__ import annotations
@@ -64,24 +65,29 @@ def _generalises(short: Ref, full: Ref) -> bool:
 
 
 def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
-    """A later, shorter mention of an object as the placeholder of its first mention: 'When the cyan mountain bike
-    hits the yellow double bus, is it slower than *the bus*?'. A question's references each pick out one object of
-    the scene, so a reference that generalises an earlier one can only be that object again (were it another, the
-    earlier one would not be unique). Only where exactly one earlier reference fits; parsing only: the training
-    questions' random objects need not be unique, so training scores them without it (`QuestionParser.corefer`)."""
-    merged = list(range(len(refs)))   # each placeholder's index into the kept references
-    kept: list[Ref] = []
-    for k, ref in enumerate(refs):
-        earlier = [j for j, r in enumerate(kept) if r != ref and _generalises(ref, r)]
-        if len(earlier) == 1:
-            merged[k] = earlier[0]
-        else:
-            merged[k] = len(kept)
-            kept.append(ref)
-    if len(kept) == len(refs):
+    """A shorter mention of an object as the placeholder of its fuller one, said before or after it: 'When the cyan
+    mountain bike hits the yellow double bus, is it slower than *the bus*?', 'Is *the airliner* fast when the blue
+    airliner and the green scooter collide?'. A question's references each pick out one object of the scene, so a
+    reference that generalises another can only be that object again (were it another, the fuller one would not be
+    unique). Only where exactly one other reference fits; the placeholders are then numbered again in order of first
+    mention, as training numbers them. Parsing only: the training questions' random objects need not be unique, so
+    training scores them without it (`QuestionParser.corefer`)."""
+    fuller = {k: [j for j, r in enumerate(refs) if r != ref and _generalises(ref, r)] for k, ref in enumerate(refs)}
+    root = list(range(len(refs)))
+    for k, js in fuller.items():
+        if len(js) == 1:
+            root[k] = js[0]
+    for k in range(len(refs)):   # 'bus' -> 'double bus' -> 'yellow double bus'
+        seen = {k}
+        while root[root[k]] != root[k] and root[root[k]] not in seen:
+            seen.add(root[k])
+            root[k] = root[root[k]]
+    if root == list(range(len(refs))):
         return words, refs
-    out = [f"<obj{merged[int(m.group(1)) - 1] + 1}>" if (m := _PLACEHOLDER.fullmatch(w)) else w for w in words]
-    return out, kept
+    said = [root[int(m.group(1)) - 1] if (m := _PLACEHOLDER.fullmatch(w)) else w for w in words]
+    order = list(dict.fromkeys(w for w in said if isinstance(w, int)))
+    out = [f"<obj{order.index(w) + 1}>" if isinstance(w, int) else w for w in said]
+    return out, [refs[k] for k in order]
 
 
 def abstract_program(tokens: list[str], refs: list[Ref]) -> list[str]:
