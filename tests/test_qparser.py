@@ -19,9 +19,9 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (QuestionParser, height_as_aloft, noun_phrase_as_question, program_shape,
-                                     request_as_imperative, reversed_as_said, reversed_reading, synonyms,
-                                     time_clause_last, well_formed)
+from dynclevr.language.parse import (QuestionParser, height_as_aloft, named_attribute, noun_phrase_as_question,
+                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
+                                     synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -257,7 +257,11 @@ def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_
                                                                                           "what is the speed of"),)
     assert noun_phrase_as_question(tokenize("the colour of the thing that floats?"))[0][:4] == ["what", "is", "the",
                                                                                                "color"]
-    for text in ("What is the speed of the red car?", "Is the speed of the red car high?"):
+    # 'tell me' with a motion's noun phrase, which the grammar never says ('tell me how fast ...' it does)
+    for text in ("tell me the speed of the red car at first", "tell me the red car's speed at first"):
+        assert noun_phrase_as_question(tokenize(text))[0][:2] == ["what", "is"], text
+    for text in ("What is the speed of the red car?", "Is the speed of the red car high?",
+                 "Tell me the speed at which the red car is moving.", "Tell me the color of the thing that floats."):
         assert noun_phrase_as_question(tokenize(text)) == (tokenize(text), ()), text
     assert height_as_aloft(tokenize("is the jet high above the ground?"))[0] == tokenize("is the jet up above the "
                                                                                          "ground?")
@@ -306,6 +310,20 @@ def test_a_reading_that_asks_the_opposite_of_the_question_is_refused():
         assert not reversed_reading(tokenize(text), program), text
     for e in synthesize(3000, 11, "all", augmented=True):
         assert not reversed_reading(tokenize(e.text), e.program.split()), e.text
+
+
+def test_an_attribute_of_an_object_the_question_names_is_refused():
+    """'What is the color of the red sedan?' asks what no family asks (the decoder's nearest reading is its collision
+    partner's colour); the attribute of an object described by what it does stays in scope, and so does every
+    wording of the grammar."""
+    partner = "Events <obj1> get_all_col_partners unique query_attributes[color]".split()
+    for text in ("What is the color of the red sedan?", "What shape is the blue bus?", "what color is the sedan"):
+        assert named_attribute(delexicalise(tokenize(text))[0], partner), text
+    for text in ("What is the color of the thing the red sedan hits?", "What color is the object that hits the bus?"):
+        assert not named_attribute(delexicalise(tokenize(text))[0], partner), text
+    for e in synthesize(3000, 14, "all", augmented=True):
+        said, refs = delexicalise(tokenize(e.text))
+        assert not named_attribute(said, abstract_program(e.program.split(), refs)), e.text
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):
@@ -525,6 +543,12 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
         "Can you tell me the speed of the red sedan at the start?": f"{red} start query_moving_velocity",
         "I'd like to know whether the red sedan hits the blue bus.":
             f"Events {red} filter_collision {blue} filter_collision exist",
+        # terse, a clause naming the object before its pronoun, a shorter mention said first once the clause is last
+        "speed of the red sedan at start?": f"{red} start query_moving_velocity",
+        "tell me the red sedan's speed at the start?": f"{red} start query_moving_velocity",
+        "Once the red sedan shows up, how fast is it moving?": f"{red} {red} come_in_frame query_moving_velocity",
+        "At the instant the red sedan and the blue bus collide, is the sedan travelling fast?":
+            f"{red} Events {red} filter_collision {blue} filter_collision unique get_frame is_moving_velocity[fast]",
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text

@@ -285,7 +285,7 @@ class QuestionParser:
             return Parse(None, "the question matches no known question family", p)
         if p < self.params.min_confidence:
             return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
-        reverse = reversed_reading(words, abstract)
+        reverse = reversed_reading(words, abstract) or named_attribute(words, abstract)
         if reverse:
             return Parse(None, reverse, p)
         unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
@@ -319,14 +319,23 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 
 QUERY_NOUNS = {"speed", "velocity", "direction", "heading", "color", "type", "shape", "kind", "sort"}
+MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
 
 
 def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
-    thing that floats?') read as 'what is ...'; with the words read so, or the words as they are and ()."""
-    k = 1 if words[:1] == ["the"] else 0
-    if words[k:k + 1] and words[k] in QUERY_NOUNS and words[k + 1:k + 2] == ["of"]:
+    thing that floats?'), or asked for by 'tell me' where the grammar's 'tell me' never does ('tell me the speed of
+    the red car', 'tell me the red car's direction'; it says 'tell me how fast ...'), read as 'what is ...'; with
+    the words read so, or the words as they are and ()."""
+    told = words[:2] == ["tell", "me"]
+    k = 2 * told + (words[2 * told:2 * told + 1] == ["the"])
+    nouns = MOTION_NOUNS if told else QUERY_NOUNS
+    if words[k:k + 1] and words[k] in nouns and words[k + 1:k + 2] == ["of"]:
         return ["what", "is", "the"] + words[k:], ((" ".join(words[:k + 2]), f"what is the {words[k]} of"),)
+    if told and k == 3:   # 'tell me the red car's speed'
+        end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
+        if end > k and words[end:end + 2] == ["'", "s"] and words[end + 2:end + 3] and words[end + 2] in nouns:
+            return ["what", "is"] + words[2:], (("tell me", "what is"),)
     return words, ()
 
 
@@ -399,6 +408,26 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
             if ops.intersection(asked) and hit:
                 return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
                         "way round and take the opposite answer")
+    return ""
+
+
+ATTRIBUTE_NOUNS = {"color", "shape", "type", "kind", "sort"}
+
+
+def named_attribute(words: list[str], abstract: list[str]) -> str:
+    """Why an attribute query asks what the question itself names ('What is the color of the red sedan?', 'What shape
+    is the blue bus?': no question here asks it; the decoder's nearest reading is a collision partner's), or ''."""
+    if not any(t.startswith("query_attributes") for t in abstract):
+        return ""
+    for k, w in enumerate(words):
+        if w not in ATTRIBUTE_NOUNS:
+            continue
+        rest = [v for v in words[k + 1:k + 4] if v not in ("of", "is", "the", "a", "an")]
+        if rest[:1] and rest[0].startswith("<obj") and words[k + 1] in ("of", "is") and \
+                words[words.index(rest[0], k) + 1:][:1] in ([], ["?"], ["."]):
+            return (f"the question asks the {w} of an object it names itself, which no question here asks (ask the "
+                    f"{w} of the object that collides with it, or that is static, slow, fast, accelerating or "
+                    "floating)")
     return ""
 
 
