@@ -23,6 +23,8 @@ def test_collision_events_count_by_pair_and_frame_tolerance():
     assert (s["collision_precision"], s["collision_recall"]) == (2 / 3, 1.0)    # within 6 frames
     assert abs(s["collision_f1"] - 0.8) < 1e-9
     assert abs(s["collision_f1_strict"] - 2 * (1 / 3) * 0.5 / (1 / 3 + 0.5)) < 1e-9   # within 3: only (1, 4)
+    # who hits whom, at any frame: both true pairs found, one pair that never collided
+    assert (s["collision_pair_precision"], s["collision_pair_recall"]) == (2 / 3, 1.0)
 
 
 def test_recall_of_what_a_viewer_can_see_leaves_out_the_hidden():

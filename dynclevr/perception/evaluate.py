@@ -150,6 +150,10 @@ def scene_stats(truth: Scene4D, est: Scene4D, labels_cfg: dict, future: bool = F
         s[key + "_in_sight"] = len(used & in_sight)
     s.update(events_true=len(true_events), events_est=len(merge_events(est.collisions, merge)),
              events_in_sight=len(in_sight))
+    # who hits whom, at any frame: what the factual collision questions read (an unmatched estimate's pair is false)
+    true_pairs = {e.pair() for e in true_events}
+    est_pairs = {frozenset((to_truth.get(e.a, ("est", e.a)), to_truth.get(e.b, ("est", e.b)))) for e in est.collisions}
+    s.update(pairs_tp=len(true_pairs & est_pairs), pairs_est=len(est_pairs), pairs_true=len(true_pairs))
     if future:
         true_pairs = {e.pair() for e in future_events(truth, merge) if {e.a, e.b} <= seen}
         est_pairs = _future_pairs(est, to_truth, seen, merge)
@@ -239,6 +243,7 @@ def summarise(stats: list[dict]) -> dict:
     er = total("events_tp") / max(total("events_true"), 1)
     sp = total("events_tp_strict") / max(total("events_est"), 1)
     sr = total("events_tp_strict") / max(total("events_true"), 1)
+    pp, pr = total("pairs_tp") / max(total("pairs_est"), 1), total("pairs_tp") / max(total("pairs_true"), 1)
     if all("future_tp" in s for s in stats):
         tp, fp, fn = total("future_tp"), total("future_fp"), total("future_fn")
         fut = {"future_pair_precision": tp / max(tp + fp, 1), "future_pair_recall": tp / max(tp + fn, 1),
@@ -265,6 +270,8 @@ def summarise(stats: list[dict]) -> dict:
         "collision_f1_strict": 2 * sp * sr / (sp + sr) if sp + sr else 0.0,
         "collision_recall_in_sight": total("events_tp_in_sight") / max(total("events_in_sight"), 1),
         "collision_recall_in_sight_strict": total("events_tp_strict_in_sight") / max(total("events_in_sight"), 1),
+        "collision_pair_precision": pp, "collision_pair_recall": pr,
+        "collision_pair_f1": 2 * pp * pr / (pp + pr) if pp + pr else 0.0,
     }
 
 
@@ -292,7 +299,9 @@ ROWS = [("detection_precision", "detection precision"),
         ("collision_recall", "collision-event recall"), ("collision_f1", "collision-event F1"),
         ("collision_f1_strict", f"collision-event F1, frame within {STRICT_EVENT_TOLERANCE}"),
         ("collision_recall_in_sight", f"collision-event recall, both vehicles in sight (within {EVENT_TOLERANCE})"),
-        ("collision_recall_in_sight_strict", f"... within {STRICT_EVENT_TOLERANCE}")]
+        ("collision_recall_in_sight_strict", f"... within {STRICT_EVENT_TOLERANCE}"),
+        ("collision_pair_precision", "colliding pairs, any frame (who hits whom): precision"),
+        ("collision_pair_recall", "colliding pairs: recall"), ("collision_pair_f1", "colliding pairs: F1")]
 
 
 def intervals(stats: list[dict], resamples: int, seed: int) -> dict[str, tuple[float, float]]:
