@@ -19,9 +19,9 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (QuestionParser, height_as_aloft, named_attribute, noun_phrase_as_question,
-                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
-                                     synonyms, time_clause_last, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, height_as_aloft, named_attribute,
+                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
+                                     reversed_reading, synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
@@ -230,6 +230,21 @@ def test_a_clause_of_time_said_first_is_also_read_last():
         "how fast is the cyan tandem bike moving once it shows up?")
     assert time_clause_last(tokenize("When the bus hits the red car, is the car faster than it?")) == tokenize(
         "is the car faster than it when the bus hits the red car?")
+
+
+def test_the_time_a_fronted_clause_names_chooses_between_the_readings():
+    """'At impact, ...' read as said asks at the start, surely; put last, at the collision, less surely: the clause
+    says which. Without a time in the clause, or where both or neither reading asks at it, the surer reading wins."""
+    assert clause_time(tokenize("at impact")) == "get_frame"
+    assert clause_time(tokenize("once it first appears")) == "come_in_frame"
+    assert clause_time(tokenize("right at the start")) == "start"
+    assert clause_time(tokenize("in the video")) is None
+    start = Parse("<obj1> <obj2> start slower_velocity".split(), confidence=0.9)
+    impact = Parse("<obj1> <obj2> Events <obj1> filter_collision <obj2> filter_collision unique get_frame "
+                   "slower_velocity".split(), confidence=0.6)
+    assert _chosen([start, impact], "get_frame") is impact
+    assert _chosen([start, impact], None) is start and _chosen([start, impact], "come_in_frame") is start
+    assert _chosen([start, Parse(None, "no program")], "get_frame") is start
 
 
 def test_a_question_asked_as_a_request_is_read_as_tell_me():
@@ -549,6 +564,8 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
         "Once the red sedan shows up, how fast is it moving?": f"{red} {red} come_in_frame query_moving_velocity",
         "At the instant the red sedan and the blue bus collide, is the sedan travelling fast?":
             f"{red} Events {red} filter_collision {blue} filter_collision unique get_frame is_moving_velocity[fast]",
+        "At impact, is the red sedan moving slower than the blue bus?":
+            f"{red} {blue} Events {red} filter_collision {blue} filter_collision unique get_frame slower_velocity",
     }
     for text, program in cases.items():
         assert parser.parse(text) == program.split(), text

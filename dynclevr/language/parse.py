@@ -170,14 +170,18 @@ class QuestionParser:
 
     def analyse_batch(self, texts: list[str]) -> list[Parse]:
         # Each question is read as said and, where it opens with a clause of time, with the clause put last
-        # (`time_clause_last`); the reading the decoder is surer of wins, the question as said on a tie.
+        # (`time_clause_last`); where the two readings differ and the clause names its time, the reading asking at
+        # that time wins (`clause_time`), else the one the decoder is surer of, the question as said on a tie.
         readings: list[list[Parse]] = [[] for _ in texts]
+        times: list[str | None] = [None] * len(texts)
         todo = []
         for i, t in enumerate(texts):
             words, why, read_as = self._words(t)
             if why:
                 readings[i].append(Parse(None, why, read_as=read_as))
                 continue
+            if time_clause_last(words):
+                times[i] = clause_time(words[:words.index(",")])
             for order in filter(None, (words, time_clause_last(words))):
                 said, named = delexicalise(order)
                 moved = " ".join(order) if order is not words else ""
@@ -195,8 +199,7 @@ class QuestionParser:
             for (i, k, order, refs), (ids, p, attended) in zip(chunk, decoded):
                 readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
                                          reordered=readings[i][k].reordered)
-        # max keeps the first of equals: the question as said, whose reason stands when no reading parses
-        return [max(parses, key=lambda p: p.confidence if p.program is not None else -1.0) for parses in readings]
+        return [_chosen(parses, time) for parses, time in zip(readings, times)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -527,6 +530,35 @@ def _antecedent_first(main: list[str], clause: list[str]) -> tuple[list[str], li
     if start and clause[start - 1] in DETERMINERS:
         start -= 1
     return main[:k] + clause[start:end] + main[k + 1:], clause[:start] + ["it"] + clause[end:]
+
+
+# What a clause of time says its time is, by the operation that asks at it
+COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view"}
+IMPACT_WORDS = {"impact", "collision", "collide", "collides", "hit", "hits", "crash", "crashes", "bump", "bumps",
+                "strike", "strikes", "smash", "smashes", "slam", "slams", "contact", "meet", "meets"}
+START_WORDS = {"start", "starts", "beginning", "begins", "begin", "initially", "opening", "outset", "onset"}
+
+
+def clause_time(clause: list[str]) -> str | None:
+    """The operation asking at the time a fronted clause names ('at impact': get_frame; 'once it appears':
+    come_in_frame; 'right at the start': start), or None."""
+    for op, cues in (("come_in_frame", COMES_IN_WORDS), ("get_frame", IMPACT_WORDS), ("start", START_WORDS)):
+        if cues.intersection(clause):
+            return op
+    return None
+
+
+def _chosen(parses: list[Parse], time: str | None) -> Parse:
+    """Of a question's readings, the one asking at the time its fronted clause names where exactly one of two
+    different programs does ('At impact, is X slower than Y?' said as is reads as at the start); else the one the
+    decoder is surer of (max keeps the first of equals: the question as said, whose reason stands when no reading
+    parses)."""
+    parsed = [p for p in parses if p.program is not None]
+    if time and len(parsed) == 2 and parsed[0].program != parsed[1].program:
+        fit = [p for p in parsed if time in p.program]
+        if len(fit) == 1:
+            return fit[0]
+    return max(parses, key=lambda p: p.confidence if p.program is not None else -1.0)
 
 
 def _second_mentions(said: list[str], named: list, words: list[str], refs: list) -> tuple[tuple[str, str], ...]:
