@@ -626,6 +626,20 @@ def test_synonym_lexicon_stands_in_only_for_unknown_words_with_known_ones():
     assert parser.parse("Did the pink sedan ram into the blue tractor?") is None
 
 
+def test_a_long_misspelt_word_is_read_as_the_one_known_word_an_edit_away():
+    """'acelerating', 'stationery': a sentence word of 7 or more letters one edit from exactly one known word is that
+    word (shown among the words read as others); real words stay unknown, and a colour or vehicle no catalogue has
+    stays a question about no object."""
+    parser = QuestionParser.load()
+    red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
+    typo = parser.analyse_batch(["Is the red sedan acelerating at the start?"])[0]
+    assert typo.program == f"{red} start is_accelerating".split() and ("acelerating", "accelerating") in typo.read_as
+    for word in ("sitting", "bouncing", "fastest", "wreckage"):
+        assert parser._words(f"Is the red sedan {word} at the start?")[0][4] == word, word
+    for text in ("Is the magenta sedan floating?", "Is the red limousine fast?"):
+        assert parser.parse(text) is None, text
+
+
 def test_an_unknown_word_is_read_by_its_stem_but_never_an_object_word():
     parser = QuestionParser.load()
     assert parser._stand_in("zooms") == ["zooming"]          # the known word of its stem with its ending

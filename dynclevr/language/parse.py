@@ -58,6 +58,7 @@ SETTINGS = "parser.json"   # dims, ensemble size, params, the training programs'
 MODEL = "model.pt"
 OBJECT_LEXICON = Vocab(sorted(OBJECT_WORDS))
 MAX_WORDS = 200      # far beyond any template question; bounds the cost of a pasted essay
+TYPO_LETTERS = 7     # a sentence word this long with one known word one edit away is that word misspelt
 BATCH = 256
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.txt")
 WORDNET_FILE = Path(__file__).with_name("wordnet.txt")   # made by dynclevr/language/wordnet.py
@@ -221,9 +222,13 @@ class QuestionParser:
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
-        # Typos are fixed only towards object words, which the copy path must carry exactly; a misspelt sentence
-        # word is an unknown word (fixing it towards the nearest word made 'black' 'back' and 'pink' 'pick').
-        words = [w if w in self.known else (OBJECT_LEXICON.closest(w) or w) for w in words]
+        # Typos are fixed towards object words, which the copy path must carry exactly, and towards a sentence word
+        # only in words of TYPO_LETTERS or more ('acelerating', 'stationery'): a short one has too many neighbours
+        # (fixing every word made 'black' 'back' and 'pink' 'pick'; 'sitting' would be 'hitting').
+        fixed = {w: OBJECT_LEXICON.closest(w) or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w
+                 for w in words if w not in self.known}
+        read_as += tuple((w, k) for w, k in fixed.items() if k != w and k not in OBJECT_WORDS)
+        words = [fixed.get(w, w) for w in words]
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
