@@ -398,9 +398,14 @@ def test_a_word_after_a_whole_description_is_the_sentences(synthetic_fit):
 
 
 def test_a_count_is_no_question_here(synthetic_fit):
-    """No program counts, so 'how many' is out of scope whatever the rest of the question reads like."""
+    """No program counts or explains, so 'how many' and 'why' are out of scope whatever the rest of the question
+    reads like."""
     count = synthetic_fit.parser.analyse_batch(["How many wheels does the green sedan have at the start?"])[0]
     assert count.program is None and count.reason.startswith("the question asks for a count")
+    # nor does any explain: 'why' reads like the collision it asks the cause of
+    for text in ("Why did the green sedan hit the red bus?", "How come the green sedan hit the red bus?"):
+        why = synthetic_fit.parser.analyse_batch([text])[0]
+        assert why.program is None and why.reason == "the question asks why, which no question here answers", text
 
 
 def test_blind_baseline_majority_per_family():

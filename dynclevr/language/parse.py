@@ -1,13 +1,14 @@
 """`QuestionParser`: question text -> program tokens (postfix), or unparsed with a one-line reason, never a crash.
 
 A question is unparsed (counted wrong) rather than given a confident wrong program when
-- it asks for a count ('how many': no program counts);
+- it asks for a count ('how many': no program counts) or a cause ('why': no program explains);
 - it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
-  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green'; a word of the synonym
-  lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video'; failing
-  that, a word with the stem of a known word or of a lexicon word counts as that word: 'hovered' as 'hovering'; and
-  last, a word of WordNet's lexicon, WORDNET_FILE, as the known word it shares a main sense with: 'journeying' as
-  'travelling');
+  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green', and so does a word of
+  TYPO_LETTERS or more one typo away from exactly one known word: 'acelerating' as 'accelerating'; a word of the
+  synonym lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video';
+  failing that, a word with the stem of a known word or of a lexicon word counts as that word: 'hovered' as
+  'hovering'; and last, a word of WordNet's lexicon, WORDNET_FILE, as the known word it shares a main sense with:
+  'journeying' as 'travelling');
 - a word it does not know carries the question: some step of the decoding attends to it more than
   `max_unknown_attention` ("Is the red sedan *bigger* than the blue bus?" would be read as faster or slower by
   the words around it), while an unknown word the decoding looks past (a filler: "really", "please") is harmless;
@@ -233,6 +234,8 @@ class QuestionParser:
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
             return [], "the question asks for a count ('how many'), which no question here answers", read_as
+        if words[:1] == ["why"] or words[:2] == ["how", "come"]:
+            return [], "the question asks why, which no question here answers", read_as
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as
