@@ -329,8 +329,9 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
-QUERY_NOUNS = {"speed", "velocity", "direction", "heading", "color", "type", "shape", "kind", "sort"}
 MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
+ATTRIBUTE_NOUNS = {"color", "shape", "type", "kind", "sort"}
+QUERY_NOUNS = MOTION_NOUNS | ATTRIBUTE_NOUNS
 
 
 def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -420,9 +421,6 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
                 return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
                         "way round and take the opposite answer")
     return ""
-
-
-ATTRIBUTE_NOUNS = {"color", "shape", "type", "kind", "sort"}
 
 
 def named_attribute(words: list[str], abstract: list[str]) -> str:
