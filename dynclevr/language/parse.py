@@ -351,7 +351,7 @@ def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[st
     return words, ()
 
 
-ALOFT_AFTER = {"above", "over", "in", "up", "off", "aloft"}
+ALOFT_AFTER = {"above", "over", "in", "up", "off", "aloft"}   # words after "high" that make it a height
 
 
 def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
