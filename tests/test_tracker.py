@@ -11,9 +11,9 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.config import Config
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.detector_data import azimuth, yaw_of
-from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, break_runs, front_back_heading, heading_motion,
-                                          impacts, path_motion, ray_weights, segment_motion, slope, smoothed_motion,
-                                          spin)
+from dynclevr.perception.dynamics import (QuadraticFit, VerticalMotion, break_runs, floating_vz, front_back_heading,
+                                          heading_motion, impacts, path_motion, ray_weights, segment_motion, slope,
+                                          smoothed_motion, spin)
 from dynclevr.perception.model import ParserModel
 from dynclevr.perception.place import SUBTYPE_NAMES, resting_height
 from dynclevr.perception.tracker import SceneParser, Track, own_height
@@ -307,6 +307,26 @@ def test_two_floating_planes_struck_in_the_air_float_on_at_a_constant_vertical_s
         j = int(np.argmin([np.linalg.norm(est.position[0, j] - tr.position[0, i]) for j in range(len(est.objects))]))
         assert np.abs(est.velocity[after, j, 2] - tr.velocity[after, i, 2]).max() < 0.2
         assert labels.floating[after, j].mean() > 0.9
+
+
+@pytest.mark.parametrize("kick, at", [(0.6, 40), (-0.9, 70), (0.0, None)], ids=["climbs", "sinks", "held"])
+def test_a_floating_planes_vertical_speed_changes_where_an_unfound_impact_kicked_it(kick, at):
+    """A floating plane starts without vertical velocity and keeps whatever an impact gives it: heights held, then
+    on a line from an impact the parser did not find, read through the head's drift (0.1 m/s), its noise, missing
+    frames and a detection placed 1.5 m off give that line's slope after the impact and none before it; a plane
+    that only drifts stays level."""
+    rng = np.random.default_rng(1)
+    t = np.arange(120) / FPS
+    kicked = np.zeros(120) if at is None else np.where(t > at / FPS, kick * (t - at / FPS), 0.0)
+    z = 2.3 + 0.1 * t + kicked + rng.normal(0.0, 0.03, 120)
+    z[rng.random(120) < 0.1] = np.nan
+    z[5] += 1.5
+    vz = floating_vz(z, FPS, 16, held=True)
+    if at is None:
+        assert np.abs(vz).max() == 0.0
+    else:
+        assert np.abs(vz[:at - 10]).max() == 0.0
+        assert np.abs(vz[at + 10:] - kick).max() < 0.2
 
 
 @pytest.mark.parametrize("falls", [True, False], ids=["falling", "floating"])

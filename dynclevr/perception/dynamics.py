@@ -157,15 +157,51 @@ class VerticalMotion:
         return -self.gravity * t if self.z0 - 0.5 * self.gravity * t * t > self.rest else None
 
 
-def floating_vz(heights: np.ndarray, fps: int, min_samples: int) -> float | None:
-    """A floating body's vertical speed over a stretch between impacts from its measured heights [n] (NaN: no
-    detection): its force cancels gravity, so nothing but an impact changes its vertical velocity and its heights
-    lie on a line (fitted robust to bad detections). None with fewer than min_samples measurements."""
+def floating_vz(heights: np.ndarray, fps: int, min_samples: int, held: bool = False) -> np.ndarray | None:
+    """A floating body's vertical velocity [n] over a stretch from its measured heights [n] (NaN: no detection): its
+    force cancels gravity, so nothing but an impact changes its vertical velocity, and its heights lie on lines
+    (fitted robust to bad detections) that change slope at impacts. `held`: the stretch starts at the body's start,
+    where it has none (REFERENCE.md section 1), so its first line is level. The parser misses some impacts (a plane
+    grazed by another, a ground vehicle hitting its belly: the collision classifier reads horizontal motions), so a
+    line splits in two where that lowers its cost by FLOAT_BREAK_COST and the slope changes by FLOAT_KICK or more:
+    the head's heights drift by a decimetre or two over a whole track (its distance error moves the centre along the
+    camera ray), an impact's kick is metres per second. None with fewer than min_samples measurements."""
     seen = np.isfinite(heights)
     if seen.sum() < min_samples:
         return None
-    t = np.arange(len(heights))[seen] / fps
-    return float(_robust_fit(t, heights[seen, None], min_samples, quadratic=False)[1, 0])
+    t = np.arange(len(heights)) / fps
+
+    def line(a: int, b: int, level: bool) -> tuple[float, float] | None:
+        """(cost, slope) of the line through the heights of frames a..b."""
+        ok = seen[a:b]
+        if ok.sum() < min_samples:
+            return None
+        tt, zz = t[a:b][ok], heights[a:b][ok]
+        if level:
+            coef = float(np.median(zz)), 0.0
+        else:
+            coef = _robust_fit(tt, zz[:, None], min_samples, quadratic=False)[:, 0]
+        return float((np.minimum(np.abs(zz - coef[0] - coef[1] * tt), TRUNCATE) ** 2).sum()), float(coef[1])
+
+    pieces = [(0, len(heights), held, line(0, len(heights), held))]
+    done = []
+    while pieces:   # split each piece at its best break while one pays (binary segmentation)
+        a, b, level, (cost, slope) = pieces.pop()
+        best = None
+        for s in range(a + min_samples, b - min_samples + 1):
+            left, right = line(a, s, level), line(s, b, False)
+            if left and right and abs(right[1] - left[1]) >= FLOAT_KICK and (
+                    best is None or left[0] + right[0] < best[0]):
+                best = left[0] + right[0], s, left, right
+        if best is not None and best[0] + FLOAT_BREAK_COST < cost:
+            _, s, left, right = best
+            pieces += [(a, s, level, left), (s, b, False, right)]
+        else:
+            done.append((a, b, slope))
+    vz = np.zeros(len(heights))
+    for a, b, slope in done:
+        vz[a:b] = slope
+    return vz
 
 
 def front_back_heading(yaws: np.ndarray, support_cap: int, yaw_sigma: float, measure_yaw: float,
@@ -263,6 +299,8 @@ def impacts(breaks: list[int], n: int, gap: int) -> list[int]:
 
 SPEED_GRID = np.arange(0.0, 16.0, 0.02)    # m/s: the start speeds segment_motion tries (the fastest body: ~12.4)
 TRUNCATE = 0.3                              # metres: segment_motion's cost of a measurement at most this far off
+FLOAT_BREAK_COST = 0.1                      # m^2: floating_vz splits a line where that lowers its cost this much
+FLOAT_KICK = 0.3                            # m/s: ... and its slope changes this much (the head's drift: ~0.1)
 
 
 def segment_motion(z: np.ndarray, fps: int, accel: float, min_samples: int, speeds: np.ndarray = SPEED_GRID,
