@@ -408,6 +408,24 @@ def test_a_count_is_no_question_here(synthetic_fit):
         assert why.program is None and why.reason == "the question asks why, which no question here answers", text
 
 
+def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
+    """An unknown word where the question says what it asks ('the mass of', 'how heavy', 'what size') is the property
+    asked, and 'where is it' without a word of motion asks a place: out of scope; 'where is it heading' and a known
+    word there are read."""
+    parser = synthetic_fit.parser
+    for text, asked in (("What is the mass of the green sedan?", "the 'mass'"), ("How heavy is the red bus?",
+                        "how 'heavy'"), ("At the start, what size is the green sedan?", "the 'size'"),
+                        ("Tell me the weight of the red bus.", "the 'weight'")):
+        parse = parser.analyse_batch([text])[0]
+        assert parse.program is None and parse.reason.startswith(f"the question asks {asked}, a word the parser "
+                                                                 "does not know"), text
+    place = parser.analyse_batch(["Where is the green sedan at the end of the video?"])[0]
+    assert place.program is None and place.reason.startswith("the question asks where an object is")
+    for text in ("Where is the green sedan heading at the start?", "What is the moving velocity of the green sedan "
+                 "at the beginning?"):
+        assert not parser.analyse_batch([text])[0].reason.startswith("the question asks"), text
+
+
 def test_blind_baseline_majority_per_family():
     b = blind_baseline(["f1", "f1", "f1", "f2", "f2"], ["true", "false", "true", "red", "blue"])
     assert b == {"majority": {"f1": "true", "f2": "blue"}, "overall": "true"}

@@ -220,6 +220,7 @@ class QuestionParser:
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
+        said = words
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
@@ -236,6 +237,9 @@ class QuestionParser:
             return [], "the question asks for a count ('how many'), which no question here answers", read_as
         if words[:1] == ["why"] or words[:2] == ["how", "come"]:
             return [], "the question asks why, which no question here answers", read_as
+        unasked = unknown_property(words, self.known, said)
+        if unasked:
+            return [], unasked, read_as
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as
@@ -394,6 +398,48 @@ REVERSERS = {
 }
 ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
 ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': not accelerating
+
+
+# What a question asks is said at its head ('what is the speed of', 'how fast is', 'what colour is', 'where is it
+# heading'): a word there the parser does not know is the property asked, and no other word tells the decoder what
+# it is ('what is the mass of the jet' read as a collision partner's colour, 'how heavy is it' as its speed).
+ASKING = {"what", "which"}
+TELLING = (["tell", "me"], ["describe"], ["give", "me"])
+COPULAS = {"is", "was", "are", "were", "s", "'"}
+WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes", "went", "travel", "travels",
+                               "drive", "drives", "fly", "flies", "proceed", "proceeds", "proceeding", "bound"}
+
+
+def unknown_property(words: list[str], known, said: list[str]) -> str:
+    """Why the question `words` (`said`: before unknown words were read as known ones) asks a property no question
+    here asks ('' when it does not): its head ('what is the _ of', 'tell me the _ of', 'what _ is', 'how _ is';
+    after a clause of time said first) turns on a word the parser does not know, or it asks where an object is
+    rather than where it is going (no word of motion, said or read, and no verb's '-ing' or '-ed' form)."""
+    head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+    asked = None
+    if head[:1] and head[0] in ASKING:
+        rest = head[1:]
+        while rest[:1] and rest[0] in COPULAS:
+            rest = rest[1:]
+        if rest[:1] == ["the"] and rest[2:3] in (["of"], ["for"]):
+            asked = rest[1]
+        elif rest[1:2] and rest[1] in COPULAS | {"does", "did", "do"}:
+            asked = rest[0]
+    for opener in TELLING:
+        if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
+                head[len(opener) + 2:len(opener) + 3] == ["of"]:
+            asked = head[len(opener) + 1]
+    what = f"the '{asked}'" if asked else ""
+    if head[:1] == ["how"] and head[2:3] and head[2] in COPULAS | {"does", "did", "do"}:
+        asked, what = head[1], f"how '{head[1]}'"
+    if asked is not None and asked not in known and not asked.startswith("<"):
+        return (f"the question asks {what}, a word the parser does not know (the questions here ask a vehicle's "
+                "speed, direction of motion, colour or type, and about its collisions)")
+    if head[:1] == ["where"] and not WHERE_MOTION & set(head + said) and \
+            not any(w.endswith(("ing", "ed")) and w not in OBJECT_WORDS for w in head + said):
+        return ("the question asks where an object is, which no question here asks (they ask which way it is "
+                "moving)")
+    return ""
 
 
 def reversed_reading(words: list[str], abstract: list[str]) -> str:
