@@ -410,8 +410,8 @@ def test_a_count_is_no_question_here(synthetic_fit):
 
 def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
     """An unknown word where the question says what it asks ('the mass of', 'how heavy', 'what size') is the property
-    asked, and 'where is it' without a word of motion asks a place: out of scope; 'where is it heading' and a known
-    word there are read."""
+    asked, 'where is it' without a word of motion asks a place and 'is there a red sedan' whether it is there: out of
+    scope; 'where is it heading' and a known word there are read."""
     parser = synthetic_fit.parser
     for text, asked in (("What is the mass of the green sedan?", "the 'mass'"), ("How heavy is the red bus?",
                         "how 'heavy'"), ("At the start, what size is the green sedan?", "the 'size'"),
@@ -421,6 +421,8 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
                                                                  "does not know"), text
     place = parser.analyse_batch(["Where is the green sedan at the end of the video?"])[0]
     assert place.program is None and place.reason.startswith("the question asks where an object is")
+    there = parser.analyse_batch(["Is there a green sedan in the video?"])[0]
+    assert there.program is None and there.reason.startswith("the question asks whether an object is there")
     for text in ("Where is the green sedan heading at the start?", "What is the moving velocity of the green sedan "
                  "at the beginning?"):
         assert not parser.analyse_batch([text])[0].reason.startswith("the question asks"), text

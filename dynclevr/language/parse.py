@@ -406,6 +406,7 @@ ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': no
 ASKING = {"what", "which"}
 TELLING = (["tell", "me"], ["describe"], ["give", "me"])
 COPULAS = {"is", "was", "are", "were", "s", "'"}
+BARE_MENTION = {"a", "an", "any", "some", "the", "in", "this", "video", "clip", "scene", "?", "."}
 WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes", "went", "travel", "travels",
                                "drive", "drives", "fly", "flies", "proceed", "proceeds", "proceeding", "bound"}
 
@@ -413,8 +414,9 @@ WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes
 def unknown_property(words: list[str], known, said: list[str]) -> str:
     """Why the question `words` (`said`: before unknown words were read as known ones) asks a property no question
     here asks ('' when it does not): its head ('what is the _ of', 'tell me the _ of', 'what _ is', 'how _ is';
-    after a clause of time said first) turns on a word the parser does not know, or it asks where an object is
-    rather than where it is going (no word of motion, said or read, and no verb's '-ing' or '-ed' form)."""
+    after a clause of time said first) turns on a word the parser does not know, it asks whether an object is there
+    ('is there a red sedan?', nothing said but the object), or it asks where an object is rather than where it is
+    going (no word of motion, said or read, and no verb's '-ing' or '-ed' form)."""
     head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
     asked = None
     if head[:1] and head[0] in ASKING:
@@ -435,6 +437,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if asked is not None and asked not in known and not asked.startswith("<"):
         return (f"the question asks {what}, a word the parser does not know (the questions here ask a vehicle's "
                 "speed, direction of motion, colour or type, and about its collisions)")
+    if head[:2] in (["is", "there"], ["are", "there"]) and set(head[2:]) <= OBJECT_WORDS | BARE_MENTION:
+        return "the question asks whether an object is there, which no question here asks (they ask what it does)"
     if head[:1] == ["where"] and not WHERE_MOTION & set(head + said) and \
             not any(w.endswith(("ing", "ed")) and w not in OBJECT_WORDS for w in head + said):
         return ("the question asks where an object is, which no question here asks (they ask which way it is "
