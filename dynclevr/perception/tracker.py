@@ -914,12 +914,13 @@ class SceneParser:
             report = None
             if self.p["smooth_window"]:
                 if k.start <= cut < k.start + n:
-                    causal_cut[i] = pos[cut, i].copy(), vel[cut, i].copy(), bool(eng[cut, i])
+                    # the observed frames alone, seen whole
+                    m = cut - k.start + 1
+                    vc, ec = vel[k.start:cut + 1, i].copy(), eng[k.start:cut + 1, i].copy()
+                    self._vertical(k, vc)
+                    causal_cut[i] = pos[cut, i].copy(), vc[-1].copy(), bool(eng[cut, i])
                     if self.p["physics_prior"] and self.p["segment_motion"]:
-                        # the observed frames alone, seen whole: the stretch up to the cut under the engine's motion
-                        m = cut - k.start + 1
-                        vc, ec = vel[k.start:cut + 1, i].copy(), eng[k.start:cut + 1, i].copy()
-                        self._vertical(k, vc)
+                        # the stretch up to the cut under the engine's motion
                         self._segment_motion(k, np.array(k.z[:m]), pos[k.start:cut + 1, i], vc, ec, cut=True)
                         causal_cut[i] = pos[cut, i].copy(), vc[-1], bool(ec[-1])
                 v0, report = self._smooth(k, pos[sl, i], vel[sl, i], eng[sl, i], v0)
@@ -980,7 +981,9 @@ class SceneParser:
             return
         first = k.first_break(len(vel))
         if k.vertical.floating:
-            vz = dynamics.floating_vz(np.array(k.z)[:first, 2], self.fps, 2 * self.p["min_fit_frames"], held=True)
+            # (without smoothing the arrays are the causal filter's, and a fit to later heights is not: held level)
+            vz = dynamics.floating_vz(np.array(k.z)[:first, 2], self.fps, 2 * self.p["min_fit_frames"], held=True) \
+                if self.p["smooth_window"] else None
             vel[:first, 2] = 0.0 if vz is None else vz
             return
         for j in range(first):
