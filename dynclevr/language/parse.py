@@ -406,6 +406,7 @@ ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': no
 ASKING = {"what", "which"}
 TELLING = (["tell", "me"], ["describe"], ["give", "me"])
 COPULAS = {"is", "was", "are", "were", "s", "'"}
+AUXILIARIES = COPULAS | {"does", "did", "do"}
 BARE_MENTION = {"a", "an", "any", "some", "the", "in", "this", "video", "clip", "scene", "?", "."}
 WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes", "went", "travel", "travels",
                                "drive", "drives", "fly", "flies", "proceed", "proceeds", "proceeding", "bound"}
@@ -425,14 +426,14 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             rest = rest[1:]
         if rest[:1] == ["the"] and rest[2:3] in (["of"], ["for"]):
             asked = rest[1]
-        elif rest[1:2] and rest[1] in COPULAS | {"does", "did", "do"}:
+        elif rest[1:2] and rest[1] in AUXILIARIES:
             asked = rest[0]
     for opener in TELLING:
         if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
                 head[len(opener) + 2:len(opener) + 3] == ["of"]:
             asked = head[len(opener) + 1]
     what = f"the '{asked}'" if asked else ""
-    if head[:1] == ["how"] and head[2:3] and head[2] in COPULAS | {"does", "did", "do"}:
+    if head[:1] == ["how"] and head[2:3] and head[2] in AUXILIARIES:
         asked, what = head[1], f"how '{head[1]}'"
     if asked is not None and asked not in known and not asked.startswith("<"):
         return (f"the question asks {what}, a word the parser does not know (the questions here ask a vehicle's "
