@@ -15,6 +15,7 @@ import torch
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError
 from dynclevr.config import Config, ConfigError
+from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
@@ -22,7 +23,8 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, height_as_aloft, named_attribute,
                                      noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
                                      reversed_reading, synonyms, time_clause_last, well_formed)
-from dynclevr.language.references import abstract_program, concrete_program, corefer, delexicalise
+from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
+                                          corefer, delexicalise)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -191,6 +193,29 @@ def test_copy_path_for_object_words():
         abstract_program("Objects filter_attributes[cyan] unique start is_static".split(), refs)
     # A lone 'bike' is a bicycle; in a sub-type's name it is that sub-type.
     assert delexicalise(tokenize("Did the red bike hit the road bike?"))[1] == [("red", "bicycle"), ("road_bike",)]
+
+
+def test_the_names_people_give_the_vehicles_are_read_as_the_catalogues():
+    """A vehicle named as people name it, or a sub-type's name hyphenated, run together or said with its category,
+    is read as the catalogue's name before anything else reads the words; no other words change."""
+    cases = {"the cyan double-decker bus": ("the cyan double bus", "double - decker bus"),
+             "the dirt bike": ("the dirtbike", "dirt bike"), "the red fighter jet": ("the red fighter", "fighter jet"),
+             "the red fighter plane": ("the red fighter", "fighter plane"), "a station wagon": ("a wagon", None),
+             "the tandem": ("the tandem bike", "tandem"), "the tandem bicycle": ("the tandem bike", None),
+             "the school-bus": ("the school bus", "school - bus"), "the mountainbike": ("the mountain bike", None),
+             "the gray cruiser motorcycle": ("the gray cruiser", "cruiser motorbike"),
+             "the pick-up truck": ("the truck", "pick - up truck")}
+    for said, (read, name) in cases.items():
+        words, names = catalogue_names(tokenize(said))
+        assert words == read.split() and len(names) == 1, said
+        assert names[0][0] == name or name is None, said
+    for said in ("is the tandem bike moving up in the air ?", "does the red sedan hit the bus - or the car ?",
+                 "the jet , a plane , and the bike"):
+        assert catalogue_names(tokenize(said)) == (tokenize(said), ()), said
+    # every everyday name is one sub-type of the catalogue's
+    for name in EVERYDAY_NAMES:
+        refs = delexicalise(catalogue_names(tokenize(name))[0])[1]
+        assert len(refs) == 1 and len(refs[0]) == 1 and refs[0][0] in SUBTYPES, name
 
 
 def test_a_shorter_second_mention_is_the_same_object():

@@ -46,8 +46,8 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.references import (OBJECT_WORDS, concrete_program, corefer, delexicalise, is_description,
-                                          placeholders)
+from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
+                                          is_description, placeholders)
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
 from dynclevr.questions.programs import OPS, ProgramError
@@ -213,10 +213,11 @@ class QuestionParser:
             return [], "empty question", ()
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
+        words, named = catalogue_names(words)
         words, request = request_as_imperative(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
-        request += asked + aloft
+        request = named + request + asked + aloft
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request

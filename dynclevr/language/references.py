@@ -20,6 +20,56 @@ from dynclevr.questions.programs import ATTRIBUTE_VALUES
 _ALIASES = ((("bike",), "bicycle"),)
 _NAMES = sorted([(tuple(v.split("_")), v) for v in ATTRIBUTE_VALUES] + list(_ALIASES), key=lambda kv: -len(kv[0]))
 OBJECT_WORDS = frozenset(w for name, _ in _NAMES for w in name)
+# What people call the catalogue's vehicles, and how they write its names of two words: read as its own names
+# before anything else reads the words ('the cyan double-decker bus' is 'the cyan double bus', 'the red fighter
+# plane' 'the red fighter'), so a name the grammar never says is neither unparsed nor read as a colour alone.
+EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bus", "double deck bus": "double bus",
+                  "dirt bike": "dirtbike", "mini van": "minivan", "bendy bus": "articulated bus",
+                  "city bus": "regular bus", "tandem": "tandem bike", "bi plane": "biplane", "air liner": "airliner",
+                  "passenger jet": "airliner", "fighter jet": "fighter", "pickup truck": "truck",
+                  "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon",
+                  "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
+                  **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
+                     for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
+# A category as people say it, for a sub-type said with its category ('the fighter plane', 'the sedan car').
+CATEGORY_SAID = {"aeroplane": ("aeroplane", "plane", "aircraft"), "bicycle": ("bicycle", "bike"),
+                 "bus": ("bus", "coach"), "car": ("car", "automobile"), "motorbike": ("motorbike",)}
+
+
+def _written(name: str) -> set[tuple[str, ...]]:
+    """A name of several words as people also write it: hyphenated, or run together ('dirt-bike', 'dirtbike')."""
+    out = {()}
+    for k, word in enumerate(name.split()):
+        out = {w + (word,) for w in out} if k == 0 else ({w + (word,) for w in out} | {w + ("-", word) for w in out}
+                                                        | {w[:-1] + (w[-1] + word,) for w in out})
+    return out
+
+
+_EVERYDAY = sorted({(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
+                                                 *EVERYDAY_NAMES.items()] for w in _written(name)}
+                   | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES
+                      for c in CATEGORY_SAID[SUBTYPES[v][0]]}, key=lambda kv: (-len(kv[0]), kv))
+
+
+def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """['the', 'dirt', '-', 'bike'] -> (['the', 'dirtbike'], (('dirt - bike', 'dirtbike'),)): every vehicle name
+    of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, or a sub-type said with its category, as the
+    catalogue's name; with the names read so."""
+    out, read, i = [], [], 0
+    while i < len(words):
+        hit = next(((w, said) for w, said in _EVERYDAY if tuple(words[i:i + len(w)]) == w), None)
+        if hit is None:
+            out.append(words[i])
+            i += 1
+            continue
+        w, said = hit
+        out += said.split()
+        if " ".join(w) != said:
+            read.append((" ".join(w), said))
+        i += len(w)
+    return out, tuple(read)
+
+
 _CHAIN = re.compile(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique")
 _PLACEHOLDER = re.compile(r"<obj(\d+)>")
 _VALUE = re.compile(r"\[([a-z_]+)\]")
