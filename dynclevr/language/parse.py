@@ -361,11 +361,12 @@ ALOFT_AFTER = {"above", "over", "in", "up", "off", "aloft"}   # words after "hig
 
 def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'high above the ground', 'high in the sky', 'high up' said of a vehicle: up in the air, which the grammar
-    says 'up in the air' ('high' alone is the grammar's speed, as in 'at high speed')."""
+    says 'up in the air' ('high' alone is the grammar's speed, as in 'at high speed'); not 'how high up', which
+    asks a height."""
     out, read = [], []
     for k, w in enumerate(words):
         after = words[k + 1] if k + 1 < len(words) else ""
-        if w == "high" and after in ALOFT_AFTER:
+        if w == "high" and after in ALOFT_AFTER and words[k - 1:k] != ["how"]:
             read.append((f"high {after}", "up" if after == "up" else f"up {after}"))
             if after != "up":
                 out.append("up")
@@ -413,19 +414,25 @@ WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes
                                "drive", "drives", "fly", "flies", "proceed", "proceeds", "proceeding", "bound"}
 
 
-def unknown_property(words: list[str], known, said: list[str]) -> str:
-    """Why the question `words` (`said`: before unknown words were read as known ones) asks a property no question
-    here asks ('' when it does not): its head ('what is the _ of', 'tell me the _ of', 'what _ is', 'how _ is';
-    after a clause of time said first) turns on a word the parser does not know, it asks whether an object is there
-    ('is there a red sedan?', nothing said but the object), or it asks where an object is rather than where it is
-    going (no word of motion, said or read, and no verb's '-ing' or '-ed' form)."""
+# What a question may ask of a place or a size, which no question here asks, however the lexicon reads the word
+# ('position' would be WordNet's 'state', 'far' its 'right', 'close' its 'next', 'high' the grammar's speed)
+SPATIAL = frozenset({"distance", "position", "location", "place", "height", "altitude", "gap", "separation", "size",
+                     "length", "width", "weight", "mass", "far", "close", "near", "high", "low", "tall", "big",
+                     "large", "small", "long", "wide", "heavy", "apart"})
+TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "second"})   # 'at which frame ...'
+
+
+def _asked(words: list[str]) -> tuple[str | None, str]:
+    """The word a question's head asks about, and how it says it: 'what is the _ of' (or 'for', 'between'), 'tell
+    me the _ of', 'what _ is', 'what is the red sedan's _', 'at what _', 'how _ is', 'when does' (after a clause of
+    time said first); (None, '') where the head is none of these."""
     head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
     asked = None
     if head[:1] and head[0] in ASKING:
         rest = head[1:]
         while rest[:1] and rest[0] in COPULAS:
             rest = rest[1:]
-        if rest[:1] == ["the"] and rest[2:3] in (["of"], ["for"]):
+        if rest[:1] == ["the"] and rest[2:3] in (["of"], ["for"], ["between"]):
             asked = rest[1]
         elif rest[1:2] and rest[1] in AUXILIARIES:
             asked = rest[0]
@@ -433,12 +440,39 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
                 head[len(opener) + 2:len(opener) + 3] == ["of"]:
             asked = head[len(opener) + 1]
+    if head[:1] and head[0] in ASKING and head[1:2] and head[1] in COPULAS:   # 'what is the red sedan's _'
+        k = 2 + (head[2:3] == ["the"])
+        while head[k:k + 1] and head[k] in OBJECT_WORDS:
+            k += 1
+        if k > 2 and head[k:k + 2] == ["'", "s"] and head[k + 2:k + 3]:
+            asked = head[k + 2]
+    if head[:1] == ["at"] and head[1:2] and head[1] in ASKING and head[2:3]:   # 'at what height', 'at which frame'
+        asked = head[2]
     what = f"the '{asked}'" if asked else ""
-    if head[:1] == ["how"] and head[2:3] and head[2] in AUXILIARIES:
+    if head[:1] == ["how"] and head[1:2] and (head[2:3] and head[2] in AUXILIARIES or head[1] in SPATIAL):
         asked, what = head[1], f"how '{head[1]}'"
-    if asked is not None and asked not in known and not asked.startswith("<"):
-        return (f"the question asks {what}, a word the parser does not know (the questions here ask a vehicle's "
-                "speed, direction of motion, colour or type, and about its collisions)")
+    if head[:1] == ["when"] and head[1:2] and head[1] in AUXILIARIES | {"will", "would"}:   # not 'when X hits Y, ...'
+        asked, what = "when", "when"
+    return asked, what
+
+
+def unknown_property(words: list[str], known, said: list[str]) -> str:
+    """Why the question `words` (`said`: before unknown words were read as known ones) asks a property no question
+    here asks ('' when it does not): its head (`_asked`) turns on a word the parser does not know, or asks a place
+    or size (SPATIAL) as said or read; it asks whether an object is there ('is there a red sedan?', nothing said
+    but the object), or where an object is rather than where it is going (no word of motion, said or read, and no
+    verb's '-ing' or '-ed' form)."""
+    head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+    asked, what = _asked(words)
+    as_said, what_said = _asked(said)
+    if {asked, as_said} & TIME_ASKED:
+        return ("the question asks when something happens, which no question here asks (they ask about the start, "
+                "a collision or what comes after the video)")
+    why = ("which no question here asks" if {asked, as_said} & SPATIAL else "a word the parser does not know"
+           if asked is not None and asked not in known and not asked.startswith("<") else "")
+    if why:
+        return (f"the question asks {what_said if as_said in SPATIAL else what}, {why} (the questions here ask a "
+                "vehicle's speed, direction of motion, colour or type, and about its collisions)")
     if head[:2] in (["is", "there"], ["are", "there"]) and set(head[2:]) <= OBJECT_WORDS | BARE_MENTION:
         return "the question asks whether an object is there, which no question here asks (they ask what it does)"
     if head[:1] == ["where"] and not WHERE_MOTION & set(head + said) and \
