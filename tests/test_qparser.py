@@ -319,6 +319,9 @@ def test_slowing_down_however_said_is_refused():
                  "Is its speed going down?", "Is the truck getting slower at the start?",
                  "Is the red car coming to a stop?", "Is the car decelerating?"):
         assert reversed_as_said(tokenize(text)).startswith("the question asks whether an object slows down"), text
+    for text in ("Is the car moving at a constant speed?", "Is the bus going at the same speed throughout?",
+                 "Does the car keep a steady speed?", "Is the jet's speed unchanged at the start?"):
+        assert reversed_as_said(tokenize(text)).startswith("the question asks whether an object keeps its speed"), text
     for text in ("Is the bus moving slowly at the start?", "Is the bus slower than the car?",
                  "Is the jet dropping at high speed?", "Had the car come to a stop, would it hit the bus?",
                  "Is the bus getting slower than the car?"):
@@ -443,6 +446,9 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
                         ("Tell me the weight of the red bus.", "the 'weight'")):
         parse = parser.analyse_batch([text])[0]
         assert parse.program is None and parse.reason.startswith(f"the question asks {asked}, "), text
+    owned = parser.analyse_batch(["Does the green sedan have its headlights on?", "Are the red bus's tyres flat?"])
+    assert [p.reason.split(",")[0] for p in owned] == ["the question asks about its 'headlights'",
+                                                      "the question asks about its 'tyres'"]
     unknown = parser.analyse_batch(["What is the temperature of the green sedan?"])[0]
     assert unknown.reason.startswith("the question asks the 'temperature', a word the parser does not know")
     # a place, a size or a time, however the lexicon would read the word ('far' as 'right', 'high' as the speed)

@@ -473,6 +473,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if why:
         return (f"the question asks {what_said if as_said in SPATIAL else what}, {why} (the questions here ask a "
                 "vehicle's speed, direction of motion, colour or type, and about its collisions)")
+    # an unknown word a possessive names is a part or property of the object's ('its headlights', the sedan's
+    # 'tyres'), which the decoder would look past ('does it have its headlights on?' read as its engine)
+    owned = next((w for k, w in enumerate(words) if k and w not in known and w.isalpha()
+                  and (words[k - 1] == "its" or words[k - 2:k] == ["'", "s"])), None)
+    if owned:
+        return (f"the question asks about its '{owned}', a word the parser does not know (the questions here ask a "
+                "vehicle's speed, direction of motion, colour or type, and about its collisions)")
     if head[:2] in (["is", "there"], ["are", "there"]) and set(head[2:]) <= OBJECT_WORDS | BARE_MENTION:
         return "the question asks whether an object is there, which no question here asks (they ask what it does)"
     if head[:1] == ["where"] and not WHERE_MOTION & set(head + said) and \
@@ -562,12 +569,20 @@ def slowing_down(words: list[str]) -> bool:
     return False
 
 
+STEADY = {"constant", "steady", "steadily", "unchanged", "unchanging", "same", "uniform", "uniformly"}
+
+
 def reversed_as_said(words: list[str]) -> str:
     """Reversals that the words standing in for unknown ones would hide, so read before they stand in: 'decelerate'
     (WordNet's 'slow', a speed; slowing down, however said, is what no question asks, the opposite of
-    accelerating) and a comparison in the passive ('Is the bus outpaced by the car?'). '' when there is none."""
+    accelerating), a speed that stays the same (STEADY: 'at a constant speed' was read as slow, 'the same speed
+    throughout' as fast) and a comparison in the passive ('Is the bus outpaced by the car?'). '' when there is
+    none."""
     if any(w.startswith("decelerat") for w in words) or slowing_down(words):
         return ("the question asks whether an object slows down, which no question here asks: ask whether it is "
+                "accelerating and take the opposite answer")
+    if STEADY.intersection(words):
+        return ("the question asks whether an object keeps its speed, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")
     passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]
     if passive:
