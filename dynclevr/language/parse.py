@@ -476,7 +476,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     # an unknown word a possessive names is a part or property of the object's ('its headlights', the sedan's
     # 'tyres'), which the decoder would look past ('does it have its headlights on?' read as its engine)
     owned = next((w for k, w in enumerate(words) if k and w not in known and w.isalpha()
-                  and (words[k - 1] == "its" or words[k - 2:k] == ["'", "s"])), None)
+                  and (words[k - 1] == "its" or words[k - 2:k] == ["'", "s"] and words[k - 3:k - 2] and
+                       words[k - 3] in OBJECT_WORDS)), None)
     if owned:
         return (f"the question asks about its '{owned}', a word the parser does not know (the questions here ask a "
                 "vehicle's speed, direction of motion, colour or type, and about its collisions)")
