@@ -26,7 +26,8 @@ OBJECT_WORDS = frozenset(w for name, _ in _NAMES for w in name)
 EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bus", "double deck bus": "double bus",
                   "dirt bike": "dirtbike", "mini van": "minivan", "bendy bus": "articulated bus",
                   "city bus": "regular bus", "tandem": "tandem bike", "bi plane": "biplane", "air liner": "airliner",
-                  "passenger jet": "airliner", "fighter jet": "fighter", "pickup truck": "truck",
+                  "passenger jet": "airliner", "passenger plane": "airliner", "passenger aeroplane": "airliner",
+                  "passenger aircraft": "airliner", "fighter jet": "fighter", "pickup truck": "truck",
                   "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon",
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
                   **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
