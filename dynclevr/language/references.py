@@ -53,7 +53,7 @@ _EVERYDAY = sorted({(w, said) for name, said in [*((v.replace("_", " "), v.repla
 
 
 def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """['the', 'dirt', '-', 'bike'] -> (['the', 'dirtbike'], (('dirt - bike', 'dirtbike'),)): every vehicle name
+    """['the', 'dirt', '-', 'bike'] -> (['the', 'dirtbike'], (('dirt-bike', 'dirtbike'),)): every vehicle name
     of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, or a sub-type said with its category, as the
     catalogue's name; with the names read so."""
     out, read, i = [], [], 0
@@ -66,7 +66,7 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         w, said = hit
         out += said.split()
         if " ".join(w) != said:
-            read.append((" ".join(w), said))
+            read.append((" ".join(w).replace(" - ", "-"), said))
         i += len(w)
     return out, tuple(read)
 
