@@ -20,9 +20,10 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, height_as_aloft, named_attribute,
-                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
-                                     reversed_reading, synonyms, time_clause_last, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, heading_as_direction,
+                                     height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
+                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
+                                     synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -291,7 +292,8 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
 
 def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_it():
     """'speed of the red car at the start?' asks what the speed is; 'high above the ground' is up in the air, not the
-    'high' of 'at high speed'."""
+    'high' of 'at high speed'; 'the heading of' is the direction; 'is the red car's speed low?' asks whether it is
+    slow."""
     words, read_as = noun_phrase_as_question(tokenize("speed of red sedan at start?"))
     assert words == tokenize("what is the speed of red sedan at start?") and read_as == (("speed of",
                                                                                           "what is the speed of"),)
@@ -306,8 +308,23 @@ def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_
     assert height_as_aloft(tokenize("is the jet high above the ground?"))[0] == tokenize("is the jet up above the "
                                                                                          "ground?")
     assert height_as_aloft(tokenize("is the jet high up at first?"))[0] == tokenize("is the jet up at first?")
-    for text in ("is the jet moving at high speed?", "is the jet flying high?"):
+    for text in ("is the jet moving at high speed?", "is the jet flying high?", "how high up is the jet?"):
         assert height_as_aloft(tokenize(text)) == (tokenize(text), ()), text
+    # 'heading' as a noun is the direction; as a verb it stays the grammar's word of motion
+    for text in ("what is the heading of the red car?", "what is the red car's heading?", "what is its heading?"):
+        assert "direction" in heading_as_direction(tokenize(text))[0] and "heading" not in \
+            heading_as_direction(tokenize(text))[0], text
+    assert heading_as_direction(tokenize("where is the red car heading?")) == (tokenize("where is the red car "
+                                                                                         "heading?"), ())
+    # a speed said as the subject of a yes/no question: the object is, as the grammar says it
+    for text, read in (("is the red car's speed low?", "is the red car slow ?"),
+                       ("is the red car's initial speed high?", "is the red car fast at the start ?"),
+                       ("is the speed of the red car zero at the start?", "is the red car static at the start ?"),
+                       ("is the initial speed of the blue bus slow?", "is the blue bus slow at the start ?")):
+        assert speed_as_subject(tokenize(text))[0] == read.split(), text
+    for text in ("is the red car's speed higher than the bus's?", "what is the speed of the red car?",
+                 "is the red car slow?", "is the speed of it low?"):
+        assert speed_as_subject(tokenize(text)) == (tokenize(text), ()), text
 
 
 def test_slowing_down_however_said_is_refused():

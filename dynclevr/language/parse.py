@@ -217,7 +217,9 @@ class QuestionParser:
         words, request = request_as_imperative(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
-        request = named + request + asked + aloft
+        words, heading = heading_as_direction(words)
+        words, subject = speed_as_subject(words)
+        request = named + request + asked + aloft + heading + subject
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -373,6 +375,62 @@ def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         else:
             out.append(w)
     return out, tuple(read)
+
+
+def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'heading' as a noun ('the heading of the red car', 'its heading', 'the car's heading'): its direction. The
+    grammar says 'heading' only as a verb, of motion ('is the red car heading left'), and reads the noun so too
+    ('what is the heading of' was read as the speed)."""
+    out, read = list(words), []
+    for k, w in enumerate(words):
+        if w == "heading" and k and (words[k - 1] in ("the", "its") or words[k - 2:k] == ["'", "s"]):
+            out[k] = "direction"
+            read.append(("heading", "direction"))
+    return out, tuple(read[:1])
+
+
+# A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says
+SPEED_PREDICATES = {"low": "slow", "slow": "slow", "high": "fast", "fast": "fast", "great": "fast", "zero": "static",
+                    "0": "static", "nil": "static"}
+START_ADJECTIVES = {"initial", "starting", "start", "beginning", "first", "opening"}
+
+
+def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the red car's (initial) speed low ?', 'is the (initial) speed of the red car high at the start ?': the
+    object as the subject, 'is the red car slow (at the start) ?', which the grammar says; the decoder read the speed
+    as the subject as a question about accelerating or a query of the speed. With the words read so, or the words as
+    they are and ()."""
+    if words[:1] not in (["is"], ["was"]) or words[1:2] != ["the"]:
+        return words, ()
+    k = 2
+    while words[k:k + 1] and words[k] in OBJECT_WORDS:
+        k += 1
+    if k > 2 and words[k:k + 2] == ["'", "s"]:                  # 'is the red car 's initial speed low'
+        thing, k = words[1:k], k + 2
+        start = words[k:k + 1] != [] and words[k] in START_ADJECTIVES
+        k += start
+        if words[k:k + 1] not in (["speed"], ["velocity"]):
+            return words, ()
+        k += 1
+    else:                                                        # 'is the initial speed of the red car low'
+        start = words[2:3] != [] and words[2] in START_ADJECTIVES
+        k = 2 + start
+        if words[k:k + 1] not in (["speed"], ["velocity"]) or words[k + 1:k + 3] != ["of", "the"]:
+            return words, ()
+        j = k + 2
+        k += 3
+        while words[k:k + 1] and words[k] in OBJECT_WORDS:
+            k += 1
+        thing = words[j:k]
+        if len(thing) < 2:
+            return words, ()
+    if not words[k:k + 1] or words[k] not in SPEED_PREDICATES:
+        return words, ()
+    rest = words[k + 1:]
+    when = ["at", "the", "start"] if start and not {"start", "beginning", "first", "initially"} & set(rest) else []
+    end = len(rest) - (rest[-1:] == ["?"])
+    out = ["is", *thing, SPEED_PREDICATES[words[k]], *rest[:end], *when, *rest[end:]]
+    return out, ((" ".join(words[:k + 1]).replace(" ' ", "'"), " ".join(out[:len(thing) + 2])),)
 
 
 # No operation negates, and the grammar words each question one way round: a model reads a reversed wording ('is it
