@@ -20,10 +20,10 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, heading_as_direction,
-                                     height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
-                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
-                                     synonyms, time_clause_last, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, first_frames_as_said,
+                                     heading_as_direction, height_as_aloft, named_attribute, noun_phrase_as_question,
+                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
+                                     speed_as_subject, synonyms, time_clause_last, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -322,6 +322,13 @@ def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_
                        ("is the speed of the red car zero at the start?", "is the red car static at the start ?"),
                        ("is the initial speed of the blue bus slow?", "is the blue bus slow at the start ?")):
         assert speed_as_subject(tokenize(text))[0] == read.split(), text
+    # a time said by its clock or frame is the start; the first frame that shows an object is its coming into view
+    assert first_frames_as_said(tokenize("at t = 0, how fast is the red car?"))[0] == tokenize(
+        "at the start, how fast is the red car?")
+    assert first_frames_as_said(tokenize("how fast is the red car in the first frame in which it is visible?"))[0] == \
+        tokenize("how fast is the red car when it first appears?")
+    for text in ("is the red car fast at the first frame?", "is the red car fast at time 2?"):
+        assert first_frames_as_said(tokenize(text)) == (tokenize(text), ()), text
     for text in ("is the red car's speed higher than the bus's?", "what is the speed of the red car?",
                  "is the red car slow?", "is the speed of it low?"):
         assert speed_as_subject(tokenize(text)) == (tokenize(text), ()), text

@@ -219,7 +219,8 @@ class QuestionParser:
         words, aloft = height_as_aloft(words)
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
-        request = named + request + asked + aloft + heading + subject
+        words, first = first_frames_as_said(words)
+        request = named + request + asked + aloft + heading + subject + first
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -387,6 +388,40 @@ def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             out[k] = "direction"
             read.append(("heading", "direction"))
     return out, tuple(read[:1])
+
+
+# A time said by its frame or its clock ('at t = 0', 'at frame 0'), and the first frame that shows an object ('in
+# the first frame in which it is visible'): the grammar's start and its coming into view.
+TIME_ZERO = (["t", "=", "0"], ["t", "0"], ["t0"], ["time", "0"], ["time", "zero"], ["frame", "0"], ["frame", "zero"],
+             ["frame", "1"], ["frame", "one"])
+SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becomes", "visible"], ["is", "in", "view"],
+        ["comes", "into", "view"], ["is", "in", "sight"])
+
+
+def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'at t = 0' -> 'at the start'; 'in the first frame in which it is visible' -> 'when it first appears'. With
+    the words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        zero = next((z for z in TIME_ZERO if words[k:k + len(z)] == z), None)
+        if zero and out[-1:] in (["at"], ["from"], ["in"]):
+            out += ["the", "start"]
+            read.append((" ".join(zero).replace(" = ", "="), "the start"))
+            k += len(zero)
+            continue
+        if words[k:k + 4] in (["in", "the", "first", "frame"], ["at", "the", "first", "frame"]):
+            j = k + 4
+            j += next((len(r) for r in (["in", "which"], ["where"], ["that"], ["when"]) if words[j:j + len(r)] == r), 0)
+            seen = next((v for v in SEEN if words[j:j + 1] == ["it"] and words[j + 1:j + 1 + len(v)] == v), None)
+            if seen:
+                end = j + 1 + len(seen)
+                out += ["when", "it", "first", "appears"]
+                read.append((" ".join(words[k:end]), "when it first appears"))
+                k = end
+                continue
+        out.append(words[k])
+        k += 1
+    return out, tuple(read)
 
 
 # A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says
