@@ -20,10 +20,11 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, first_frames_as_said,
-                                     heading_as_direction, height_as_aloft, named_attribute, noun_phrase_as_question,
-                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
-                                     speed_as_subject, synonyms, time_clause_last, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, comparative_as_said,
+                                     first_frames_as_said, heading_as_direction, height_as_aloft, named_attribute,
+                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
+                                     reversed_reading, speed_as_subject, synonyms, tail_as_question, time_clause_last,
+                                     well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -271,6 +272,22 @@ def test_the_time_a_fronted_clause_names_chooses_between_the_readings():
     assert _chosen([start, impact], "get_frame") is impact
     assert _chosen([start, impact], None) is start and _chosen([start, impact], "come_in_frame") is start
     assert _chosen([start, Parse(None, "no program")], "get_frame") is start
+    # a main question that names its own subject: the clause put last, whose first object is that subject
+    assert _chosen([start, impact], None, True) is impact and _chosen([start, Parse(None, "x")], None, True) is start
+
+
+def test_questions_in_broken_english_read_as_the_grammar_says_them():
+    """A comparative with 'more', the asking said last ('..., yes or no?', '... is what?')."""
+    assert comparative_as_said(tokenize("is the red car more fast than the bus?"))[0] == \
+        tokenize("is the red car faster than the bus?")
+    assert comparative_as_said(tokenize("is the red car less fast than the bus?"))[0][4] == "slower"
+    assert comparative_as_said(tokenize("is the red car moving more slowly?"))[1] == ()
+    assert tail_as_question(tokenize("green bus is not moving at start, yes or no?"))[0] == \
+        tokenize("green bus is not moving at start?")
+    assert tail_as_question(tokenize("red sedan speed at beginning is what?"))[0] == \
+        tokenize("what is red sedan speed at beginning?")
+    for text in ("what is the speed of the red car?", "how fast is the red car, is it what?", "yes or no?"):
+        assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
 
 
 def test_a_question_asked_as_a_request_is_read_as_tell_me():

@@ -176,6 +176,7 @@ class QuestionParser:
         # that time wins (`clause_time`), else the one the decoder is surer of, the question as said on a tie.
         readings: list[list[Parse]] = [[] for _ in texts]
         times: list[str | None] = [None] * len(texts)
+        own: list[bool] = [False] * len(texts)
         todo = []
         for i, t in enumerate(texts):
             words, why, read_as = self._words(t)
@@ -184,6 +185,8 @@ class QuestionParser:
                 continue
             if time_clause_last(words):
                 times[i] = clause_time(words[:words.index(",")])
+                main = words[words.index(",") + 1:]
+                own[i] = bool(OBJECT_WORDS.intersection(main)) and not {"it", "its"}.intersection(main)
             for order in filter(None, (words, time_clause_last(words))):
                 said, named = delexicalise(order)
                 moved = " ".join(order) if order is not words else ""
@@ -201,7 +204,7 @@ class QuestionParser:
             for (i, k, order, refs), (ids, p, attended) in zip(chunk, decoded):
                 readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
                                          reordered=readings[i][k].reordered)
-        return [_chosen(parses, time) for parses, time in zip(readings, times)]
+        return [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -220,7 +223,9 @@ class QuestionParser:
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
         words, first = first_frames_as_said(words)
-        request = named + request + asked + aloft + heading + subject + first
+        words, more = comparative_as_said(words)
+        words, tail = tail_as_question(words)
+        request = named + request + asked + aloft + heading + subject + first + more + tail
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -421,6 +426,41 @@ def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
                 continue
         out.append(words[k])
         k += 1
+    return out, tuple(read)
+
+
+def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question whose asking comes last: '..., yes or no?' (the asking dropped: a yes/no question says it) and
+    '... is what?' (the question word put first: 'the red sedan speed at the start is what?' -> 'what is the red
+    sedan speed at the start?'). With the words read so, or the words as they are and ()."""
+    end = words[-1:] if words[-1:] in (["?"], ["."]) else []
+    body = words[:len(words) - len(end)]
+    for tail in ([",", "yes", "or", "no"], ["?", "yes", "or", "no"], ["yes", "or", "no"]):
+        if body[-len(tail):] == tail and len(body) > len(tail):
+            return body[:-len(tail)] + (end or ["?"]), ((" ".join(tail), "?"),)
+    if body[-2:] in (["is", "what"], ["was", "what"]) and len(body) > 2 and body[0] not in ASKING | {"how"}:
+        return ["what", body[-2], *body[:-2], *end], ((f"... {body[-2]} what", f"what {body[-2]} ..."),)
+    return words, ()
+
+
+# A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
+COMPARATIVES = {("more", "fast"): "faster", ("more", "quick"): "quicker", ("more", "slow"): "slower",
+                ("less", "fast"): "slower", ("less", "quick"): "slower", ("less", "slow"): "faster"}
+
+
+def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'more fast' -> 'faster', 'less fast' -> 'slower' (the decoder read 'more fast' as 'fast'). With the words
+    read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        said = COMPARATIVES.get(tuple(words[k:k + 2]))
+        if said:
+            out.append(said)
+            read.append((" ".join(words[k:k + 2]), said))
+            k += 2
+        else:
+            out.append(words[k])
+            k += 1
     return out, tuple(read)
 
 
@@ -749,16 +789,20 @@ def clause_time(clause: list[str]) -> str | None:
     return None
 
 
-def _chosen(parses: list[Parse], time: str | None) -> Parse:
+def _chosen(parses: list[Parse], time: str | None, named: bool = False) -> Parse:
     """Of a question's readings, the one asking at the time its fronted clause names where exactly one of two
-    different programs does ('At impact, is X slower than Y?' said as is reads as at the start); else the one the
-    decoder is surer of (max keeps the first of equals: the question as said, whose reason stands when no reading
-    parses)."""
+    different programs does ('At impact, is X slower than Y?' said as is reads as at the start); else, where the
+    question after its fronted clause names its own objects and no pronoun (`named`), the clause put last: its
+    subject is then the first object said, as in the grammar's questions ('When the blue suv hits the brown
+    scooter, is the brown scooter stopped?' as said was read about the suv); else the one the decoder is surer of
+    (max keeps the first of equals: the question as said, whose reason stands when no reading parses)."""
     parsed = [p for p in parses if p.program is not None]
     if time and len(parsed) == 2 and parsed[0].program != parsed[1].program:
         fit = [p for p in parsed if time in p.program]
         if len(fit) == 1:
             return fit[0]
+    if named and len(parsed) == 2 and parses[1].program is not None:
+        return parses[1]
     return max(parses, key=lambda p: p.confidence if p.program is not None else -1.0)
 
 
