@@ -217,6 +217,7 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, named = catalogue_names(words)
+        words, framing = framing_dropped(words)
         words, request = request_as_imperative(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
@@ -225,7 +226,7 @@ class QuestionParser:
         words, first = first_frames_as_said(words)
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
-        request = named + request + asked + aloft + heading + subject + first + more + tail
+        request = named + framing + request + asked + aloft + heading + subject + first + more + tail
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -318,6 +319,28 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+# A preamble that frames the question and asks nothing ('Thinking about the whole clip, do ...', 'Not sure about this
+# one, but is ...'): the question is what follows it ('thinking' would be WordNet's 'imagine', a counterfactual's).
+FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing"}
+QUESTION_OPENERS = {"is", "was", "are", "were", "do", "does", "did", "will", "would", "can", "could", "has", "have",
+                    "how", "what", "which", "where"}
+
+
+def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after a framing preamble that names no object (its 'it' would lose what it stands for): a
+    participle's phrase ('looking at the video ,') or any phrase before ', but' ('not sure about this one , but'),
+    where a question follows it and the preamble sets no condition. With the preamble read as nothing, or the words
+    as they are and ()."""
+    if "," not in words:
+        return words, ()
+    k = words.index(",")
+    main = words[k + 1 + (words[k + 1:k + 2] == ["but"]):]
+    framed = (words[0] in FRAMING or words[k + 1:k + 2] == ["but"]) and not OBJECT_WORDS.intersection(words[:k])
+    if not framed or main[:1] == [] or main[0] not in QUESTION_OPENERS or CONDITION_WORDS.intersection(words[:k]):
+        return words, ()
+    return main, ((" ".join(words[:k]), "nothing, a preamble"),)
 
 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
