@@ -20,11 +20,11 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, comparative_as_said,
-                                     first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
-                                     named_attribute, noun_phrase_as_question, program_shape, request_as_imperative,
-                                     reversed_as_said, reversed_reading, speed_as_subject, synonyms, tail_as_question,
-                                     time_clause_last, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, attention_as_subject, clause_time,
+                                     comparative_as_said, first_frames_as_said, framing_dropped, heading_as_direction,
+                                     height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
+                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
+                                     synonyms, tail_as_question, time_clause_last, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -288,6 +288,13 @@ def test_questions_in_broken_english_read_as_the_grammar_says_them():
         tokenize("what is red sedan speed at beginning?")
     for text in ("what is the speed of the red car?", "how fast is the red car, is it what?", "yes or no?"):
         assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
+    # a first sentence that points at an object: the question about it
+    assert attention_as_subject(tokenize("Watch the yellow bus. Does it hit anything?"))[0] == \
+        tokenize("does the yellow bus hit anything?")
+    assert attention_as_subject(tokenize("look at the red car: is its speed low?"))[0] == \
+        tokenize("is the red car's speed low?")
+    for text in ("watch the video. does the bus hit the car?", "look at the red car and the bus, do they collide?"):
+        assert attention_as_subject(tokenize(text)) == (tokenize(text), ()), text
     # a preamble that frames the question and names no object is no part of it
     for text in ("thinking about the whole clip, does the red car hit the bus?", "not sure, but does the red car hit "
                  "the bus?", "looking at the video, does the red car hit the bus?"):

@@ -218,6 +218,7 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, named = catalogue_names(words)
         words, framing = framing_dropped(words)
+        words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
@@ -226,7 +227,7 @@ class QuestionParser:
         words, first = first_frames_as_said(words)
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
-        request = named + framing + request + asked + aloft + heading + subject + first + more + tail
+        request = named + framing + attended + request + asked + aloft + heading + subject + first + more + tail
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -341,6 +342,32 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     if not framed or main[:1] == [] or main[0] not in QUESTION_OPENERS or CONDITION_WORDS.intersection(words[:k]):
         return words, ()
     return main, ((" ".join(words[:k]), "nothing, a preamble"),)
+
+
+# A first sentence that points at an object ('Watch the yellow bus. Does it hit anything?'): the question about it
+ATTENDING = (["look", "at"], ["watch"], ["consider"], ["focus", "on"], ["observe"], ["notice"], ["check"])
+
+
+def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'watch the yellow bus . does it hit anything ?' -> 'does the yellow bus hit anything ?': the object a first
+    sentence points at put for the question's first 'it' (or its 'its'), and that sentence left out. With the words
+    read so, or the words as they are and ()."""
+    verb = next((v for v in ATTENDING if words[:len(v)] == v), None)
+    if verb is None:
+        return words, ()
+    k = len(verb) + (words[len(verb):len(verb) + 1] in (["the"], ["that"], ["this"]))
+    j = k
+    while words[j:j + 1] and words[j] in OBJECT_WORDS:
+        j += 1
+    if j == k or words[j:j + 1] not in (["."], [":"], [";"]) or not words[j + 1:j + 2] or \
+            words[j + 1] not in QUESTION_OPENERS:
+        return words, ()
+    thing, question = ["the", *words[k:j]], words[j + 1:]
+    for n, w in enumerate(question):
+        if w in ("it", "its"):
+            question = question[:n] + thing + (["'", "s"] if w == "its" else []) + question[n + 1:]
+            break
+    return question, ((" ".join(words[:j + 1]), "nothing; 'it' as " + " ".join(thing)),)
 
 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
