@@ -605,11 +605,16 @@ SPATIAL = frozenset({"distance", "position", "location", "place", "height", "alt
 TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "second"})   # 'at which frame ...'
 
 
+def _head(words: list[str]) -> list[str]:
+    """The question's words after a clause of time said first ('at the start , what ...'), else all of them."""
+    return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+
+
 def _asked(words: list[str]) -> tuple[str | None, str]:
     """The word a question's head asks about, and how it says it: 'what is the _ of' (or 'for', 'between'), 'tell
     me the _ of', 'what _ is', 'what is the red sedan's _', 'at what _', 'how _ is', 'when does' (after a clause of
     time said first); (None, '') where the head is none of these."""
-    head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+    head = _head(words)
     asked = None
     if head[:1] and head[0] in ASKING:
         rest = head[1:]
@@ -645,7 +650,7 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     or size (SPATIAL) as said or read; it asks whether an object is there ('is there a red sedan?', nothing said
     but the object), or where an object is rather than where it is going (no word of motion, said or read, and no
     verb's '-ing' or '-ed' form)."""
-    head = words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+    head = _head(words)
     asked, what = _asked(words)
     as_said, what_said = _asked(said)
     if {asked, as_said} & TIME_ASKED:
