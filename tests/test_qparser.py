@@ -20,13 +20,13 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, attention_as_subject, clause_time,
-                                     comparative_as_said, first_frames_as_said, framing_dropped, heading_as_direction,
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
+                                     clause_time, comparative_as_said, first_frames_as_said, framing_dropped, heading_as_direction,
                                      height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
                                      request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
-                                     synonyms, tail_as_question, time_clause_last, well_formed)
+                                     synonyms, tail_as_question, time_clause_last, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
-                                          corefer, delexicalise)
+                                          corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -304,6 +304,36 @@ def test_questions_in_broken_english_read_as_the_grammar_says_them():
         assert framing_dropped(tokenize(text)) == (tokenize(text), ()), text
 
 
+def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_grammar_says_them():
+    """'the bus that is yellow' -> 'the yellow bus'; 'fast or slow' offers the classes; 'once the video is over'
+    is 'after the video ends' in a question about collisions."""
+    for text in ("does the bus that is yellow hit the red car?", "does the bus which is yellow hit the red car?",
+                 "does the bus painted yellow hit the red car?", "does the bus in yellow hit the red car?",
+                 "does the bus, the yellow one, hit the red car?", "does the bus (the yellow one) hit the red car?",
+                 "does the yellow-coloured bus hit the red car?", "does the bus in yellow colour hit the red car?"):
+        assert description_as_said(tokenize(text))[0] == tokenize("does the yellow bus hit the red car?"), text
+    assert description_as_said(catalogue_names(tokenize("is the double decker that's cyan fast?"))[0])[0] == \
+        tokenize("is the cyan double bus fast?")
+    for text in ("does the red bus that is yellow hit the car?", "does the bus that is moving hit the car?",
+                 "is the bus in front of the car?", "does the bus, the red car and the blue jet collide?"):
+        assert description_as_said(tokenize(text)) == (tokenize(text), ()), text
+    for text in ("is the red car fast or slow at the start?", "is the red car moving slowly or quickly?",
+                 "is the red car fast, slow, or stationary?"):
+        words, read = alternatives_as_asked(tokenize(text))
+        assert " static , slow or fast" in " ".join(words) and read, text
+    for text in ("is the red car still fast?", "is the red car static or moving?", "how fast or slow is the red car?",
+                 "is the red car fast and slow?"):
+        assert alternatives_as_asked(tokenize(text)) == (tokenize(text), ()), text
+    for text in ("once the video is over, does the red car hit the bus?", "when the clip is done, does the red car "
+                 "hit the bus?", "as soon as the video has ended, does the red car hit the bus?"):
+        assert video_end_as_said(tokenize(text))[0] == tokenize("after the video ends, does the red car hit the bus?")
+    assert video_end_as_said(tokenize("will the red car run into the bus once the video ends?"))[0][-5:] == \
+        tokenize("after the video ends?")
+    for text in ("when the video ends, is the red car fast?", "after the video ends, does the red car hit the bus?",
+                 "when the red car comes into view, is it fast?"):
+        assert video_end_as_said(tokenize(text)) == (tokenize(text), ()), text
+
+
 def test_a_question_asked_as_a_request_is_read_as_tell_me():
     """'Could you tell me ...', 'I'd like to know ...', 'I wonder ...': the grammar words requests as 'Tell me ...'.
     A request said later, or words that only look like one, stay as they are."""
@@ -519,9 +549,15 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
     assert place.program is None and place.reason.startswith("the question asks where an object is")
     there = parser.analyse_batch(["Is there a green sedan in the video?"])[0]
     assert there.program is None and there.reason.startswith("the question asks whether an object is there")
+    # the video's end, asked of anything but collisions (the decoder read 'at the end' as the start)
+    for text in ("At the end of the video, is the green sedan moving fast?", "Is the green sedan static when the "
+                 "clip is over?", "In the last frame, what colour is the moving vehicle?"):
+        parse = parser.analyse_batch([text])[0]
+        assert parse.program is None and parse.reason.startswith("the question asks about the video's end"), text
     for text in ("Where is the green sedan heading at the start?", "What is the moving velocity of the green sedan "
                  "at the beginning?", "What is the green sedan's moving velocity at the beginning?",
-                 "When the green sedan hits the red bus, is it fast?"):
+                 "When the green sedan hits the red bus, is it fast?", "By the end of the video, has the green sedan "
+                 "hit the red bus?", "Once the video is over, will the green sedan run into the red bus?"):
         assert not parser.analyse_batch([text])[0].reason.startswith("the question asks"), text
 
 

@@ -47,7 +47,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
-                                          is_description, placeholders)
+                                          description_as_said, is_description, placeholders)
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
 from dynclevr.questions.programs import OPS, ProgramError
@@ -217,6 +217,8 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
         words, named = catalogue_names(words)
+        words, described = description_as_said(words)
+        words, end = video_end_as_said(words)
         words, framing = framing_dropped(words)
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
@@ -227,7 +229,9 @@ class QuestionParser:
         words, first = first_frames_as_said(words)
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
-        request = named + framing + attended + request + asked + aloft + heading + subject + first + more + tail
+        words, offered = alternatives_as_asked(words)
+        request = (named + described + end + framing + attended + request + asked + aloft + heading + subject + first
+                   + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request
@@ -514,6 +518,81 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return out, tuple(read)
 
 
+# The speed classes as a question offers them to choose from ('is it fast or slow?'), each by the words that say it
+SPEED_CLASSES = {"static": "static", "stationary": "static", "still": "static", "parked": "static",
+                 "motionless": "static", "stopped": "static", "slow": "slow", "slowly": "slow", "fast": "fast",
+                 "quickly": "fast", "quick": "fast", "rapidly": "fast"}
+
+
+def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?': speed classes offered as
+    alternatives ask which one, as the grammar's 'static, slow or fast' does (the decoder read 'fast or slow' as
+    'is it fast?'). Two classes at least, one of them slow or fast. With the words read so, or the words as they are
+    and ()."""
+    if not words or words[0] not in AUXILIARIES:
+        return words, ()
+    for i, w in enumerate(words):
+        if w not in SPEED_CLASSES:
+            continue
+        said, k = [SPEED_CLASSES[w]], i + 1
+        while True:
+            sep = next((s for s in ([",", "or"], ["or"], [","]) if words[k:k + len(s)] == s), None)
+            if not sep or words[k + len(sep):k + len(sep) + 1] == [] or words[k + len(sep)] not in SPEED_CLASSES:
+                break
+            said.append(SPEED_CLASSES[words[k + len(sep)]])
+            k += len(sep) + 1
+            if "or" in sep:
+                break
+        if len(set(said)) >= 2 and set(said) & {"slow", "fast"} and "or" in words[i:k]:
+            return (words[:i] + ["static", ",", "slow", "or", "fast"] + words[k:],
+                    ((" ".join(words[i:k]).replace(" ,", ","), "static, slow or fast"),))
+    return words, ()
+
+
+# The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
+# 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
+END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"])
+FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence"}
+END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
+                  ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
+                  ["has", "stopped"], ["comes", "to", "an", "end"])
+
+
+def _video_end(words: list[str]) -> tuple[int, int] | None:
+    """Where a clause of the video's end lies ('once the video is over'), as (first, past-last) word."""
+    for i in range(len(words)):
+        opener = next((o for o in END_OPENERS if words[i:i + len(o)] == o), None)
+        if not opener:
+            continue
+        j = i + len(opener) + (words[i + len(opener):i + len(opener) + 1] in (["the"], ["this"]))
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
+            continue
+        end = next((e for e in END_PREDICATES if words[j + 1:j + 1 + len(e)] == e), None)
+        if end:
+            return i, j + 1 + len(end)
+    return None
+
+
+def asks_impact(words: list[str]) -> bool:
+    """Whether the question is about collisions: an impact's word ('collides', 'struck'), or 'into' not of coming
+    into view ('runs into', 'bangs into')."""
+    return any(w.startswith(IMPACT_STEMS) or w == "into" and not set(words[k + 1:k + 3]) & SIGHT_WORDS
+               for k, w in enumerate(words))
+
+
+def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'once the video is over, does it hit ...' -> 'after the video ends, does it hit ...', in a question about
+    collisions (the only ones asked after the video; of any other it asks at the video's end, which
+    `unknown_property` refuses). With the words read so, or the words as they are and ()."""
+    where = _video_end(words)
+    if not where or not asks_impact(words):
+        return words, ()
+    i, k = where
+    if words[i:k] == ["after", "the", "video", "ends"]:
+        return words, ()
+    return words[:i] + ["after", "the", "video", "ends"] + words[k:], ((" ".join(words[i:k]), "after the video ends"),)
+
+
 # A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says
 SPEED_PREDICATES = {"low": "slow", "slow": "slow", "high": "fast", "fast": "fast", "great": "fast", "zero": "static",
                     "0": "static", "nil": "static"}
@@ -675,6 +754,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             not any(w.endswith(("ing", "ed")) and w not in OBJECT_WORDS for w in head + said):
         return ("the question asks where an object is, which no question here asks (they ask which way it is "
                 "moving)")
+    if not asks_impact(said) and (_video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said))
+                                                          for e in END_TIMES)):
+        return ("the question asks about the video's end, which no question here asks (they ask about the start, "
+                "an object's coming into view, a collision, and collisions after the video)")
     return ""
 
 
@@ -832,6 +915,13 @@ def _antecedent_first(main: list[str], clause: list[str]) -> tuple[list[str], li
 COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view"}
 IMPACT_WORDS = {"impact", "collision", "collide", "collides", "hit", "hits", "crash", "crashes", "bump", "bumps",
                 "strike", "strikes", "smash", "smashes", "slam", "slams", "contact", "meet", "meets"}
+IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
+                "touch", "bang", "knock", "ram", "accident", "meet")
+SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
+
+# The video's end said as a time ('at the end of the clip', 'in the last frame')
+END_TIMES = [[p, "the", e] for p in ("at", "by", "towards", "toward", "near") for e in ("end", "finish", "close")] + \
+    [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
 START_WORDS = {"start", "starts", "beginning", "begins", "begin", "initially", "opening", "outset", "onset"}
 
 

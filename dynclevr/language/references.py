@@ -71,6 +71,59 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     return out, tuple(read)
 
 
+# A colour said after its vehicle ('the bus that is yellow', 'the SUV painted green', 'the scooter, the blue one,')
+# or with a word the grammar never puts between colour and vehicle ('the green-coloured SUV'), as the grammar says
+# it: colour first. Without it the colour is a second object that no family reads.
+COLOUR_CLAUSES = (("that", "is"), ("which", "is"), ("that", "was"), ("which", "was"), ("that", "'", "s"),
+                  ("painted",), ("coloured",), ("colored",), ("in",), (",", "the"), (",", "a"), ("(", "the"))
+COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured', 'yellow painted', 'red colour'
+
+
+def _noun_at(words: list[str], i: int) -> int:
+    """How many words from i name a sub-type or category, with no colour (0 when none)."""
+    k = i
+    while (hit := _value_at(words, k)) and hit[0] not in COLOR_NAMES:
+        k += hit[1]
+    return k - i
+
+
+def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """['the', 'bus', 'that', 'is', 'yellow'] -> (['the', 'yellow', 'bus'], (('bus that is yellow', 'yellow
+    bus'),)): a colour after its vehicle, where the vehicle has no colour before it; the apposition's closing comma
+    or bracket goes with it ('the scooter, the blue one, ...'). A colour joined to its vehicle by 'coloured' or
+    'painted' loses the word. With the words read so, or the words as they are and ()."""
+    out, read, i = [], [], 0
+    while i < len(words):
+        n = _noun_at(words, i) if not out or out[-1] not in COLOR_NAMES else 0
+        clause = next((c for c in COLOUR_CLAUSES if n and tuple(words[i + n:i + n + len(c)]) == c), None)
+        if clause:
+            j = i + n + len(clause)
+            if j < len(words) and words[j] in COLOR_NAMES:
+                end = j + 1
+                if clause[0] in (",", "("):
+                    if words[end:end + 1] != ["one"]:
+                        clause = None
+                    else:
+                        end += 1 + (words[end + 1:end + 2] in ([","], [")"]))
+                elif words[end:end + 1] == ["color"]:   # 'the bus in yellow colour'
+                    end += 1
+                if clause:
+                    out += [words[j], *words[i:i + n]]
+                    read.append((" ".join(words[i:end]), " ".join([words[j], *words[i:i + n]])))
+                    i = end
+                    continue
+        if words[i] in COLOR_NAMES:
+            k = i + 1 + (words[i + 1:i + 2] == ["-"])
+            if words[k:k + 1] and words[k] in COLOUR_WORDS and _noun_at(words, k + 1):
+                out.append(words[i])
+                read.append((" ".join(words[i:k + 1]).replace(" - ", "-"), words[i]))
+                i = k + 1
+                continue
+        out.append(words[i])
+        i += 1
+    return out, tuple(read)
+
+
 _CHAIN = re.compile(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique")
 _PLACEHOLDER = re.compile(r"<obj(\d+)>")
 _VALUE = re.compile(r"\[([a-z_]+)\]")
