@@ -21,7 +21,7 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
-                                     clause_time, comparative_as_said, first_frames_as_said, framing_dropped, heading_as_direction,
+                                     clause_time, comparative_as_said, direction_unasked, first_frames_as_said, framing_dropped, heading_as_direction,
                                      height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
                                      request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
                                      synonyms, tail_as_question, time_clause_last, video_end_as_said, well_formed)
@@ -321,9 +321,24 @@ def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_
                  "is the red car fast, slow, or stationary?"):
         words, read = alternatives_as_asked(tokenize(text))
         assert " static , slow or fast" in " ".join(words) and read, text
+    for text in ("is the red car moving left or right?", "is the plane going up or down when it hits the bus?",
+                 "is the red car going towards the camera or away from it?", "is it moving forwards, backwards or left?"):
+        words, read = alternatives_as_asked(tokenize(text))
+        assert " front , back , left , right , up or down" in " ".join(words) and read, text
     for text in ("is the red car still fast?", "is the red car static or moving?", "how fast or slow is the red car?",
-                 "is the red car fast and slow?"):
+                 "is the red car fast and slow?", "is the red car to the left or right of the bus?",
+                 "is the red car on the left or on the right?"):
         assert alternatives_as_asked(tokenize(text)) == (tokenize(text), ()), text
+    # a direction or a place that a reading asking no direction would pass over
+    fast = "Objects filter_attributes[red] filter_attributes[car] unique start is_moving_velocity[fast]".split()
+    which = "Objects filter_attributes[red] filter_attributes[car] unique start query_moving_direction".split()
+    for text, said in (("is the red car moving left at the start?", "left"), ("is the red car moving to the right at "
+                       "the start?", "right"), ("is it heading away from us?", "away from us"),
+                       ("is it driving towards the camera?", "towards the camera")):
+        assert direction_unasked(tokenize(text), fast).startswith(f"the question turns on '{said}'"), text
+    assert direction_unasked(tokenize("which way is the red car moving, left or right?"), which) == ""
+    for text in ("right at the start, is the red car fast?", "is the red car fast right when it appears?"):
+        assert direction_unasked(tokenize(text), fast) == "", text
     for text in ("once the video is over, does the red car hit the bus?", "when the clip is done, does the red car "
                  "hit the bus?", "as soon as the video has ended, does the red car hit the bus?"):
         assert video_end_as_said(tokenize(text))[0] == tokenize("after the video ends, does the red car hit the bus?")
@@ -549,6 +564,10 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
     assert place.program is None and place.reason.startswith("the question asks where an object is")
     there = parser.analyse_batch(["Is there a green sedan in the video?"])[0]
     assert there.program is None and there.reason.startswith("the question asks whether an object is there")
+    for text, place in (("Is the red car behind the blue bus?", "behind"), ("Is the red car next to the bus?",
+                        "next to"), ("Is the red car closer to the camera than the bus?", "closer")):
+        parse = parser.analyse_batch([text])[0]
+        assert parse.program is None and parse.reason.startswith(f"the question asks where a vehicle is ('{place}')")
     # the video's end, asked of anything but collisions (the decoder read 'at the end' as the start)
     for text in ("At the end of the video, is the green sedan moving fast?", "Is the green sedan static when the "
                  "clip is over?", "In the last frame, what colour is the moving vehicle?"):

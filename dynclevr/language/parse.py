@@ -204,7 +204,10 @@ class QuestionParser:
             for (i, k, order, refs), (ids, p, attended) in zip(chunk, decoded):
                 readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
                                          reordered=readings[i][k].reordered)
-        return [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
+        chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
+        # a direction is checked against the words as typed: the lexicon reads some as others ('away' as 'off')
+        return [replace(c, program=None, reason=why) if c.program and (why := direction_unasked(tokenize(t), c.program))
+                else c for c, t in zip(chosen, texts)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -518,34 +521,54 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return out, tuple(read)
 
 
-# The speed classes as a question offers them to choose from ('is it fast or slow?'), each by the words that say it
-SPEED_CLASSES = {"static": "static", "stationary": "static", "still": "static", "parked": "static",
-                 "motionless": "static", "stopped": "static", "slow": "slow", "slowly": "slow", "fast": "fast",
-                 "quickly": "fast", "quick": "fast", "rapidly": "fast"}
+# What a question offers to choose from ('is it fast or slow?', 'is it going left or right?'), each by the words that
+# say it; the grammar's list of the choices asks which one
+SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "parked", "motionless", "stopped")},
+                 ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
+                 ("rapidly",): "fast"}
+VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
+DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front", "back")},
+                     ("upwards",): "up", ("upward",): "up", ("downwards",): "down", ("downward",): "down",
+                     ("forward",): "front", ("forwards",): "front", ("backward",): "back", ("backwards",): "back",
+                     ("away",): "back", **{(t, *v): "front" for t in ("towards", "toward") for v in VIEWER},
+                     **{("away", "from", *v): "back" for v in VIEWER}}
+OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
+          (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
+PLACE_BEFORE = {"the", "to", "its", "of", "on"}   # 'to the left or right of the bus' says where it is, not where it goes
+
+
+def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
+    """The choice said at words[k] and how many words say it (the longest), or None."""
+    return max(((c, len(w)) for w, c in choices.items() if tuple(words[k:k + len(w)]) == w),
+               key=lambda hit: hit[1], default=None)
 
 
 def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?': speed classes offered as
-    alternatives ask which one, as the grammar's 'static, slow or fast' does (the decoder read 'fast or slow' as
-    'is it fast?'). Two classes at least, one of them slow or fast. With the words read so, or the words as they are
-    and ()."""
+    """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?', 'is it going left or right?'
+    -> 'is it going front, back, left, right, up or down?': speed classes or directions offered as alternatives ask
+    which one, as the grammar's lists of them do (the decoder read 'fast or slow' as 'is it fast?', 'left or right'
+    as the speed). Two choices at least, of speeds one slow or fast. With the words read so, or the words as they
+    are and ()."""
     if not words or words[0] not in AUXILIARIES:
         return words, ()
-    for i, w in enumerate(words):
-        if w not in SPEED_CLASSES:
-            continue
-        said, k = [SPEED_CLASSES[w]], i + 1
-        while True:
-            sep = next((s for s in ([",", "or"], ["or"], [","]) if words[k:k + len(s)] == s), None)
-            if not sep or words[k + len(sep):k + len(sep) + 1] == [] or words[k + len(sep)] not in SPEED_CLASSES:
-                break
-            said.append(SPEED_CLASSES[words[k + len(sep)]])
-            k += len(sep) + 1
-            if "or" in sep:
-                break
-        if len(set(said)) >= 2 and set(said) & {"slow", "fast"} and "or" in words[i:k]:
-            return (words[:i] + ["static", ",", "slow", "or", "fast"] + words[k:],
-                    ((" ".join(words[i:k]).replace(" ,", ","), "static, slow or fast"),))
+    for i in range(len(words)):
+        for choices, listed, needed in OFFERS:
+            first = _choice(words, i, choices)
+            if not first or choices is DIRECTION_CHOICES and words[i - 1] in PLACE_BEFORE:
+                continue
+            said, k = [first[0]], i + first[1]
+            while True:
+                sep = next((s for s in ([",", "or"], ["or"], [","]) if words[k:k + len(s)] == s), None)
+                nxt = _choice(words, k + len(sep), choices) if sep else None
+                if not nxt:
+                    break
+                said.append(nxt[0])
+                k += len(sep) + nxt[1]
+                if "or" in sep:
+                    break
+            if len(set(said)) >= 2 and set(said) & needed and "or" in words[i:k]:
+                return (words[:i] + listed.split() + words[k:],
+                        ((" ".join(words[i:k]).replace(" ,", ","), listed.replace(" ,", ",")),))
     return words, ()
 
 
@@ -754,6 +777,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             not any(w.endswith(("ing", "ed")) and w not in OBJECT_WORDS for w in head + said):
         return ("the question asks where an object is, which no question here asks (they ask which way it is "
                 "moving)")
+    place = next((" ".join(p) for k in range(len(said)) for p in PLACE_PHRASES if said[k:k + len(p)] == p), None)
+    if place:
+        return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
+                "it is moving)")
     if not asks_impact(said) and (_video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said))
                                                           for e in END_TIMES)):
         return ("the question asks about the video's end, which no question here asks (they ask about the start, "
@@ -803,6 +830,43 @@ def named_attribute(words: list[str], abstract: list[str]) -> str:
                     f"{w} of the object that collides with it, or that is static, slow, fast, accelerating or "
                     "floating)")
     return ""
+
+
+# Words of a direction or a place: only the direction queries ask about them (no question asks whether a vehicle
+# moves one way, or where it is); 'up' and 'down' say other things too ('speeding up', 'slowing down'), and 'right'
+# a time ('right at the start')
+DIRECTION_WORDS = {"left", "right", "front", "back", "forward", "forwards", "backward", "backwards", "leftward",
+                   "leftwards", "rightward", "rightwards"}
+# Where a vehicle is, said by its neighbour or its distance: never a question here, whatever the lexicon reads them as
+# ('behind' is its 'down')
+PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "front", "of"], ["further"],
+                 ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"])
+RIGHT_AS_TIME = {"at", "when", "as", "after", "before", "away", "then", "from", "in", "on", "upon"}
+
+
+def _direction_said(words: list[str]) -> str | None:
+    """The first words that say a direction or a place ('left', 'towards the camera', 'away from us'), or None."""
+    for k, w in enumerate(words):
+        as_time = w == "right" and words[k + 1:k + 2] != [] and words[k + 1] in RIGHT_AS_TIME and \
+            words[k - 1:k] not in (["the"], ["to"])   # 'right at the start', not 'to the right at the start'
+        if w in DIRECTION_WORDS and not as_time:
+            return w
+        j = k + 1 if w in ("towards", "toward") else k + 2 if words[k:k + 2] == ["away", "from"] else None
+        viewer = next((v for v in VIEWER if j and words[j:j + len(v)] == list(v)), None)
+        if viewer:
+            return " ".join(words[k:j + len(viewer)])
+    return None
+
+
+def direction_unasked(words: list[str], abstract: list[str]) -> str:
+    """Why a reading that asks no direction is not the question's ('' when it is): the question turns on a
+    direction or a place ('is the red car moving left?', 'is it on the left?'; the decoder read them as its speed or
+    its engine)."""
+    said = None if "query_moving_direction" in abstract else _direction_said(words)
+    if said is None:
+        return ""
+    return (f"the question turns on '{said}', a direction or a place, which no question here asks but 'which way "
+            "is it moving' (at the start, when it comes into view, or at a collision)")
 
 
 # Passive participles of outdoing: 'X is outpaced by Y' says Y is faster, the other way round from how the
