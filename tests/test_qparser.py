@@ -21,10 +21,11 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
-                                     clause_time, comparative_as_said, direction_unasked, first_frames_as_said, framing_dropped, heading_as_direction,
-                                     height_as_aloft, named_attribute, noun_phrase_as_question, program_shape,
-                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
-                                     synonyms, tail_as_question, time_clause_last, video_end_as_said, well_formed)
+                                     clause_time, comparative_as_said, direction_unasked, form_unmatched,
+                                     first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
+                                     named_attribute, noun_phrase_as_question, program_shape, request_as_imperative,
+                                     reversed_as_said, reversed_reading, speed_as_subject, synonyms, tail_as_question,
+                                     time_clause_last, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -322,7 +323,8 @@ def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_
         words, read = alternatives_as_asked(tokenize(text))
         assert " static , slow or fast" in " ".join(words) and read, text
     for text in ("is the red car moving left or right?", "is the plane going up or down when it hits the bus?",
-                 "is the red car going towards the camera or away from it?", "is it moving forwards, backwards or left?"):
+                 "is the red car going towards the camera or away from it?",
+                 "is it moving forwards, backwards or left?"):
         words, read = alternatives_as_asked(tokenize(text))
         assert " front , back , left , right , up or down" in " ".join(words) and read, text
     for text in ("is the red car still fast?", "is the red car static or moving?", "how fast or slow is the red car?",
@@ -337,6 +339,12 @@ def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_
                        ("is it driving towards the camera?", "towards the camera")):
         assert direction_unasked(tokenize(text), fast).startswith(f"the question turns on '{said}'"), text
     assert direction_unasked(tokenize("which way is the red car moving, left or right?"), which) == ""
+    # a yes/no question read as a query, unless it offers the answers; 'which is faster, X or Y?' is yes or no
+    for text in ("does the red car change direction?", "at the start, is the red car accelerating?"):
+        assert form_unmatched(tokenize(text), which).startswith("the question asks yes or no"), text
+    for text in ("is the red car going left or right?", "which way is the red car moving?"):
+        assert form_unmatched(tokenize(text), which) == "", text
+    assert form_unmatched(tokenize("which is faster, the red car or the bus?"), fast) == ""
     for text in ("right at the start, is the red car fast?", "is the red car fast right when it appears?"):
         assert direction_unasked(tokenize(text), fast) == "", text
     for text in ("once the video is over, does the red car hit the bus?", "when the clip is done, does the red car "
@@ -568,6 +576,15 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
                         "next to"), ("Is the red car closer to the camera than the bus?", "closer")):
         parse = parser.analyse_batch([text])[0]
         assert parse.program is None and parse.reason.startswith(f"the question asks where a vehicle is ('{place}')")
+    # how often, before or after a collision, one of several in turn, a turn
+    for text, why in (("Does the red car hit the bus twice?", "how often ('twice')"),
+                      ("Does the red car hit the bus three times?", "how often ('three times')"),
+                      ("Is the red car fast after it hits the bus?", "about the time after a collision"),
+                      ("Is the red car moving before the crash?", "about the time before a collision"),
+                      ("What colour is the second vehicle the red car hits?", "for one of several in turn"),
+                      ("Does the red car turn at the start?", "whether a vehicle turns ('turn')")):
+        parse = parser.analyse_batch([text])[0]
+        assert parse.program is None and parse.reason.startswith(f"the question asks {why}"), text
     # the video's end, asked of anything but collisions (the decoder read 'at the end' as the start)
     for text in ("At the end of the video, is the green sedan moving fast?", "Is the green sedan static when the "
                  "clip is over?", "In the last frame, what colour is the moving vehicle?"):
@@ -576,7 +593,9 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
     for text in ("Where is the green sedan heading at the start?", "What is the moving velocity of the green sedan "
                  "at the beginning?", "What is the green sedan's moving velocity at the beginning?",
                  "When the green sedan hits the red bus, is it fast?", "By the end of the video, has the green sedan "
-                 "hit the red bus?", "Once the video is over, will the green sedan run into the red bus?"):
+                 "hit the red bus?", "Once the video is over, will the green sedan run into the red bus?",
+                 "Is the engine of the green sedan turned on at the start?", "Is the green sedan fast right after the "
+                 "video starts?", "Will the green sedan hit the red bus after the video ends?"):
         assert not parser.analyse_batch([text])[0].reason.startswith("the question asks"), text
 
 

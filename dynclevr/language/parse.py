@@ -177,9 +177,10 @@ class QuestionParser:
         readings: list[list[Parse]] = [[] for _ in texts]
         times: list[str | None] = [None] * len(texts)
         own: list[bool] = [False] * len(texts)
+        said_words: list[list[str]] = [[] for _ in texts]
         todo = []
         for i, t in enumerate(texts):
-            words, why, read_as = self._words(t)
+            words, why, read_as, said_words[i] = self._words(t)
             if why:
                 readings[i].append(Parse(None, why, read_as=read_as))
                 continue
@@ -205,20 +206,21 @@ class QuestionParser:
                 readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
                                          reordered=readings[i][k].reordered)
         chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
-        # a direction is checked against the words as typed: the lexicon reads some as others ('away' as 'off')
-        return [replace(c, program=None, reason=why) if c.program and (why := direction_unasked(tokenize(t), c.program))
-                else c for c, t in zip(chosen, texts)]
+        # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned')
+        return [replace(c, program=None, reason=why) if c.program and (
+            why := form_unmatched(said, c.program) or direction_unasked(said, c.program)) else c
+            for c, said in zip(chosen, said_words)]
 
-    def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...]]:
+    def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
-        be parsed; and the words read as others."""
+        be parsed; the words read as others; and the words as the rules left them, before any was read as another."""
         if not isinstance(text, str) or not text.strip():
-            return [], "empty question", ()
+            return [], "empty question", (), []
         words = tokenize(text)
         if not words:
-            return [], "empty question", ()
+            return [], "empty question", (), []
         if len(words) > MAX_WORDS:
-            return [], f"too long ({len(words)} words, at most {MAX_WORDS})", ()
+            return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, named = catalogue_names(words)
         words, described = description_as_said(words)
         words, end = video_end_as_said(words)
@@ -237,7 +239,7 @@ class QuestionParser:
                    + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
-            return [], reverse, request
+            return [], reverse, request, words
         said = words
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
@@ -252,16 +254,20 @@ class QuestionParser:
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
-            return [], "the question asks for a count ('how many'), which no question here answers", read_as
+            return [], "the question asks for a count ('how many'), which no question here answers", read_as, said
+        often = next((" ".join(r) for k in range(len(said)) for r in REPEATS if said[k:k + len(r)] == r), None) or \
+            next((f"{a} times" for a, b in zip(said, said[1:]) if b == "times" and a in NUMBERS), None)
+        if often:
+            return [], f"the question asks how often ('{often}'), which no question here answers", read_as, said
         if words[:1] == ["why"] or words[:2] == ["how", "come"]:
-            return [], "the question asks why, which no question here answers", read_as
+            return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
-            return [], unasked, read_as
+            return [], unasked, read_as, said
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
-            return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as
-        return words, "", read_as
+            return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as, said
+        return words, "", read_as, said
 
     def _stand_in(self, word: str) -> list[str]:
         """Known words for an unknown one: its synonym, else the known (or lexicon) word of its stem with the same
@@ -327,6 +333,12 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+# How often a thing happens ('twice', 'more than once', 'three times'): a count, which no program makes
+REPEATS = (["twice"], ["thrice"], ["again"], ["more", "than", "once"], ["repeatedly"], ["multiple", "times"],
+           ["several", "times"], ["many", "times"])
+NUMBERS = {"two", "three", "four", "five", "2", "3", "4", "5"}
 
 
 # A preamble that frames the question and asks nothing ('Thinking about the whole clip, do ...', 'Not sure about this
@@ -534,7 +546,8 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
                      **{("away", "from", *v): "back" for v in VIEWER}}
 OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
           (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
-PLACE_BEFORE = {"the", "to", "its", "of", "on"}   # 'to the left or right of the bus' says where it is, not where it goes
+# 'to the left or right of the bus' says where it is, not where it goes
+PLACE_BEFORE = {"the", "to", "its", "of", "on"}
 
 
 def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
@@ -777,6 +790,20 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             not any(w.endswith(("ing", "ed")) and w not in OBJECT_WORDS for w in head + said):
         return ("the question asks where an object is, which no question here asks (they ask which way it is "
                 "moving)")
+    later = next((" ".join(said[k:k + 2]) for k in range(len(said) - 1) if said[k] in ORDINALS and (
+        said[k + 1] in GENERIC_NOUNS | OBJECT_WORDS | {"time", "partner"} or asks_impact(said[k + 1:k + 2]))), None)
+    if later:
+        return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
+                "partner's question asks the first)")
+    turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])), None)
+    if turn and not ENGINE_WORDS & set(said):
+        return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
+                "way it is moving)")
+    around = next((w for k, w in enumerate(said) if w in ("before", "after") and asks_impact(said[k + 1:k + 5])
+                   and not FILM_WORDS & set(said[k + 1:k + 3])), None)
+    if around:
+        return (f"the question asks about the time {around} a collision, which no question here asks (they ask at "
+                "the collision itself)")
     place = next((" ".join(p) for k in range(len(said)) for p in PLACE_PHRASES if said[k:k + len(p)] == p), None)
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
@@ -867,6 +894,27 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
         return ""
     return (f"the question turns on '{said}', a direction or a place, which no question here asks but 'which way "
             "is it moving' (at the start, when it comes into view, or at a collision)")
+
+
+ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
+TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
+           "veers", "veering", "u-turn"}
+
+
+YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had", "should", "are", "were"}
+
+
+def form_unmatched(words: list[str], program: list[str]) -> str:
+    """Why a reading answers in another form than the question asks for ('' when it does not): a yes/no question
+    (its head after a clause of time said first) read as asking which ('does the red car change direction?' read as
+    which way it moves; but 'is it static, slow or fast?' offers its answers). Not the other way round: the grammar
+    asks 'which is faster, X or Y?' for yes or no (is X faster)."""
+    head = _head(words)
+    returns = OPS[operation(program[-1])].output
+    if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
+        return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
+                "type): no question here asks it as yes or no")
+    return ""
 
 
 # Passive participles of outdoing: 'X is outpaced by Y' says Y is faster, the other way round from how the
