@@ -18,7 +18,7 @@ from dynclevr.config import Config, ConfigError
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
-from dynclevr.language.evaluate import handwritten, out_of_scope
+from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
                                      clause_time, comparative_as_said, direction_unasked, form_unmatched,
@@ -29,9 +29,9 @@ from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternative
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
-from dynclevr.language.tokenize import tokenize
+from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab
+from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, slipped
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -834,6 +834,32 @@ def test_a_long_misspelt_word_is_read_as_the_one_known_word_an_edit_away():
         assert parser._words(f"Is the red sedan {word} at the start?")[0][4] == word, word
     for text in ("Is the magenta sedan floating?", "Is the red limousine fast?"):
         assert parser.parse(text) is None, text
+
+
+def test_a_slip_of_the_fingers_is_read_as_the_one_word_it_slipped_from():
+    """Two letters swapped, a neighbouring key instead or as well, a letter left out or doubled, in a word of any
+    length (4+ letters): the one readable word it slipped from; none where two fit; never a real word's neighbour
+    that is no slip ('black' is not 'back')."""
+    words = {"slowly", "color", "object", "speed", "fast", "faster", "back", "stopped", "struck"}
+    for typed, meant in (("slolwy", "slowly"), ("oclor", "color"), ("oject", "object"), ("speeed", "speed"),
+                         ("sopeed", "speed"), ("shpeed", None), ("stoped", "stopped"), ("tsruck", "struck"),
+                         ("spwed", "speed"), ("cloour", "color"), ("black", None), ("fastr", None), ("car", None)):
+        assert slipped(typed, words, SPELLINGS) == meant, typed
+    parser = QuestionParser.load()
+    red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
+    assert parser.parse("Is the red sedan moving slolwy at the start?") == \
+        f"{red} start is_moving_velocity[slow]".split()
+    assert parser.parse("What is the oclor of the thing that the red sedna hits?") == \
+        f"Events {red} get_all_col_partners unique query_attributes[color]".split()
+
+
+def test_eval_types_each_question_with_one_slip_deterministically():
+    said = "What colour is the vehicle that the yellow sedan crashes into?"
+    texts = [typed_with_a_slip(said, np.random.default_rng(k)) for k in range(40)]
+    assert sum(t != said for t in texts) >= 30 and len(set(texts)) > 20
+    assert all(len(t.split()) == len(said.split()) and t[0] == said[0] for t in texts)
+    assert texts == [typed_with_a_slip(said, np.random.default_rng(k)) for k in range(40)]
+    assert typed_with_a_slip("Is it red?", np.random.default_rng(0)) == "Is it red?"   # no word of 5+ letters
 
 
 def test_an_unknown_word_is_read_by_its_stem_but_never_an_object_word():

@@ -20,6 +20,7 @@ import numpy as np
 from dynclevr import DynclevrError
 from dynclevr.language.parse import QuestionParser
 from dynclevr.language.tokenize import tokenize
+from dynclevr.language.vocab import NEIGHBOURS
 from dynclevr.questions.generate import phrase, reference, templates
 from dynclevr.questions.programs import Executor
 
@@ -108,6 +109,30 @@ def rephrase(question: dict, pool: str, rng: np.random.Generator) -> str:
     return text
 
 
+SLIPS = ("swap", "wrong key", "left out", "extra key")
+
+
+def typed_with_a_slip(text: str, rng: np.random.Generator) -> str:
+    """The text as typed with one slip of the fingers in one of its words of 5+ letters (two neighbouring letters
+    swapped, a neighbouring key hit instead or as well, a letter left out; never the first letter, which people get
+    right): what people type, and what the parser's slip reading (vocab.slipped) is for."""
+    words = text.split(" ")
+    long_words = [i for i, w in enumerate(words) if sum(c.isalpha() for c in w) >= 5 and w.isascii()]
+    if not long_words:
+        return text
+    i = long_words[rng.integers(len(long_words))]
+    w = words[i]
+    k = int(rng.integers(1, len(w) - 1))
+    if not (w[k].isalpha() and w[k + 1].isalpha()):
+        return text
+    kind, c = SLIPS[rng.integers(len(SLIPS))], w[k].lower()
+    near = sorted(NEIGHBOURS.get(c, {c}))
+    key = near[rng.integers(len(near))]
+    words[i] = {"swap": w[:k] + w[k + 1] + w[k] + w[k + 2:], "wrong key": w[:k] + key + w[k + 1:],
+                "left out": w[:k] + w[k + 1:], "extra key": w[:k] + key + w[k:]}[kind]
+    return " ".join(words)
+
+
 def score(parser: QuestionParser, questions: list[dict], texts: list[str], executors: dict[str, Executor]) -> dict:
     parses = parser.analyse_batch(texts)
     exact = answered = unparsed = 0
@@ -128,8 +153,8 @@ def score(parser: QuestionParser, questions: list[dict], texts: list[str], execu
 
 
 def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_cfg: dict, seed: int = 0) -> dict:
-    """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'handwritten': ..., 'out_of_scope': ...}; `truth` maps scene
-    name -> Scene4D."""
+    """-> {'seen': ..., 'heldout': ..., 'dataset': ..., 'dataset_slips': ..., 'handwritten': ..., 'out_of_scope':
+    ...}; `truth` maps scene name -> Scene4D."""
     executors = {name: Executor(scene, labels_cfg) for name, scene in truth.items()}
     rng = np.random.default_rng(np.random.SeedSequence([seed, 0xE7A1]))
     texts = {pool: [rephrase(q, pool, rng) for q in questions] for pool in ("seen", "heldout")}
@@ -141,6 +166,7 @@ def evaluate(parser: QuestionParser, questions: list[dict], truth: dict, labels_
         pick = [i for i, k in enumerate(known) if k == keep]
         out[key] = score(parser, [questions[i] for i in pick], [texts["heldout"][i] for i in pick], executors)
     out["dataset"] = score(parser, questions, [q["text"] for q in questions], executors)
+    out["dataset_slips"] = score(parser, questions, [typed_with_a_slip(q["text"], rng) for q in questions], executors)
     hand = handwritten()
     parses = parser.analyse_batch([t for t, _ in hand])
     right = [p.program is not None and " ".join(p.program) == program for (_, program), p in zip(hand, parses)]
@@ -159,7 +185,9 @@ def markdown(result: dict) -> str:
     rows = [("phrasings seen in training", "seen"), ("held-out phrasings (never in training)", "heldout"),
             ("- of them, all words known (new combinations and sentences)", "heldout_known_words"),
             ("- of them, with a word never seen in training", "heldout_new_words"),
-            ("the split's own texts", "dataset")]
+            ("the split's own texts", "dataset"),
+            ("- of them, typed with one slip of the fingers (swap, wrong key, letter left out or added)",
+             "dataset_slips")]
     lines = ["| questions | n | program exact match | answer accuracy (truth) | unparsed |", "|---|---|---|---|---|"]
     for label, key in rows:
         r = result[key]

@@ -2,10 +2,12 @@
 
 A question is unparsed (counted wrong) rather than given a confident wrong program when
 - it asks for a count ('how many': no program counts) or a cause ('why': no program explains);
-- it is empty, or has more unknown words than `max_unknown_words` (a word one typo away from exactly one colour or
-  vehicle name counts as that name, so a misspelt colour such as 'gren' reads as 'green', and so does a word of
-  TYPO_LETTERS or more one typo away from exactly one known word: 'acelerating' as 'accelerating'; a word of the
-  synonym lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed' as 'hit', 'footage' as 'video';
+- it is empty, or has more unknown words than `max_unknown_words` (a word one slip of the fingers from exactly one
+  readable word counts as that word, whatever its length: 'slolwy' as 'slowly', 'oclor' as 'color'; a word one
+  typo away from exactly one colour or vehicle name counts as that name, so a misspelt colour such as 'gren' reads
+  as 'green', and so does a word of TYPO_LETTERS or more one typo away from exactly one known word: 'acelerating'
+  as 'accelerating'; a word of the synonym lexicon, SYNONYMS_FILE, counts as the known word it stands for: 'rammed'
+  as 'hit', 'footage' as 'video';
   failing that, a word with the stem of a known word or of a lexicon word counts as that word: 'hovered' as
   'hovering'; and last, a word of WordNet's lexicon, WORDNET_FILE, as the known word it shares a main sense with:
   'journeying' as 'travelling');
@@ -24,6 +26,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   program's predicate ('miss', 'braking', 'grounded'; 'decelerating' is refused as said, before WordNet reads it
   as 'slow'). No operation negates, so the model reads such a
   wording as its nearest phrase, the unreversed one, and would answer the opposite;
+- it asks what no family asks, however near a family's its words are: a direction or a place asked as yes or no
+  ('is it moving left?', 'is it behind the bus?'), the video's end, how often ('twice'), the time before or after a
+  collision, the second or last of its partners, a turn; or a yes/no question is read as asking which
+  (`form_unmatched`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -48,8 +54,8 @@ from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
                                           description_as_said, is_description, placeholders)
-from dynclevr.language.tokenize import tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab
+from dynclevr.language.tokenize import SPELLINGS, tokenize
+from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, slipped
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -120,6 +126,7 @@ class QuestionParser:
         # Synonyms stand in only for words the parser does not know, and only by words it knows.
         self.synonyms = {w: known for w, known in synonyms().items()
                          if w not in self.known and all(k in self.known for k in known)}
+        self.readable = self.known | set(self.synonyms)
         # ... and so does a word of a known word's stem, or else of a lexicon word's
         self.stems = {**_by_stem(self.synonyms), **_by_stem({w: [w] for w in self.known})}
         # Last, WordNet's: an unknown word that shares a main sense with a known one (wordnet.py), read by its stem
@@ -247,10 +254,12 @@ class QuestionParser:
         # Typos are fixed towards object words, which the copy path must carry exactly, and towards a sentence word
         # only in words of TYPO_LETTERS or more ('acelerating', 'stationery'): a short one has too many neighbours
         # (fixing every word made 'black' 'back' and 'pink' 'pick'; 'sitting' would be 'hitting').
-        fixed = {w: OBJECT_LEXICON.closest(w) or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w
-                 for w in words if w not in self.known}
+        # A slip of the fingers ('slolwy', 'oclor') is fixed first, in a word of any length, towards a word the
+        # parser reads (known, or a synonym's, which then stands in; 'tsruck' is 'struck', not 'truck').
+        fixed = {w: slipped(w, self.readable, SPELLINGS) or OBJECT_LEXICON.closest(w)
+                 or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w for w in words if w not in self.known}
         read_as += tuple((w, k) for w, k in fixed.items() if k != w and k not in OBJECT_WORDS)
-        words = [fixed.get(w, w) for w in words]
+        words = [k for w in words for k in (self._stand_in(fixed[w]) if w in fixed else [w])]
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):

@@ -7,7 +7,7 @@ import unicodedata
 
 _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 # One spelling per word, so that the vocabulary (built from generated questions) covers common variants.
-_SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
+SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
               "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes"}
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 # Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
@@ -21,4 +21,4 @@ def tokenize(text: str) -> list[str]:
     raises on a str."""
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
-    return [_SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]
+    return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]

@@ -74,3 +74,32 @@ def _one_edit(a: str, b: str) -> bool:
     short, long_ = (a, b) if len(a) < len(b) else (b, a)
     i = next((k for k in range(len(short)) if short[k] != long_[k]), len(short))
     return short[i:] == long_[i + 1:]
+
+
+# Each letter's neighbours on a QWERTY keyboard: a finger that lands one key off types one of them
+_ROWS = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+NEIGHBOURS = {c: {row[j] for j in (k - 1, k + 1) if 0 <= j < len(row)}
+              | {other[j] for other in (_ROWS[r - 1] if r else "", _ROWS[r + 1] if r + 1 < len(_ROWS) else "")
+                 for j in (k - 1, k, k + 1) if 0 <= j < len(other)}
+              for r, row in enumerate(_ROWS) for k, c in enumerate(row)}
+_LETTERS = "abcdefghijklmnopqrstuvwxyz"
+
+
+def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
+    """The one word of `words` that `word` (4+ letters) is a slip of the fingers away from: two neighbouring letters
+    swapped ('slolwy'), a key next to the right one hit instead ('shaoe') or as well ('sopeed'), a letter left out
+    ('oject') or doubled ('speeed'); None when there is none or more than one; `spellings` unifies a variant first
+    ('cloour' -> 'colour' -> 'color'). Slips are rarer between real words than any one edit, so short words are fixed
+    too ('oclor'), where `Vocab.closest` would make 'black' 'back'."""
+    if len(word) < 4:
+        return None
+    n = len(word)
+    swaps = {word[:k] + word[k + 1] + word[k] + word[k + 2:] for k in range(n - 1)}
+    wrong = {word[:k] + c + word[k + 1:] for k in range(n) for c in NEIGHBOURS.get(word[k], ())}
+    extra = {word[:k] + word[k + 1:] for k in range(n)
+             if word[k] in {*NEIGHBOURS.get(word[k - 1] if k else "", ()), *NEIGHBOURS.get(word[k + 1:k + 2], ()),
+                            word[k - 1:k], word[k + 1:k + 2]} - {""}}
+    left_out = {word[:k] + c + word[k:] for k in range(n + 1) for c in _LETTERS}
+    spellings = spellings or {}
+    hits = sorted({spellings.get(t, t) for t in (swaps | wrong | extra | left_out) - {word}} & words)
+    return hits[0] if len(hits) == 1 else None
