@@ -31,7 +31,7 @@ from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, cata
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, slipped
+from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -839,14 +839,18 @@ def test_a_long_misspelt_word_is_read_as_the_one_known_word_an_edit_away():
 def test_a_slip_of_the_fingers_is_read_as_the_one_word_it_slipped_from():
     """Two letters swapped, a neighbouring key instead or as well, a letter left out or doubled, in a word of any
     length (4+ letters): the one readable word it slipped from; none where two fit; never a real word's neighbour
-    that is no slip ('black' is not 'back')."""
+    that is no slip ('black' is not 'back'). Two words typed together are read apart."""
     words = {"slowly", "color", "object", "speed", "fast", "faster", "back", "stopped", "struck"}
     for typed, meant in (("slolwy", "slowly"), ("oclor", "color"), ("oject", "object"), ("speeed", "speed"),
                          ("sopeed", "speed"), ("shpeed", None), ("stoped", "stopped"), ("tsruck", "struck"),
                          ("spwed", "speed"), ("cloour", "color"), ("black", None), ("fastr", None), ("car", None)):
         assert slipped(typed, words, SPELLINGS) == meant, typed
+    # two words run together, where they split one way only
+    assert run_together("fastmoving", {"fast", "moving", "fas"}) == "fast moving"
+    assert run_together("redcar", {"red", "car", "redc", "ar"}) is None and run_together("fast", words) is None
     parser = QuestionParser.load()
     red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
+    assert parser.parse("Is the redsedan movingfast at the start?") == f"{red} start is_moving_velocity[fast]".split()
     assert parser.parse("Is the red sedan moving slolwy at the start?") == \
         f"{red} start is_moving_velocity[slow]".split()
     assert parser.parse("What is the oclor of the thing that the red sedna hits?") == \

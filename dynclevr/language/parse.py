@@ -55,7 +55,7 @@ from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_b
 from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
                                           description_as_said, is_description, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, slipped
+from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -256,10 +256,13 @@ class QuestionParser:
         # (fixing every word made 'black' 'back' and 'pink' 'pick'; 'sitting' would be 'hitting').
         # A slip of the fingers ('slolwy', 'oclor') is fixed first, in a word of any length, towards a word the
         # parser reads (known, or a synonym's, which then stands in; 'tsruck' is 'struck', not 'truck').
-        fixed = {w: slipped(w, self.readable, SPELLINGS) or OBJECT_LEXICON.closest(w)
-                 or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w for w in words if w not in self.known}
+        # Two words run together ('fastmoving', 'speedup') are read apart where they split one way only.
+        fixed = {w: slipped(w, self.readable, SPELLINGS) or run_together(w, self.readable)
+                 or OBJECT_LEXICON.closest(w) or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w
+                 for w in words if w not in self.known}
         read_as += tuple((w, k) for w, k in fixed.items() if k != w and k not in OBJECT_WORDS)
-        words = [k for w in words for k in (self._stand_in(fixed[w]) if w in fixed else [w])]
+        words = [k for w in words for part in fixed.get(w, w).split() for k in (self._stand_in(part) if w in fixed
+                                                                               else [part])]
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):

@@ -103,3 +103,10 @@ def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None)
     spellings = spellings or {}
     hits = sorted({spellings.get(t, t) for t in (swaps | wrong | extra | left_out) - {word}} & words)
     return hits[0] if len(hits) == 1 else None
+
+
+def run_together(word: str, words: set[str]) -> str | None:
+    """'fastmoving' -> 'fast moving': two words of `words` (of 2+ letters each) that `word` is, typed without the
+    space or hyphen between them, where it splits so one way only; else None."""
+    splits = [f"{word[:k]} {word[k:]}" for k in range(2, len(word) - 1) if word[:k] in words and word[k:] in words]
+    return splits[0] if len(splits) == 1 else None
