@@ -21,7 +21,7 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
-                                     clause_time, comparative_as_said, direction_unasked, form_unmatched,
+                                     clause_time, comparative_as_said, direction_unasked, form_unmatched, time_unasked,
                                      first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
                                      named_attribute, noun_phrase_as_question, program_shape, request_as_imperative,
                                      reversed_as_said, reversed_reading, speed_as_subject, synonyms, tail_as_question,
@@ -345,6 +345,15 @@ def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_
     for text in ("is the red car going left or right?", "which way is the red car moving?"):
         assert form_unmatched(tokenize(text), which) == "", text
     assert form_unmatched(tokenize("which is faster, the red car or the bus?"), fast) == ""
+    # a motion read at the start, of a question that says another time and no word of the start
+    for text, said in (("in the middle of the video, is the red car fast?", "middle"), ("is the red car fast after "
+                       "two seconds?", "two seconds"), ("at frame 50, is the red car fast?", "frame 50"),
+                       ("is the red car ever fast?", "ever")):
+        assert time_unasked(tokenize(text), fast).startswith(f"the question asks at a time other than the start "
+                                                             f"('{said}')"), text
+    for text in ("is the red car fast at the start?", "in the first frames, is the red car fast?", "at frame 1, is "
+                 "the red car fast?", "is the red car fast?", "is the red car fast initially?"):
+        assert time_unasked(tokenize(text), fast) == "", text
     for text in ("right at the start, is the red car fast?", "is the red car fast right when it appears?"):
         assert direction_unasked(tokenize(text), fast) == "", text
     for text in ("once the video is over, does the red car hit the bus?", "when the clip is done, does the red car "

@@ -27,9 +27,9 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   as 'slow'). No operation negates, so the model reads such a
   wording as its nearest phrase, the unreversed one, and would answer the opposite;
 - it asks what no family asks, however near a family's its words are: a direction or a place asked as yes or no
-  ('is it moving left?', 'is it behind the bus?'), the video's end, how often ('twice'), the time before or after a
-  collision, the second or last of its partners, a turn; or a yes/no question is read as asking which
-  (`form_unmatched`);
+  ('is it moving left?', 'is it behind the bus?'), the video's end or another time than the start ('in the middle',
+  'after two seconds': `time_unasked`), how often ('twice'), the time before or after a collision, the second or
+  last of its partners, a turn; or a yes/no question is read as asking which (`form_unmatched`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -215,7 +215,8 @@ class QuestionParser:
         chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
         # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned')
         return [replace(c, program=None, reason=why) if c.program and (
-            why := form_unmatched(said, c.program) or direction_unasked(said, c.program)) else c
+            why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
+            or time_unasked(said, c.program)) else c
             for c, said in zip(chosen, said_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -911,6 +912,33 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
 TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
            "veers", "veering", "u-turn"}
+
+
+# A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
+# in the middle, at the 2-second mark, throughout or ever (they ask at the start, when it comes into view, at a
+# collision)
+NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["throughout"], ["during"], ["later"], ["ever"],
+             ["always"], ["eventually"], ["afterwards"], ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
+             ["at", "any", "time"], ["at", "one", "point"], ["most", "of", "the", "time"], ["all", "the", "time"],
+             ["the", "whole", "time"], ["whole"], ["entire"])
+CLOCK_WORDS = {"second", "seconds", "frame", "frames", "s", "sec", "secs"}
+ORDINAL_WORDS = {"first", "1", "0", "one", "zero"}   # 'frame 1', 'the first second': the start
+
+
+def time_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question says no word of the start but
+    another time ('in the middle of the video, is the red car fast?', 'after two seconds', 'at frame 50', 'ever'),
+    which the decoder read as the start."""
+    if "start" not in program or START_WORDS & set(words) or "first" in words:
+        return ""
+    said = next((" ".join(t) for k in range(len(words)) for t in NOT_START if words[k:k + len(t)] == t), None)
+    clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if (a in CLOCK_WORDS and b.isdigit() or
+                                                                   b in CLOCK_WORDS and (a.isdigit() or a in NUMBERS))
+                  and not {a, b} & ORDINAL_WORDS), None)
+    if not (said or clock):
+        return ""
+    return (f"the question asks at a time other than the start ('{said or clock}'), which no question here asks of a "
+            "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
 
 
 YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had", "should", "are", "were"}
