@@ -849,6 +849,7 @@ def test_a_slip_of_the_fingers_is_read_as_the_one_word_it_slipped_from():
                          ("sopeed", "speed"), ("shpeed", None), ("stoped", "stopped"), ("tsruck", "struck"),
                          ("spwed", "speed"), ("cloour", "color"), ("black", None), ("fastr", None), ("car", None)):
         assert slipped(typed, words, SPELLINGS) == meant, typed
+    assert slipped("spee" + "d" * 5000, words) is None   # a pasted run of letters: no slip, no quadratic work
     # two words run together, where they split one way only
     assert run_together("fastmoving", {"fast", "moving", "fas"}) == "fast moving"
     assert run_together("redcar", {"red", "car", "redc", "ar"}) is None and run_together("fast", words) is None

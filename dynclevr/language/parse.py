@@ -580,7 +580,7 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     for i in range(len(words)):
         for choices, listed, needed in OFFERS:
             first = _choice(words, i, choices)
-            if not first or choices is DIRECTION_CHOICES and words[i - 1] in PLACE_BEFORE:
+            if not first or choices is DIRECTION_CHOICES and words[i - 1:i] and words[i - 1] in PLACE_BEFORE:
                 continue
             said, k = [first[0]], i + first[1]
             while True:

@@ -83,6 +83,7 @@ NEIGHBOURS = {c: {row[j] for j in (k - 1, k + 1) if 0 <= j < len(row)}
                  for j in (k - 1, k, k + 1) if 0 <= j < len(other)}
               for r, row in enumerate(_ROWS) for k, c in enumerate(row)}
 _LETTERS = "abcdefghijklmnopqrstuvwxyz"
+SLIP_LETTERS = 30   # longer than any word read; bounds the candidates a pasted string of letters would make
 
 
 def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
@@ -91,7 +92,7 @@ def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None)
     ('oject') or doubled ('speeed'); None when there is none or more than one; `spellings` unifies a variant first
     ('cloour' -> 'colour' -> 'color'). Slips are rarer between real words than any one edit, so short words are fixed
     too ('oclor'), where `Vocab.closest` would make 'black' 'back'."""
-    if len(word) < 4:
+    if not 4 <= len(word) <= SLIP_LETTERS:
         return None
     n = len(word)
     swaps = {word[:k] + word[k + 1] + word[k] + word[k + 2:] for k in range(n - 1)}
