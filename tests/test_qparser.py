@@ -23,7 +23,8 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
                                      clause_time, comparative_as_said, direction_unasked, form_unmatched, time_unasked,
                                      first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
-                                     named_attribute, noun_phrase_as_question, program_shape, request_as_imperative,
+                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
+                                     program_shape, request_as_imperative,
                                      reversed_as_said, reversed_reading, speed_as_subject, synonyms, tail_as_question,
                                      time_clause_last, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
@@ -381,6 +382,31 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
                  "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_negated_auxiliary_or_a_tag_asks_what_the_question_without_it_asks():
+    """English answers 'Isn't X fast?' and 'X is fast, isn't it?' as 'Is X fast?': the negation on an auxiliary said
+    before its subject (first, or after a clause said first) and a tag after a statement deny nothing. A negation
+    inside the clause does, and a tag after a statement that denies is left to the rules that read negations."""
+    cases = {"Isn't the red car fast at the start?": "is the red car fast at the start?",
+             "Doesn't the red car hit the bus?": "does the red car hit the bus?",
+             "When they collide, isn't the sedan faster than the bus?": "when they collide, is the sedan faster than "
+                                                                         "the bus?",
+             "If it had been fast, wouldn't the bike have hit the bus?": "if it had been fast, would the bike have hit "
+                                                                         "the bus?",
+             "The red car is fast at the start, isn't it?": "the red car is fast at the start?",
+             "The car and the bus collide, don't they?": "the car and the bus collide?",
+             "Had the jet been floating, it would have hit the bus, wouldn't it?": "had the jet been floating, it "
+                                                                                    "would have hit the bus?",
+             "The jet floats at the start, right?": "the jet floats at the start?"}
+    for text, said in cases.items():
+        words, read_as = negative_question_as_asked(tokenize(text))
+        assert words == tokenize(said), text
+        assert read_as and read_as[0][0] in " ".join(tokenize(text)), read_as
+    for text in ("Is the red car not moving at the start?", "Does the red car not hit the bus?",
+                 "The red car isn't moving at the start, is it?", "Is the car going left, right?",
+                 "Isn't it?"):
+        assert negative_question_as_asked(tokenize(text)) == (tokenize(text), ()), text
 
 
 def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_it():

@@ -235,6 +235,7 @@ class QuestionParser:
         words, framing = framing_dropped(words)
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
+        words, negative = negative_question_as_asked(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
         words, heading = heading_as_direction(words)
@@ -243,7 +244,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + described + end + framing + attended + request + asked + aloft + heading + subject + first
+        request = (named + described + end + framing + attended + request + negative + asked + aloft + heading + subject + first
                    + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
@@ -422,6 +423,37 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
     return ["tell", "me"] + rest, ((said, "tell me"),)
+
+
+# A yes/no question asked with its auxiliary negated ('Isn't the red car fast?', 'Doesn't it hit the bus?') asks
+# the same as without: English answers it yes where the car is fast. So does a statement with a tag ('The red car is
+# fast, isn't it?', '..., right?'). Only a negation inside the clause ('Is the red car not moving?') denies.
+SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
+                  "these", "those", "either", "both", "they", "some", "all"}
+TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
+AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"])
+
+
+def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is not the red car fast ?' -> 'is the red car fast ?' (the negation on the auxiliary put before the subject,
+    first or after a clause said first: 'when they collide , is not the sedan faster ?'); 'the red car is fast , is
+    not it ?' and '... , right ?' -> 'the red car is fast ?' (a tag after a statement with no negation of its own).
+    With the words read so, or the words as they are and ()."""
+    for k in range(len(words) - 2):
+        if (k == 0 or words[k - 1] == ",") and words[k] in YES_NO_OPENERS and words[k + 1] == "not" and \
+                (words[k + 2] in SUBJECT_STARTS or words[k + 2] in OBJECT_WORDS) and words[k + 3:] not in ([], ["?"]):
+            return words[:k + 1] + words[k + 2:], ((f"{words[k]} not", words[k]),)
+    end = words[-1:] if words[-1:] in (["?"], ["."]) else []
+    body = words[:len(words) - len(end)]
+    negative = [[w, "not", p] for w in sorted(YES_NO_OPENERS) for p in sorted(TAG_PRONOUNS)]
+    for tag in negative + list(AGREEING_TAGS):
+        n = len(tag) + 1
+        statement = body[:-n]
+        # 'is it going left , right ?' offers a choice: only a statement takes an agreeing tag
+        asked = tag[1:2] != ["not"] and statement[:1] and statement[0] in YES_NO_OPENERS | ASKING | {"how"}
+        if len(body) > n and body[-n:] == [","] + tag and not asked and not NEGATIONS.intersection(statement):
+            return statement + ["?"], ((" ".join(body[-n:]), "?"),)
+    return words, ()
 
 
 MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
