@@ -244,8 +244,8 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + described + end + framing + attended + request + negative + asked + aloft + heading + subject + first
-                   + more + tail + offered)
+        request = (named + described + end + framing + attended + request + negative + asked + aloft + heading
+                   + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
