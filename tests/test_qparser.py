@@ -295,7 +295,14 @@ def test_questions_in_broken_english_read_as_the_grammar_says_them():
         tokenize("does the yellow bus hit anything?")
     assert attention_as_subject(tokenize("look at the red car: is its speed low?"))[0] == \
         tokenize("is the red car's speed low?")
-    for text in ("watch the video. does the bus hit the car?", "look at the red car and the bus, do they collide?"):
+    assert attention_as_subject(tokenize("How about the blue bus, is it fast at the start?"))[0] == \
+        tokenize("is the blue bus fast at the start?")
+    assert attention_as_subject(tokenize("As for the brown truck - does it hit anything?"))[0] == \
+        tokenize("does the brown truck hit anything?")
+    assert attention_as_subject(tokenize("look at the red car and the bus, do they collide?"))[0] == \
+        tokenize("do the red car and the bus collide?")
+    for text in ("watch the video. does the bus hit the car?", "look at the red car and the video, do they collide?",
+                 "how about the red car and the bus, does it collide?"):
         assert attention_as_subject(tokenize(text)) == (tokenize(text), ()), text
     # a preamble that frames the question and names no object is no part of it
     for text in ("thinking about the whole clip, does the red car hit the bus?", "not sure, but does the red car hit "

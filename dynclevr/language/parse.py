@@ -377,30 +377,49 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     return main, ((" ".join(words[:k]), "nothing, a preamble"),)
 
 
-# A first sentence that points at an object ('Watch the yellow bus. Does it hit anything?'): the question about it
-ATTENDING = (["look", "at"], ["watch"], ["consider"], ["focus", "on"], ["observe"], ["notice"], ["check"])
+# A first sentence or phrase that points at an object ('Watch the yellow bus. Does it hit anything?', 'How about the
+# blue bus, is it fast?'): the question about it
+ATTENDING = (["look", "at"], ["watch"], ["consider"], ["focus", "on"], ["observe"], ["notice"], ["check"],
+             ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
+             ["as", "to"])
+POINTING_ENDS = {".", ":", ";", ",", "?", "-"}
 
 
 def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'watch the yellow bus . does it hit anything ?' -> 'does the yellow bus hit anything ?': the object a first
-    sentence points at put for the question's first 'it' (or its 'its'), and that sentence left out. With the words
-    read so, or the words as they are and ()."""
+    sentence or phrase points at ('how about the blue bus , is it ...') put for the question's first 'it' (or its
+    'its'), two objects ('how about the red car and the bus , do they ...') for its first 'they', and the pointing
+    left out. With the words read so, or the words as they are and ()."""
     verb = next((v for v in ATTENDING if words[:len(v)] == v), None)
     if verb is None:
         return words, ()
-    k = len(verb) + (words[len(verb):len(verb) + 1] in (["the"], ["that"], ["this"]))
-    j = k
-    while words[j:j + 1] and words[j] in OBJECT_WORDS:
-        j += 1
-    if j == k or words[j:j + 1] not in (["."], [":"], [";"]) or not words[j + 1:j + 2] or \
+
+    def mention(k: int) -> tuple[list[str], int]:
+        """The object named from word k on ('the', 'that' or 'this' first) and where it ends."""
+        j = k = k + (words[k:k + 1] in (["the"], ["that"], ["this"]))
+        while words[j:j + 1] and words[j] in OBJECT_WORDS:
+            j += 1
+        return ["the", *words[k:j]] if j > k else [], j
+
+    first, j = mention(len(verb))
+    second = []
+    if first and words[j:j + 1] == ["and"]:
+        second, j = mention(j + 1)
+        if not second:
+            return words, ()
+    if not first or words[j:j + 1] == [] or words[j] not in POINTING_ENDS or not words[j + 1:j + 2] or \
             words[j + 1] not in QUESTION_OPENERS:
         return words, ()
-    thing, question = ["the", *words[k:j]], words[j + 1:]
+    thing, question = first + (["and", *second] if second else []), words[j + 1:]
+    pronouns = ("they", "them") if second else ("it", "its")
     for n, w in enumerate(question):
-        if w in ("it", "its"):
+        if w in pronouns:
             question = question[:n] + thing + (["'", "s"] if w == "its" else []) + question[n + 1:]
             break
-    return question, ((" ".join(words[:j + 1]), "nothing; 'it' as " + " ".join(thing)),)
+    else:
+        if second:
+            return words, ()
+    return question, ((" ".join(words[:j + 1]), f"nothing; '{pronouns[0]}' as " + " ".join(thing)),)
 
 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
