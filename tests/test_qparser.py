@@ -627,6 +627,13 @@ def test_a_property_no_question_asks_is_no_question_here(synthetic_fit):
                  "clip is over?", "In the last frame, what colour is the moving vehicle?"):
         parse = parser.analyse_batch([text])[0]
         assert parse.program is None and parse.reason.startswith("the question asks about the video's end"), text
+    # a comparison offered as a choice asks which, which no family answers; one comparison asked is read
+    for text in ("Is the green sedan faster or slower than the red bus at the start?", "At the start, is the red "
+                 "bus slower or quicker than the green sedan?"):
+        parse = parser.analyse_batch([text])[0]
+        assert parse.program is None and parse.reason.startswith("the question offers '"), text
+    assert not parser.analyse_batch(["Is the green sedan faster than the red bus or the blue bus?"])[0] \
+        .reason.startswith("the question offers")
     for text in ("Where is the green sedan heading at the start?", "What is the moving velocity of the green sedan "
                  "at the beginning?", "What is the green sedan's moving velocity at the beginning?",
                  "When the green sedan hits the red bus, is it fast?", "By the end of the video, has the green sedan "

@@ -273,6 +273,11 @@ class QuestionParser:
             next((f"{a} times" for a, b in zip(said, said[1:]) if b == "times" and a in NUMBERS), None)
         if often:
             return [], f"the question asks how often ('{often}'), which no question here answers", read_as, said
+        offered = next((f"{a} or {c}" for a, b, c in zip(said, said[1:], said[2:])
+                        if b == "or" and {a, c} <= COMPARISONS and SPEED_ORDER[a] != SPEED_ORDER[c]), None)
+        if offered:
+            return [], (f"the question offers '{offered}' to choose from, which no question here answers: ask "
+                        "whether one is faster (or slower) than the other"), read_as, said
         if words[:1] == ["why"] or words[:2] == ["how", "come"]:
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
@@ -574,6 +579,11 @@ def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     if body[-2:] in (["is", "what"], ["was", "what"]) and len(body) > 2 and body[0] not in ASKING | {"how"}:
         return ["what", body[-2], *body[:-2], *end], ((f"... {body[-2]} what", f"what {body[-2]} ..."),)
     return words, ()
+
+
+# Comparisons of speed: offered as a choice ('is X faster or slower than Y?') they ask which, which no family answers
+SPEED_ORDER = {"faster": 1, "quicker": 1, "speedier": 1, "slower": -1}
+COMPARISONS = set(SPEED_ORDER)
 
 
 # A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
