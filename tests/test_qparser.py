@@ -21,7 +21,7 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
-                                     clause_time, comparative_as_said, direction_unasked, form_unmatched, time_unasked,
+                                     anything_unasked, clause_time, comparative_as_said, direction_unasked, form_unmatched, time_unasked,
                                      first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
                                      named_attribute, negative_question_as_asked, noun_phrase_as_question,
                                      program_shape, request_as_imperative,
@@ -389,6 +389,20 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
                  "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_two_objects_and_anything_else_at_once_are_no_question_here():
+    """'Does either X or Y hit anything?' read as the pair's collision answers another question: refused where the
+    reading names two objects and the question an indefinite one; 'at any point' is no object."""
+    program = ("Events Objects filter_attributes[red] filter_attributes[car] unique filter_collision Objects "
+               "filter_attributes[blue] filter_attributes[bus] unique filter_collision exist").split()
+    for text in ("Does either the red car or the blue bus hit anything?", "Do both the red car and the blue bus "
+                 "collide with some other vehicle?", "Does the red car hit anything other than the blue bus?"):
+        assert anything_unasked(tokenize(text), program).startswith("the question asks about two objects"), text
+    for text in ("Does the red car hit the blue bus at any point?", "Do the red car and the blue bus collide?"):
+        assert anything_unasked(tokenize(text), program) == "", text
+    single = "Events Objects filter_attributes[red] filter_attributes[car] unique filter_collision exist".split()
+    assert anything_unasked(tokenize("Does the red car hit anything?"), single) == ""
 
 
 def test_a_negated_auxiliary_or_a_tag_asks_what_the_question_without_it_asks():

@@ -216,7 +216,7 @@ class QuestionParser:
         # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned')
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
-            or time_unasked(said, c.program)) else c
+            or time_unasked(said, c.program) or anything_unasked(said, c.program)) else c
             for c, said in zip(chosen, said_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -1015,6 +1015,29 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")
+    return ""
+
+
+INDEFINITES = {"anything", "something", "anyone", "someone", "anybody", "somebody"}
+ANY_NOUNS = {"vehicle", "vehicles", "object", "objects", "thing", "things", "other", "one", "else"}
+
+
+def anything_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading of two named objects drops an indefinite one ('' when it does not): 'does either the red car or
+    the blue bus hit anything?' and 'do both ... collide with something?' ask about each object and anything else,
+    which no family asks; the pair's reading ('do they hit each other?') answers another question."""
+    named, current = set(), []
+    for token in program:
+        if token.startswith("filter_attributes["):
+            current.append(token)
+        elif token == "unique" and current:
+            named.add(tuple(current))
+            current = []
+    indefinite = INDEFINITES.intersection(words) or any(a in ("any", "some") and b in ANY_NOUNS
+                                                       for a, b in zip(words, words[1:]))
+    if len(named) >= 2 and indefinite:
+        return ("the question asks about two objects and anything else at once, which no question here asks: ask "
+                "about each object alone, or whether the two hit each other")
     return ""
 
 
