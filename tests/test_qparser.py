@@ -20,13 +20,13 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, attention_as_subject,
-                                     anything_unasked, clause_time, comparative_as_said, direction_unasked, form_unmatched, time_unasked,
-                                     first_frames_as_said, framing_dropped, heading_as_direction, height_as_aloft,
-                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
-                                     program_shape, request_as_imperative,
-                                     reversed_as_said, reversed_reading, speed_as_subject, synonyms, tail_as_question,
-                                     time_clause_last, video_end_as_said, well_formed)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, anything_unasked,
+                                     attention_as_subject, clause_time, comparative_as_said, direction_unasked,
+                                     first_frames_as_said, form_unmatched, framing_dropped, heading_as_direction,
+                                     height_as_aloft, named_attribute, negative_question_as_asked,
+                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
+                                     reversed_reading, speed_as_subject, synonyms, tail_as_question, time_clause_last,
+                                     time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
