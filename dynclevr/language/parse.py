@@ -1002,19 +1002,24 @@ def time_unasked(words: list[str], program: list[str]) -> str:
             "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
 
 
+WHO = {"who", "whom", "whose"}
 YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had", "should", "are", "were"}
 
 
 def form_unmatched(words: list[str], program: list[str]) -> str:
     """Why a reading answers in another form than the question asks for ('' when it does not): a yes/no question
     (its head after a clause of time said first) read as asking which ('does the red car change direction?' read as
-    which way it moves; but 'is it static, slow or fast?' offers its answers). Not the other way round: the grammar
-    asks 'which is faster, X or Y?' for yes or no (is X faster)."""
+    which way it moves; but 'is it static, slow or fast?' offers its answers), and a question of who read as yes or
+    no ('who hits the bus?' as whether anything does). Not 'which' read as yes or no: the grammar asks 'which is
+    faster, X or Y?' for yes or no (is X faster)."""
     head = _head(words)
     returns = OPS[operation(program[-1])].output
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")
+    if head[:1] and head[0] in WHO and returns is bool:
+        return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
+                "the vehicle")
     return ""
 
 
