@@ -347,6 +347,10 @@ def test_a_colour_after_its_vehicle_alternatives_and_the_videos_end_read_as_the_
                        ("is it driving towards the camera?", "towards the camera")):
         assert direction_unasked(tokenize(text), fast).startswith(f"the question turns on '{said}'"), text
     assert direction_unasked(tokenize("which way is the red car moving, left or right?"), which) == ""
+    come_in = "Objects filter_attributes[red] filter_attributes[car] unique come_in_frame query_moving_velocity".split()
+    for text in ("when the red car appears, which way is it going?", "what direction does it move in when it enters?"):
+        assert direction_unasked(tokenize(text), come_in).startswith("the question asks 'w"), text
+    assert direction_unasked(tokenize("which way is the red car moving at the start?"), which) == ""
     # a yes/no question read as a query, unless it offers the answers; 'which is faster, X or Y?' is yes or no
     for text in ("does the red car change direction?", "at the start, is the red car accelerating?"):
         assert form_unmatched(tokenize(text), which).startswith("the question asks yes or no"), text
@@ -505,13 +509,16 @@ def test_a_reading_that_asks_the_opposite_of_the_question_is_refused():
     refused = [("is <obj1> moving at the start ?", static), ("is <obj1> in motion at the start ?", static),
                ("is <obj1> not accelerating at the start ?", accel), ("is the engine of <obj1> off at first ?", accel),
                ("does <obj1> never hit <obj2> ?", collide), ("does <obj1> miss <obj2> ?", collide),
-               ("is <obj1> on the ground at the start ?", floating), ("is <obj1> grounded at first ?", floating)]
+               ("is <obj1> on the ground at the start ?", floating), ("is <obj1> grounded at first ?", floating),
+               ("is <obj1> falling at the start ?", floating), ("is <obj1> descending at first ?", floating)]
     for text, program in refused:
         assert reversed_reading(tokenize(text), program), text
     kept = [("is <obj1> not moving at the start ?", static), ("is <obj1> standing still ?", static),
             ("is <obj1> non-moving at first ?", static), ("is <obj1> not in motion ?", static),
             ("without <obj1> moving at the start , would it hit <obj2> ?", static),
             ("is <obj1> accelerating or not at the start ?", accel), ("does <obj1> stay off the ground ?", floating),
+            ("if <obj1> had not fallen , would it hit <obj2> ?", floating),
+            ("is <obj1> hovering or falling ?", floating),
             ("is <obj1> up in the air or on the ground ?", floating),
             ("is <obj1> moving fast at the start ?", "<obj1> start is_moving_velocity[fast]".split())]
     for text, program in kept:

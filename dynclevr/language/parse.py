@@ -768,7 +768,10 @@ REVERSERS = {
                             "dodge", "dodges", "dodged", "evade", "evades", "evaded", "escape", "escapes"},
     ("is_accelerating", "filter_accelerating", "Counterfactual_accelerating"):
         {"braking", "brake", "brakes", "braked", "off"},
-    ("is_floating", "filter_floating", "Counterfactual_floating"): {"grounded", "landed", "landing", "ground"},
+    ("is_floating", "filter_floating", "Counterfactual_floating"): {"grounded", "landed", "landing", "ground", "fall",
+                                                                   "falls", "fell", "fallen", "falling", "descend",
+                                                                   "descends", "descended", "descending", "dropping",
+                                                                   "sinking", "plunging", "plummeting"},
 }
 ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
 ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': not accelerating
@@ -959,15 +962,25 @@ def _direction_said(words: list[str]) -> str | None:
     return None
 
 
+DIRECTION_ASKED = (["which", "way"], ["what", "way"], ["what", "direction"], ["which", "direction"])
+
+
 def direction_unasked(words: list[str], abstract: list[str]) -> str:
-    """Why a reading that asks no direction is not the question's ('' when it is): the question turns on a
-    direction or a place ('is the red car moving left?', 'is it on the left?'; the decoder read them as its speed or
-    its engine)."""
-    said = None if "query_moving_direction" in abstract else _direction_said(words)
+    """Why a reading that asks no direction is not the question's ('' when it is): the question asks which way
+    ('which way is it going when it appears?', read as its speed then: no family asks a direction there) or turns
+    on a direction or a place ('is the red car moving left?', 'is it on the left?'; the decoder read them as its
+    speed or its engine)."""
+    if "query_moving_direction" in abstract:
+        return ""
+    asked = next((" ".join(p) for k in range(len(words)) for p in DIRECTION_ASKED if words[k:k + len(p)] == p), None)
+    if asked:
+        return (f"the question asks '{asked}', but its nearest reading asks another property: no question here asks "
+                "which way a vehicle moves but at the start or at a collision")
+    said = _direction_said(words)
     if said is None:
         return ""
     return (f"the question turns on '{said}', a direction or a place, which no question here asks but 'which way "
-            "is it moving' (at the start, when it comes into view, or at a collision)")
+            "is it moving' (at the start or at a collision)")
 
 
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
