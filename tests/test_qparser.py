@@ -20,10 +20,11 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, _chosen, alternatives_as_asked, anything_unasked,
-                                     attention_as_subject, clause_time, comparative_as_said, direction_unasked,
-                                     first_frames_as_said, form_unmatched, framing_dropped, heading_as_direction,
-                                     height_as_aloft, named_attribute, negative_question_as_asked,
+from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
+                                     attention_as_subject, _chosen, clause_time, comparative_as_said,
+                                     direction_unasked, first_frames_as_said, form_unasked, form_unmatched,
+                                     framing_dropped, future_unread, heading_as_direction, height_as_aloft,
+                                     impact_unsaid, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
                                      reversed_reading, speed_as_subject, synonyms, tail_as_question, time_clause_last,
                                      time_unasked, video_end_as_said, well_formed)
@@ -394,6 +395,32 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
                  "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_reading_of_another_kind_than_the_question_asks_is_refused():
+    """A collision the question never says, yes or no for what or which, the video's collisions for a question
+    about the time after it: each reading answers another question. The grammar's own forms stay read: 'run into',
+    'which is faster, X or Y?', 'which one is faster, is it X?', 'what will happen next: will ...?'."""
+    partner = "Events Objects filter_attributes[car] unique get_all_col_partners unique query_attributes[color]".split()
+    assert impact_unsaid(tokenize("what colour is the parked car?"), partner).startswith("the question says nothing")
+    for text in ("what colour is the thing the car runs into?", "what colour is the thing the car hits?"):
+        assert impact_unsaid(tokenize(text), partner) == "", text
+    static = "Objects filter_attributes[bus] unique start is_static".split()
+    accel = "Objects filter_attributes[car] unique start is_accelerating".split()
+    faster = "Objects filter_attributes[red] unique Objects filter_attributes[bus] unique start faster_velocity".split()
+    future = "futureEvents Objects filter_attributes[car] unique filter_collision exist".split()
+    for text, program in (("which bus is parked at the start?", static), ("what's the type of the car that's "
+                          "speeding up?", accel), ("what will the car hit after the video?", future)):
+        assert form_unasked(tokenize(text), program).startswith("the question asks"), text
+    for text, program in (("which is faster, the red one or the bus?", faster), ("which one is faster, is it the "
+                          "red one?", faster), ("what will happen next: will the car hit anything?", future),
+                          ("is the bus parked at the start?", static)):
+        assert form_unasked(tokenize(text), program) == "", text
+    assert form_unasked(tokenize("what colour is the parked car?"), partner) == ""
+    assert future_unread(tokenize("what colour is the thing the car hits after the video?"), partner) \
+        .startswith("the question asks about the time after the video ('after the video')")
+    for text in ("what colour is the thing the car hits?", "after the collision, what colour is it?"):
+        assert future_unread(tokenize(text), partner) == "", text
 
 
 def test_two_objects_and_anything_else_at_once_are_no_question_here():

@@ -185,9 +185,11 @@ class QuestionParser:
         times: list[str | None] = [None] * len(texts)
         own: list[bool] = [False] * len(texts)
         said_words: list[list[str]] = [[] for _ in texts]
+        read_words: list[list[str]] = [[] for _ in texts]
         todo = []
         for i, t in enumerate(texts):
             words, why, read_as, said_words[i] = self._words(t)
+            read_words[i] = words
             if why:
                 readings[i].append(Parse(None, why, read_as=read_as))
                 continue
@@ -213,11 +215,15 @@ class QuestionParser:
                 readings[i][k] = replace(self._check(order, refs, ids, p, attended), read_as=readings[i][k].read_as,
                                          reordered=readings[i][k].reordered)
         chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
-        # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned')
+        # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned');
+        # a collision against the words as read, typos fixed ('colide'), where the parser knows every one of them
+        # (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
-            or time_unasked(said, c.program) or anything_unasked(said, c.program)) else c
-            for c, said in zip(chosen, said_words)]
+            or time_unasked(said, c.program) or anything_unasked(said, c.program)
+            or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
+            or future_unread(said, c.program)) else c
+            for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -1034,6 +1040,59 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
         return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
                 "the vehicle")
     return ""
+
+
+COLLISION_OPERATIONS = {"filter_collision", "get_all_col_partners"}
+# besides IMPACT_STEMS, the words a collision is said with: 'run into', 'drive into', 'each other'
+IMPACT_SAID = {"into", "onto", "run", "runs", "ran", "running", "other", "another"}
+
+
+def impact_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of a collision is not the question's ('' when it is): the question says nothing of one ('what
+    colour is the parked car?' read as the colour of what the car hits)."""
+    if not COLLISION_OPERATIONS.intersection(operation(t) for t in program):
+        return ""
+    if any(w in IMPACT_SAID or w.startswith(IMPACT_STEMS) for w in words):
+        return ""
+    return ("the question says nothing of a collision, but its nearest reading asks about one: no question here "
+            "reads it")
+
+
+def form_unasked(words: list[str], program: list[str]) -> str:
+    """Why a yes/no reading is not the question's ('' when it is): the question asks what attribute ('what's the
+    type of the car that is speeding up?', 'which bus is parked, what colour?' read as whether it speeds up or is
+    parked). 'which is faster, X or Y?' is the grammar's yes/no question, and so is 'what would happen if ...'."""
+    if OPS[operation(program[-1])].output is not bool:
+        return ""
+    head = _head(words)
+    asked, _ = _asked(words)
+    if asked in QUERY_NOUNS or head[:1] == ["what"] and head[1:2] and head[1] in QUERY_NOUNS:
+        return f"the question asks the '{asked or head[1]}', but its nearest reading asks yes or no"
+    compared = operation(program[-1]) in ("faster_velocity", "slower_velocity")   # 'which one is faster, is it X?'
+    if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
+            "or" not in head and not compared:
+        return f"the question asks which {head[1]}, but its nearest reading asks yes or no"
+    if head[:1] == ["what"] and not HAPPENING.intersection(head):   # 'what will the red car hit?'
+        return "the question asks what, but its nearest reading asks yes or no"
+    return ""
+
+
+HAPPENING = {"if", "happen", "happens", "happened", "happening", "next"}   # 'what would happen if ...: would ...?'
+FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["from", "now"])
+
+
+def future_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
+    video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there)."""
+    if "Events" not in program or "futureEvents" in program:
+        return ""
+    said = next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
+                 if words[k:k + len(f)] == f and (f[0] != "after" or words[k + 2:k + 3] and
+                                                  words[k + 2] in FILM_WORDS)), None)
+    if said is None:
+        return ""
+    return (f"the question asks about the time after the video ('{said}'), but its nearest reading asks about the "
+            "video: no question here reads it")
 
 
 INDEFINITES = {"anything", "something", "anyone", "someone", "anybody", "somebody"}
