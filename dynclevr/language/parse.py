@@ -1028,17 +1028,13 @@ YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", 
 def form_unmatched(words: list[str], program: list[str]) -> str:
     """Why a reading answers in another form than the question asks for ('' when it does not): a yes/no question
     (its head after a clause of time said first) read as asking which ('does the red car change direction?' read as
-    which way it moves; but 'is it static, slow or fast?' offers its answers), and a question of who read as yes or
-    no ('who hits the bus?' as whether anything does). Not 'which' read as yes or no: the grammar asks 'which is
-    faster, X or Y?' for yes or no (is X faster)."""
+    which way it moves; but 'is it static, slow or fast?' offers its answers). The other way round is
+    `form_unasked`'s."""
     head = _head(words)
     returns = OPS[operation(program[-1])].output
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")
-    if head[:1] and head[0] in WHO and returns is bool:
-        return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
-                "the vehicle")
     return ""
 
 
@@ -1059,12 +1055,16 @@ def impact_unsaid(words: list[str], program: list[str]) -> str:
 
 
 def form_unasked(words: list[str], program: list[str]) -> str:
-    """Why a yes/no reading is not the question's ('' when it is): the question asks what attribute ('what's the
-    type of the car that is speeding up?', 'which bus is parked, what colour?' read as whether it speeds up or is
-    parked). 'which is faster, X or Y?' is the grammar's yes/no question, and so is 'what would happen if ...'."""
+    """Why a yes/no reading is not the question's ('' when it is): the question asks who ('who hits the bus?' read
+    as whether anything does), what attribute ('what's the type of the car that is speeding up?', 'which bus is
+    parked, what colour?' read as whether it speeds up or is parked) or what. 'which is faster, X or Y?' is the
+    grammar's yes/no question, and so is 'what would happen if ...'."""
     if OPS[operation(program[-1])].output is not bool:
         return ""
     head = _head(words)
+    if head[:1] and head[0] in WHO:
+        return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
+                "the vehicle")
     asked, _ = _asked(words)
     if asked in QUERY_NOUNS or head[:1] == ["what"] and head[1:2] and head[1] in QUERY_NOUNS:
         return f"the question asks the '{asked or head[1]}', but its nearest reading asks yes or no"
