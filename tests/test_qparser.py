@@ -24,9 +24,9 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      attention_as_subject, _chosen, clause_time, comparative_as_said,
                                      direction_unasked, first_frames_as_said, form_unasked, form_unmatched,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     impact_unsaid, named_attribute, negative_question_as_asked,
+                                     idioms_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
-                                     reversed_reading, speed_as_subject, synonyms, tail_as_question, time_clause_last,
+                                     reversed_reading, speed_as_subject, speed_unsaid, synonyms, tail_as_question, time_clause_last,
                                      time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
@@ -421,6 +421,41 @@ def test_a_reading_of_another_kind_than_the_question_asks_is_refused():
         .startswith("the question asks about the time after the video ('after the video')")
     for text in ("what colour is the thing the car hits?", "after the collision, what colour is it?"):
         assert future_unread(tokenize(text), partner) == "", text
+
+
+def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
+    """Read word by word 'flat out' was floating (a typo fix), 'tearing along' slow, 'sitting tight' fast and 'right
+    off the bat' a direction; whole, each is what it means. The longest idiom at a place wins; words that only hold
+    an idiom's words stay as they are."""
+    cases = {"Is the red car going flat out right off the bat?": "is the red car going fast at the start?",
+             "Is the bus tearing along from the get-go?": "is the bus moving fast at the start?",
+             "Is the bus sitting tight when things kick off?": "is the bus staying still at the start?",
+             "Is the car barely moving out of the gate?": "is the car moving slowly at the start?",
+             "Does the car have its foot on the gas?": "does the car accelerate?",
+             "Is the car on the gas?": "is the car accelerating?",
+             "Had the truck floored it, would it have hit the bus?": "had the truck accelerated, would it have hit the "
+                                                                     "bus?"}
+    for text, said in cases.items():
+        words, read_as = idioms_as_said(tokenize(text))
+        assert words == tokenize(said), text
+        assert all(" ".join(tokenize(idiom)) in " ".join(tokenize(text)) for idiom, _ in read_as), read_as
+    for text in ("Is the jet flying at the start?", "Does the car hit the bus right at the start?",
+                 "Is the bus going out of view?", "Is the gas truck fast?"):
+        assert idioms_as_said(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_speed_class_the_question_never_says_is_refused():
+    """'Is the bus driving at the start?' asks whether it moves, which no family asks; the decoder read it as slow.
+    A reading of slow or fast needs a word that says a pace (the grammar's, or English's: 'at a snail's pace', 'at
+    full speed', 'the slower-moving')."""
+    slow = "Objects filter_attributes[bus] unique start is_moving_velocity[slow]".split()
+    for text in ("is the bus driving at the start?", "is the bus going along at the start?"):
+        assert speed_unsaid(tokenize(text), slow).startswith("the question says no speed"), text
+    for text in ("is the bus driving slowly at the start?", "is the bus crawling at the start?", "is the bus moving "
+                 "at a snail's pace?", "which colour is the slower-moving one?", "is the bus moving at full speed?"):
+        assert speed_unsaid(tokenize(text), slow) == "", text
+    static = "Objects filter_attributes[bus] unique start is_static".split()
+    assert speed_unsaid(tokenize("is the bus parked at the start?"), static) == ""
 
 
 def test_two_objects_and_anything_else_at_once_are_no_question_here():

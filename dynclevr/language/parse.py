@@ -56,6 +56,7 @@ from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concret
                                           description_as_said, is_description, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
+from dynclevr.questions.generate import templates
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -222,7 +223,7 @@ class QuestionParser:
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
-            or future_unread(said, c.program)) else c
+            or future_unread(said, c.program) or speed_unsaid(read, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -236,6 +237,7 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, named = catalogue_names(words)
+        words, idioms = idioms_as_said(words)
         words, described = description_as_said(words)
         words, end = video_end_as_said(words)
         words, framing = framing_dropped(words)
@@ -250,7 +252,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + described + end + framing + attended + request + negative + asked + aloft + heading
+        request = (named + idioms + described + end + framing + attended + request + negative + asked + aloft + heading
                    + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
@@ -545,6 +547,69 @@ TIME_ZERO = (["t", "=", "0"], ["t", "0"], ["t0"], ["time", "0"], ["time", "zero"
              ["frame", "1"], ["frame", "one"])
 SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becomes", "visible"], ["is", "in", "view"],
         ["comes", "into", "view"], ["is", "in", "sight"])
+
+
+# Idioms of this domain's properties, read whole before any word is, as the words the grammar says them in: read
+# word by word they meant something else ('flat out' was 'floating' through a typo fix, 'tearing along' slow,
+# 'sitting tight' fast, 'right off the bat' a direction). The longest phrase at a place wins.
+_START = ("at", "the", "start")
+IDIOMS = tuple(sorted({
+    **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
+                           ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
+                           ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("when", "things", "kick", "off"),
+                           ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
+                           ("when", "everything", "kicks", "off"), ("from", "the", "off"))},
+    **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
+                              ("at", "a", "good", "clip"), ("at", "a", "fair", "clip"), ("at", "quite", "a", "clip"),
+                              ("like", "a", "rocket"), ("like", "the", "wind"),
+                              ("like", "a", "bat", "out", "of", "hell"))},
+    **{(verb + ending, "along"): (moving, "fast") for verb in ("tear", "belt", "bomb", "barrel", "bowl", "motor",
+                                                                 "pelt", "streak", "rocket", "haul")
+       for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
+    **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"), ("flying", "moving"),
+                                                             ("flies", "moves"), ("flew", "moved"),
+                                                             ("haring", "moving"), ("careering", "moving"),
+                                                             ("careening", "moving"))},
+    **{(verb, adverb): (stay, "still") for verb, stay in (("sitting", "staying"), ("sits", "stays"), ("sit", "stay"),
+                                                          ("going", "staying"), ("goes", "stays"), ("go", "stay"))
+       for adverb in (("tight",) if verb.startswith("s") else ("nowhere",))},
+    ("on", "the", "move"): ("moving",),
+    **{(adverb, verb): (verb, "slowly") for adverb in ("barely", "hardly", "scarcely")
+       for verb in ("moving", "moves", "move", "moved")},
+    **{(verb, *rest): (accelerate,) for verb, accelerate in (("hitting", "accelerating"), ("hits", "accelerates"),
+                                                              ("hit", "accelerate"), ("stepping", "accelerating"),
+                                                              ("steps", "accelerates"), ("step", "accelerate"),
+                                                              ("stepped", "accelerated"))
+       for rest in ((("the", "gas"),) if verb.startswith("hit") else (("on", "the", "gas"), ("on", "it")))},
+    **{(verb, *rest): (accelerate,) for verb, accelerate in (("putting", "accelerating"), ("puts", "accelerates"),
+                                                              ("put", "accelerate"), ("flooring", "accelerating"),
+                                                              ("floors", "accelerates"), ("floor", "accelerate"),
+                                                              ("gunning", "accelerating"), ("guns", "accelerates"),
+                                                              ("gun", "accelerate"), ("having", "accelerating"),
+                                                              ("has", "accelerates"), ("have", "accelerate"),
+                                                              ("floored", "accelerated"), ("gunned", "accelerated"),
+                                                              ("had", "accelerated"))
+       for rest in ((("its", "foot", "down"),) if verb.startswith("put") else (("it",),) if verb[0] in "fg"
+                    else (("its", "foot", "on", "the", "gas"),) if verb != "had" else (("its", "foot", "down"),))},
+    **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
+                                      ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
+}.items(), key=lambda kv: -len(kv[0])))
+
+
+def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        hit = next(((p, said) for p, said in IDIOMS if tuple(words[k:k + len(p)]) == p), None)
+        if hit is None:
+            out.append(words[k])
+            k += 1
+            continue
+        p, said = hit
+        out += said
+        read.append((" ".join(p).replace(" - ", "-"), " ".join(said)))
+        k += len(p)
+    return out, tuple(read)
 
 
 def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1052,6 +1117,29 @@ def impact_unsaid(words: list[str], program: list[str]) -> str:
         return ""
     return ("the question says nothing of a collision, but its nearest reading asks about one: no question here "
             "reads it")
+
+
+SPEED_CLASS_OPERATIONS = {"is_moving_velocity", "filter_moving_velocity", "Counterfactual_moving_slow",
+                          "Counterfactual_moving_fast"}
+# The words that say a speed class: those of the grammar's seen slow and fast phrases but the motion itself ('moving',
+# 'at a high speed': 'high'), and English's other words for a pace; the lexicon, WordNet and the idioms read more
+# words as these.
+SPEED_CLASS_WORDS = (frozenset(w for key in ("SLOW", "FAST", "SLOW_ADJ", "FAST_ADJ")
+                               for phrase in templates()["lexicon"][key]["seen"] for w in tokenize(phrase))
+                     - frozenset(w for key in ("MOVING", "MOVE") for phrase in templates()["lexicon"][key]["seen"]
+                                 for w in tokenize(phrase)) - {"at", "a", "-", "speed", "along"}) | {
+    "quick", "swift", "swiftly", "brisk", "briskly", "hurried", "hurriedly", "full", "top", "breakneck", "sluggish",
+    "sluggishly", "leisurely", "gentle", "gently", "snail", "inching", "ambling", "chugging", "puttering",
+    "pottering", "idling"} | COMPARISONS
+
+
+def speed_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of a speed class is not the question's ('' when it is): the question, as read, says no speed
+    ('is the bus driving at the start?' asks whether it moves at all, which the decoder read as slow)."""
+    if not SPEED_CLASS_OPERATIONS.intersection(map(operation, program)) or SPEED_CLASS_WORDS.intersection(words):
+        return ""
+    return ("the question says no speed (slow or fast), but its nearest reading asks about one: ask whether the "
+            "vehicle is static, slow or fast")
 
 
 def form_unasked(words: list[str], program: list[str]) -> str:
