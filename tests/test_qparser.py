@@ -434,13 +434,18 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
              "Does the car have its foot on the gas?": "does the car accelerate?",
              "Is the car on the gas?": "is the car accelerating?",
              "Had the truck floored it, would it have hit the bus?": "had the truck accelerated, would it have hit the "
+                                                                     "bus?",
+             "Does the car rear-end the bus?": "does the car hit the bus?",
+             "Does the car end up hitting the bus?": "does the car hit the bus?",
+             "Picture the car moving slowly. Would it hit the bus?": "imagine the car moving slowly. would it hit the "
                                                                      "bus?"}
     for text, said in cases.items():
         words, read_as = idioms_as_said(tokenize(text))
         assert words == tokenize(said), text
         assert all(" ".join(tokenize(idiom)) in " ".join(tokenize(text)) for idiom, _ in read_as), read_as
     for text in ("Is the jet flying at the start?", "Does the car hit the bus right at the start?",
-                 "Is the bus going out of view?", "Is the gas truck fast?"):
+                 "Is the bus going out of view?", "Is the gas truck fast?", "How fast is the car when it enters the "
+                 "picture?", "Does the car stop at the end?"):
         assert idioms_as_said(tokenize(text)) == (tokenize(text), ()), text
 
 

@@ -574,6 +574,18 @@ IDIOMS = tuple(sorted({
                                                           ("going", "staying"), ("goes", "stays"), ("go", "stay"))
        for adverb in (("tight",) if verb.startswith("s") else ("nowhere",))},
     ("on", "the", "move"): ("moving",),
+    ("stayed", "where", "it", "was"): ("been", "static"),
+    **{("rear", "-", end): (hit,) for end, hit in (("end", "hit"), ("ends", "hits"), ("ended", "hit"),
+                                                   ("ending", "hitting"))},
+    **{("t", "-", bone): (hit,) for bone, hit in (("bone", "hit"), ("bones", "hits"), ("boned", "hit"),
+                                                  ("boning", "hitting"))},
+    # 'does it end up hitting' is 'does it hit', said of the verbs of a collision
+    **{(end, "up", gerund): (forms[k],) for k, end in enumerate(("end", "ends", "ended"))
+       for gerund, forms in {"hitting": ("hit", "hits", "hit"), "colliding": ("collide", "collides", "collided"),
+                             "crashing": ("crash", "crashes", "crashed"), "smashing": ("smash", "smashes", "smashed"),
+                             "bumping": ("bump", "bumps", "bumped"), "running": ("run", "runs", "ran"),
+                             "striking": ("strike", "strikes", "struck"), "slamming": ("slam", "slams", "slammed"),
+                             "ramming": ("ram", "rams", "rammed")}.items()},
     **{(adverb, verb): (verb, "slowly") for adverb in ("barely", "hardly", "scarcely")
        for verb in ("moving", "moves", "move", "moved")},
     **{(verb, *rest): (accelerate,) for verb, accelerate in (("hitting", "accelerating"), ("hits", "accelerates"),
@@ -596,9 +608,14 @@ IDIOMS = tuple(sorted({
 }.items(), key=lambda kv: -len(kv[0])))
 
 
+IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # said first: 'imagine' (not 'the picture')
+
+
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
     out, read, k = [], [], 0
+    if words[:1] and words[0] in IMAGINING:
+        out, read, k = ["imagine"], [(words[0], "imagine")], 1
     while k < len(words):
         hit = next(((p, said) for p, said in IDIOMS if tuple(words[k:k + len(p)]) == p), None)
         if hit is None:
