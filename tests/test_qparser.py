@@ -437,6 +437,7 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
                                                                      "bus?",
              "Does the car rear-end the bus?": "does the car hit the bus?",
              "Does the car end up hitting the bus?": "does the car hit the bus?",
+             "Has the car hit anything by the end of the clip?": "has the car hit anything during the video?",
              "Picture the car moving slowly. Would it hit the bus?": "imagine the car moving slowly. would it hit the "
                                                                      "bus?"}
     for text, said in cases.items():

@@ -575,6 +575,9 @@ IDIOMS = tuple(sorted({
        for adverb in (("tight",) if verb.startswith("s") else ("nowhere",))},
     ("on", "the", "move"): ("moving",),
     ("stayed", "where", "it", "was"): ("been", "static"),
+    # within the video, not after it ('has it hit anything by the end of the video?')
+    **{("by", "the", "end", "of", "the", film): ("during", "the", "video") for film in ("video", "clip", "footage",
+                                                                                       "film", "recording", "movie")},
     **{("rear", "-", end): (hit,) for end, hit in (("end", "hit"), ("ends", "hits"), ("ended", "hit"),
                                                    ("ending", "hitting"))},
     **{("t", "-", bone): (hit,) for bone, hit in (("bone", "hit"), ("bones", "hits"), ("boned", "hit"),
