@@ -964,8 +964,9 @@ def test_a_landed_plane_is_placed_on_the_ground_though_its_distance_is_biased():
 
 
 def test_own_height_votes_over_the_last_detections():
-    plane, bike = resting_height("jet"), resting_height("dirtbike")
-    assert own_height("sedan", [0.1] * 7) is None                       # four wheels never lie nor land
+    plane, bike, truck = resting_height("jet"), resting_height("dirtbike"), resting_height("truck")
+    assert own_height("truck", [truck + 0.01, truck - 0.02] * 4) is None   # where its sub-type puts it
+    assert abs(own_height("wagon", [truck] * 7) - truck) < 1e-9         # a truck read as a wagon: its own height
     assert own_height("jet", [plane + 0.05] * 3) == plane               # a young track: all of them agree
     assert own_height("jet", [plane + 0.05] * 2 + [plane + 1.0]) is None
     assert own_height("jet", [plane + 1.0] * 9 + [plane] * 5 + [plane + 1.0] * 2) == plane   # 5 of the last 7

@@ -23,7 +23,6 @@ from dynclevr.perception.detector import Detection
 
 SUBTYPE_NAMES = list(SUBTYPES)
 IS_PLANE = np.array([SUBTYPES[s][0] == "aeroplane" for s in SUBTYPE_NAMES])
-TIPS_OVER = ("bicycle", "motorbike")   # two wheels: a knock lays them on their side, below their resting height
 
 
 @lru_cache(maxsize=None)

@@ -46,7 +46,7 @@ from dynclevr.perception.detections import detect
 from dynclevr.perception.detector import Detection
 from dynclevr.perception.features import extract
 from dynclevr.perception.model import ParserModel
-from dynclevr.perception.place import (SUBTYPE_NAMES, TIPS_OVER, Measurement, detection_shape, place,
+from dynclevr.perception.place import (SUBTYPE_NAMES, Measurement, detection_shape, place,
                                       resting_height)
 from dynclevr.perception.pose import Evidence, fit
 from dynclevr.perception.render import GridCamera, euler_to_quat, quat_to_euler
@@ -113,9 +113,10 @@ def parser_params(cfg: Config) -> dict:
 
 
 # A height of its own (`own_height`) from the head's heights of a track's last LIE_FRAMES detections, LIE_VOTES of
-# them agreeing. A knocked-over two-wheeler: over LIE_OFF metres off its resting height (upright, the head's height
-# is 0.013 m off at the median; tilted, 0.08 m; 40 full-val videos). A landed aeroplane: within LAND_OFF of it
-# (on the ground, 88% of the head's heights are; in the air, 5%; 100 full-val videos).
+# them agreeing. A ground vehicle over LIE_OFF metres off its resting height: a knocked-over two-wheeler, or one
+# read as another sub-type (upright, the head's height is 0.013 m off at the median; tilted, 0.08 m; 40 full-val
+# videos). A landed aeroplane: within LAND_OFF of it (on the ground, 88% of the head's heights are; in the air, 5%;
+# 100 full-val videos).
 LIE_FRAMES, LIE_VOTES, LIE_OFF, LAND_OFF = 7, 5, 0.12, 0.15
 # m/s^2: the spread of a plane's acceleration about its motion's in the air (the path's prior), and on the ground
 FLIGHT_ACCEL_SD, GROUND_ACCEL_SD = 0.3, 3.0
@@ -126,19 +127,18 @@ WEAK_REACH = 2.0
 
 def own_height(shape: str, heights: list[float]) -> float | None:
     """The height of the plane that the next detection's centre lies in, from the head's heights of the track's
-    detections (the latest last), where it is not where its sub-type's placement puts it (None): a knocked-over
-    two-wheeler's, the median of the last LIE_FRAMES where LIE_VOTES of them are over LIE_OFF off its resting height;
-    a landed aeroplane's, its resting height where LIE_VOTES of them are within LAND_OFF of it (all of them, for a
-    track younger than LIE_FRAMES). One frame's height is centimetres off, which is decimetres along a ray this flat:
-    the median holds still. A plane on the ground is pinned by the ground as a car is, where its distance is the
-    head's guess from its size."""
+    detections (the latest last), where it is not where its sub-type's placement puts it (None): a ground vehicle's,
+    the median of the last LIE_FRAMES where LIE_VOTES of them are over LIE_OFF off its resting height (a
+    knocked-over two-wheeler, or a truck read as a wagon, whose resting plane is 0.15 m lower: 1.1 m further along a
+    ray 12 m long); a landed aeroplane's, its resting height where LIE_VOTES of them are within LAND_OFF of it (all of
+    them, for a track younger than LIE_FRAMES). One frame's height is centimetres off, which is decimetres along a ray
+    this flat: the median holds still. A plane on the ground is pinned by the ground as a car is, where its distance
+    is the head's guess from its size."""
     category, recent, rest = SUBTYPES[shape][0], heights[-LIE_FRAMES:], resting_height(shape)
-    if category in TIPS_OVER:
-        agree = sum(abs(h - rest) > LIE_OFF for h in recent)
-    elif category == "aeroplane":
+    if category == "aeroplane":
         agree = sum(abs(h - rest) <= LAND_OFF for h in recent)
     else:
-        return None
+        agree = sum(abs(h - rest) > LIE_OFF for h in recent)
     if agree < (LIE_VOTES if len(recent) >= LIE_FRAMES else len(recent)):
         return None
     return rest if category == "aeroplane" else float(np.median(recent))

@@ -28,7 +28,7 @@ from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
 from dynclevr.video import Video
 
-VERSION = 49  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
+VERSION = 50  # 5: collisions from the learned classifier (weights/collision/); 6: smoothed factual arrays, cut state;
               # 7: robust smoothing; 8: smoothed velocities only where the filter converges; 9: segment motion;
               # 10: start speeds, the cut state from the segment motion of the observed frames; 11: slow to rest;
               # 12: cut_collisions, the collisions the observed frames decide (the predictive questions read them);
@@ -66,7 +66,8 @@ VERSION = 49  # 5: collisions from the learned classifier (weights/collision/); 
               # (parser.stitch_near_frames); 47: a bicycle and a motorbike are one kind to a stitch (tracker.KINDS)
               # 48: a detection whose distance misses its track's by over a factor exp(parser.depth_gate) cannot pair
               # 49: a floating plane's vertical speed changes where an impact the parser did not find kicked it; a
-              # landed plane has no vertical velocity
+              # landed plane has no vertical velocity; 50: a standing car or bus whose head's heights disagree with
+              # its sub-type's resting height is placed at them (tracker.own_height)
 
 
 @lru_cache(maxsize=1)
