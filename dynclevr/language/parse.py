@@ -53,7 +53,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
-                                          description_as_said, is_description, placeholders)
+                                          description_as_said, is_description, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
 from dynclevr.questions.generate import templates
@@ -616,20 +616,10 @@ IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # sa
 
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
-    out, read, k = [], [], 0
     if words[:1] and words[0] in IMAGINING:
-        out, read, k = ["imagine"], [(words[0], "imagine")], 1
-    while k < len(words):
-        hit = next(((p, said) for p, said in IDIOMS if tuple(words[k:k + len(p)]) == p), None)
-        if hit is None:
-            out.append(words[k])
-            k += 1
-            continue
-        p, said = hit
-        out += said
-        read.append((" ".join(p).replace(" - ", "-"), " ".join(said)))
-        k += len(p)
-    return out, tuple(read)
+        out, read = phrases_as_said(words[1:], IDIOMS)
+        return ["imagine", *out], ((words[0], "imagine"), *read)
+    return phrases_as_said(words, IDIOMS)
 
 
 def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

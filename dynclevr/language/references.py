@@ -46,29 +46,36 @@ def _written(name: str) -> set[tuple[str, ...]]:
     return out
 
 
-_EVERYDAY = sorted({(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
-                                                 *EVERYDAY_NAMES.items()] for w in _written(name)}
-                   | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES
-                      for c in CATEGORY_SAID[SUBTYPES[v][0]]}, key=lambda kv: (-len(kv[0]), kv))
+_EVERYDAY = [(w, tuple(said.split())) for w, said in sorted(
+    {(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
+                                  *EVERYDAY_NAMES.items()] for w in _written(name)}
+    | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]},
+    key=lambda kv: (-len(kv[0]), kv))]
+
+
+def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """Every phrase of `table` ((phrase, words it is read as), the longest first) in `words` read as its words; with
+    the phrases read so, as written ('dirt-bike')."""
+    out, read, i = [], [], 0
+    while i < len(words):
+        hit = next(((p, said) for p, said in table if tuple(words[i:i + len(p)]) == p), None)
+        if hit is None:
+            out.append(words[i])
+            i += 1
+            continue
+        p, said = hit
+        out += said
+        if list(p) != list(said):
+            read.append((" ".join(p).replace(" - ", "-"), " ".join(said)))
+        i += len(p)
+    return out, tuple(read)
 
 
 def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """['the', 'dirt', '-', 'bike'] -> (['the', 'dirtbike'], (('dirt-bike', 'dirtbike'),)): every vehicle name
     of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, or a sub-type said with its category, as the
     catalogue's name; with the names read so."""
-    out, read, i = [], [], 0
-    while i < len(words):
-        hit = next(((w, said) for w, said in _EVERYDAY if tuple(words[i:i + len(w)]) == w), None)
-        if hit is None:
-            out.append(words[i])
-            i += 1
-            continue
-        w, said = hit
-        out += said.split()
-        if " ".join(w) != said:
-            read.append((" ".join(w).replace(" - ", "-"), said))
-        i += len(w)
-    return out, tuple(read)
+    return phrases_as_said(words, _EVERYDAY)
 
 
 # A colour said after its vehicle ('the bus that is yellow', 'the SUV painted green', 'the scooter, the blue one,')
