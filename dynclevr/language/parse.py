@@ -354,8 +354,11 @@ class QuestionParser:
         reverse = reversed_reading(words, abstract) or named_attribute(words, abstract)
         if reverse:
             return Parse(None, reverse, p)
+        # 'What type of plane is floating?': only aeroplanes float, so a bare 'plane' there is the object's noun
+        # ('vehicle'), not an object the program leaves out
         unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
-                  if k not in placeholders(abstract)]
+                  if k not in placeholders(abstract) and not (refs[k - 1] == ("aeroplane",)
+                                                              and "filter_floating" in abstract)]
         if unused:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)

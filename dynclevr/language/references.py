@@ -30,6 +30,8 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "passenger aircraft": "airliner", "fighter jet": "fighter", "pickup truck": "truck",
                   "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon",
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
+                  "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
+                  "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
                   **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # A category as people say it, for a sub-type said with its category ('the fighter plane', 'the sedan car').
