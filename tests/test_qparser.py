@@ -609,6 +609,16 @@ def test_an_attribute_of_an_object_the_question_names_is_refused():
         assert not named_attribute(said, abstract_program(e.program.split(), refs)), e.text
 
 
+def test_a_plane_as_the_noun_of_what_floats_is_no_object_left_out():
+    """Only aeroplanes float, so 'plane' there is the object's noun; where the category would narrow the answer (a
+    speed, a collision) no program can say it and the question stays unparsed."""
+    parser = QuestionParser.load()
+    ok, narrowed = parser.analyse_batch(["What type of plane is floating in the air at the start?",
+                                         "What type of plane is moving fast at the start?"])
+    assert ok.program == "Objects start filter_floating unique query_attributes[shape]".split()
+    assert narrowed.program is None and narrowed.reason
+
+
 def test_tiny_model_learns_template_programs(synthetic_fit):
     assert synthetic_fit.val_exact_match >= 0.98
     texts, programs, _ = synthetic(400, seed=1)     # new questions, new object combinations
