@@ -24,7 +24,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      attention_as_subject, _chosen, clause_time, comparative_as_said,
                                      direction_unasked, first_frames_as_said, form_unasked, form_unmatched,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     idioms_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
+                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
                                      reversed_reading, speed_as_subject, speed_unsaid, synonyms, tail_as_question, time_clause_last,
                                      time_unasked, video_end_as_said, well_formed)
@@ -617,6 +617,46 @@ def test_a_plane_as_the_noun_of_what_floats_is_no_object_left_out():
                                          "What type of plane is moving fast at the start?"])
     assert ok.program == "Objects start filter_floating unique query_attributes[shape]".split()
     assert narrowed.program is None and narrowed.reason
+
+
+def test_interjections_a_question_opens_with_are_left_out():
+    for text in ("So, um, does the red car hit the bus?", "Hmm... does the red car hit the bus?",
+                 "Okay, right, does the red car hit the bus?", "uh does the red car hit the bus?"):
+        assert interjections_dropped(tokenize(text))[0] == tokenize("does the red car hit the bus?"), text
+    # 'right' opens a time without a comma; an interjection with no question after it stays
+    for text in ("Right at the start, is the red car fast?", "So the red car hits the bus?", "Well."):
+        assert interjections_dropped(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_vehicles_kind_or_sort_is_its_type():
+    assert type_as_said(tokenize("What kind of plane is floating?"))[0] == tokenize("What type of plane is floating?")
+    assert type_as_said(tokenize("which sort of bike is parked?"))[0] == tokenize("which type of bike is parked?")
+    for text in ("Is the red car kind of slow?", "What kind of red is the car?"):
+        assert type_as_said(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_the_other_answer_offered_in_a_clause_of_its_own_is_left_out():
+    for text, asked in (("Did the bus hit the bike, or did it miss it?", "Did the bus hit the bike?"),
+                        ("is the jet hovering at the start or is it on the ground", "is the jet hovering at the start?"),
+                        ("Is the car parked at the start, or isn't it?", "Is the car parked at the start?")):
+        assert tail_as_question(tokenize(text))[0] == tokenize(asked), text
+    # a shared time, another object, or an alternative that is no opposite stays for the rules after
+    for text in ("Is the jet floating or falling at the start?", "Does the car hit the bus or does it hit the jet?",
+                 "Is the car fast at the start, or is it slow?"):
+        assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_kinds_interjections_and_offered_opposites_read_by_the_shipped_parser():
+    parser = QuestionParser.load()
+    kind, um, ground, which = parser.analyse_batch([
+        "What kind of plane is floating at the beginning?", "So, um, does the gray chopper crash into anything?",
+        "Is the purple jet flying at the beginning, or is it sitting on the ground?",
+        "Which kind of plane is moving fast at the start?"])
+    assert kind.program == "Objects start filter_floating unique query_attributes[shape]".split()
+    assert um.program == ("Events Objects filter_attributes[gray] filter_attributes[chopper] unique filter_collision "
+                          "exist").split()
+    assert ground.program == "Objects filter_attributes[purple] filter_attributes[jet] unique start is_floating".split()
+    assert which.program is None and which.reason     # 'which kind' asked as yes or no was read as 'is it floating'
 
 
 def test_tiny_model_learns_template_programs(synthetic_fit):

@@ -52,8 +52,9 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
-                                          description_as_said, is_description, phrases_as_said, placeholders)
+from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, corefer,
+                                          delexicalise, description_as_said, is_description, phrases_as_said,
+                                          placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
 from dynclevr.questions.generate import templates
@@ -237,8 +238,10 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, named = catalogue_names(words)
+        words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)
         words, described = description_as_said(words)
+        words, typed = type_as_said(words)
         words, end = video_end_as_said(words)
         words, framing = framing_dropped(words)
         words, attended = attention_as_subject(words)
@@ -252,8 +255,8 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + idioms + described + end + framing + attended + request + negative + asked + aloft + heading
-                   + subject + first + more + tail + offered)
+        request = (named + opened + idioms + described + typed + end + framing + attended + request + negative + asked
+                   + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -369,6 +372,43 @@ class QuestionParser:
 REPEATS = (["twice"], ["thrice"], ["again"], ["more", "than", "once"], ["repeatedly"], ["multiple", "times"],
            ["several", "times"], ["many", "times"])
 NUMBERS = {"two", "three", "four", "five", "2", "3", "4", "5"}
+
+
+# Words a speaker opens with that ask nothing ('So, um, does ...', 'Hmm... is it ...', 'Okay, right, what ...'). The
+# decoder looks past one such unknown word, not a run of them with their commas. 'right', 'now' and 'like' only with
+# a comma after them: 'Right at the start, is ...' opens with a time.
+INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
+                 "hey", "anyway", "anyways"}
+COMMA_INTERJECTIONS = {"right", "now", "like"}
+INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
+
+
+def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
+    follows them. With the interjections read as nothing, or the words as they are and ()."""
+    k = 0
+    while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS
+                              and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS):
+        k += 1
+        while k < len(words) and words[k] in INTERJECTION_ENDS:
+            k += 1
+    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"}:
+        return words, ()
+    return words[k:], ((" ".join(words[:k]), "nothing, an interjection"),)
+
+
+NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
+
+
+def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'what kind of plane is ...' -> 'what type of plane is ...': the grammar asks a vehicle's kind or sort only of a
+    'vehicle', its type of any noun (the decoder read 'what kind of plane is floating?' as whether it floats). With
+    the words read so, or the words as they are and ()."""
+    for k in range(1, len(words) - 2):
+        if words[k - 1] in ASKING and words[k] in ("kind", "sort") and words[k + 1] == "of" and \
+                words[k + 2] in OBJECT_WORDS | NOUNS_SAID and words[k + 2] not in COLOR_NAMES:
+            return words[:k] + ["type"] + words[k + 1:], ((f"{words[k]} of", "type of"),)
+    return words, ()
 
 
 # A preamble that frames the question and asks nothing ('Thinking about the whole clip, do ...', 'Not sure about this
@@ -652,14 +692,21 @@ def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 
 
 def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """A question whose asking comes last: '..., yes or no?' (the asking dropped: a yes/no question says it) and
-    '... is what?' (the question word put first: 'the red sedan speed at the start is what?' -> 'what is the red
-    sedan speed at the start?'). With the words read so, or the words as they are and ()."""
+    """A question whose asking comes last: '..., yes or no?' and the other answer offered in a clause of its own
+    ('..., or did it miss it?', '... or is it on the ground?', '... or not?': the asking dropped, a yes/no question
+    says it) and '... is what?' (the question word put first: 'the red sedan speed at the start is what?' -> 'what
+    is the red sedan speed at the start?'). With the words read so, or the words as they are and ()."""
     end = words[-1:] if words[-1:] in (["?"], ["."]) else []
     body = words[:len(words) - len(end)]
     for tail in ([",", "yes", "or", "no"], ["?", "yes", "or", "no"], ["yes", "or", "no"]):
         if body[-len(tail):] == tail and len(body) > len(tail):
             return body[:-len(tail)] + (end or ["?"]), ((" ".join(tail), "?"),)
+    k = max((i for i, w in enumerate(body) if w == "or"), default=0)
+    other = body[k + 1:]
+    clause = other == ["not"] or other[:1] and other[0] in YES_NO_OPENERS and other[1:2] and (
+        other[1] in TAG_PRONOUNS or other[1:3] in (["not", "it"], ["not", "they"]))   # shares none of the question
+    if k > 1 and clause and not OBJECT_WORDS.intersection(other) and (NEGATIONS | OPPOSITES).intersection(other):
+        return body[:k - (body[k - 1] == ",")] + (end or ["?"]), ((" ".join(body[k:]), "?"),)
     if body[-2:] in (["is", "what"], ["was", "what"]) and len(body) > 2 and body[0] not in ASKING | {"how"}:
         return ["what", body[-2], *body[:-2], *end], ((f"... {body[-2]} what", f"what {body[-2]} ..."),)
     return words, ()
@@ -857,6 +904,7 @@ REVERSERS = {
                                                                    "descends", "descended", "descending", "dropping",
                                                                    "sinking", "plunging", "plummeting"},
 }
+OPPOSITES = {w for reversers in REVERSERS.values() for w in reversers}
 ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
 ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': not accelerating
 
@@ -976,6 +1024,12 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     return ""
 
 
+def offered(words: list[str], k: int) -> bool:
+    """Whether word k is in an alternative offered after 'or' ('in the air or on the ground?', '... or is it on the
+    ground', 'or is it not?'): the question offers both answers, and asks the first."""
+    return "or" in words[max(k - 5, 0):k]
+
+
 def reversed_reading(words: list[str], abstract: list[str]) -> str:
     """Why the program asks the opposite of the question ('' when it does not): motion asked as rest, a negation
     the grammar never says, or a word that reverses the program's predicate ('miss', 'braking', 'grounded')."""
@@ -984,7 +1038,7 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
                 "static, or slow or fast)")
     for k, w in enumerate(words):
-        if w not in NEGATIONS or (k and words[k - 1] == "or"):
+        if w not in NEGATIONS or offered(words, k):
             continue
         after = [v for v in words[k + 1:k + 5] if v not in PAST]
         if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"]:
@@ -993,8 +1047,7 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
                     "negation and take the opposite answer")
     if not NEGATIONS.intersection(words):
         for asked, reversers in REVERSERS.items():
-            hit = [w for k, w in enumerate(words) if w in reversers
-                   and "or" not in words[max(k - 4, 0):k]     # 'in the air or on the ground?' offers both answers
+            hit = [w for k, w in enumerate(words) if w in reversers and not offered(words, k)
                    and not (w == "off" and not ENGINE_WORDS.intersection(words))     # 'it starts off slowly'
                    and not (w == "ground" and ALOFT.intersection(words[max(k - 2, 0):k]))]
             if ops.intersection(asked) and hit:
@@ -1167,7 +1220,7 @@ def form_unasked(words: list[str], program: list[str]) -> str:
         return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
                 "the vehicle")
     asked, _ = _asked(words)
-    if asked in QUERY_NOUNS or head[:1] == ["what"] and head[1:2] and head[1] in QUERY_NOUNS:
+    if asked in QUERY_NOUNS or head[:1] and head[0] in ASKING and head[1:2] and head[1] in QUERY_NOUNS:
         return f"the question asks the '{asked or head[1]}', but its nearest reading asks yes or no"
     compared = operation(program[-1]) in ("faster_velocity", "slower_velocity")   # 'which one is faster, is it X?'
     if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
