@@ -21,13 +21,14 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
-                                     attention_as_subject, _chosen, clause_time, comparative_as_said,
+                                     attention_as_subject, _chosen, clause_time, clock_unasked, comparative_as_said,
                                      direction_unasked, first_frames_as_said, form_unasked, form_unmatched,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
-                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
-                                     reversed_reading, speed_as_subject, speed_unsaid, synonyms, tail_as_question, time_clause_last,
-                                     time_unasked, video_end_as_said, well_formed)
+                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid,
+                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
+                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
+                                     speed_as_subject, speed_measured, speed_unsaid, synonyms, tail_as_question,
+                                     time_clause_last, time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -302,8 +303,17 @@ def test_questions_in_broken_english_read_as_the_grammar_says_them():
         tokenize("does the brown truck hit anything?")
     assert attention_as_subject(tokenize("look at the red car and the bus, do they collide?"))[0] == \
         tokenize("do the red car and the bus collide?")
+    # ... or says nothing but pointing at it ('this is about ...', 'there is a ... in the video')
+    assert attention_as_subject(tokenize("This is about the red sedan. Does it hit the blue bus?"))[0] == \
+        tokenize("does the red sedan hit the blue bus?")
+    assert attention_as_subject(tokenize("There is a red sedan in the video. Is it fast?"))[0] == \
+        tokenize("is the red sedan fast?")
+    assert attention_as_subject(tokenize("I have a question about the red car and the bus. Do they collide?"))[0] == \
+        tokenize("do the red car and the bus collide?")
     for text in ("watch the video. does the bus hit the car?", "look at the red car and the video, do they collide?",
-                 "how about the red car and the bus, does it collide?"):
+                 "how about the red car and the bus, does it collide?", "the red car is parked. does it hit the bus?",
+                 "the gray cruiser shows up at some point. how fast is it moving then?",
+                 "this is about the red car. does the bus hit the jet?", "the red car, is the bus fast?"):
         assert attention_as_subject(tokenize(text)) == (tokenize(text), ()), text
     # a preamble that frames the question and names no object is no part of it
     for text in ("thinking about the whole clip, does the red car hit the bus?", "not sure, but does the red car hit "
@@ -637,13 +647,31 @@ def test_a_vehicles_kind_or_sort_is_its_type():
 
 def test_the_other_answer_offered_in_a_clause_of_its_own_is_left_out():
     for text, asked in (("Did the bus hit the bike, or did it miss it?", "Did the bus hit the bike?"),
-                        ("is the jet hovering at the start or is it on the ground", "is the jet hovering at the start?"),
+                        ("is the jet hovering at the start or is it on the ground",
+                         "is the jet hovering at the start?"),
                         ("Is the car parked at the start, or isn't it?", "Is the car parked at the start?")):
         assert tail_as_question(tokenize(text))[0] == tokenize(asked), text
     # a shared time, another object, or an alternative that is no opposite stays for the rules after
     for text in ("Is the jet floating or falling at the start?", "Does the car hit the bus or does it hit the jet?",
                  "Is the car fast at the start, or is it slow?"):
         assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_speed_as_a_number_and_a_time_window_are_refused():
+    for text, said in (("is it going 3.5 m/s at the start?", "3.5 m/s"), ("is it doing 20mph?", "20mph"),
+                       ("is it over five metres per second?", "five metres per second"), ("at 5m/s?", "5m/s")):
+        assert speed_measured(tokenize(text)) == said, text
+    for text in ("is it fast at the start?", "does it hit the bus in 5 minutes?", "is the m bus fast?"):
+        assert speed_measured(tokenize(text)) == "", text
+    collision = "Events Objects filter_attributes[red] unique filter_collision exist".split()
+    for text in ("does it hit anything within 2 seconds?", "does it hit anything in the first second?"):
+        assert clock_unasked(tokenize(text), collision), text
+    assert not clock_unasked(tokenize("does it hit anything?"), collision)
+    # at the start, and in a counterfactual's condition, 'the first second' and 'the first frames' are the start
+    assert not clock_unasked(tokenize("is it fast in the first second?"), "Objects unique start is_static".split())
+    imagined = "Objects unique Counterfactual_static Objects unique filter_collision exist".split()
+    assert not clock_unasked(tokenize("had it been parked in the first frames, would it hit the bus?"), imagined)
+    assert clock_unasked(tokenize("had it been parked, would it hit the bus within 2 seconds?"), imagined)
 
 
 def test_kinds_interjections_and_offered_opposites_read_by_the_shipped_parser():

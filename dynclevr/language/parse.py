@@ -222,7 +222,7 @@ class QuestionParser:
         # (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
-            or time_unasked(said, c.program) or anything_unasked(said, c.program)
+            or time_unasked(said, c.program) or clock_unasked(said, c.program) or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
@@ -289,6 +289,10 @@ class QuestionParser:
         if offered:
             return [], (f"the question offers '{offered}' to choose from, which no question here answers: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
+        measured = speed_measured(said)
+        if measured:
+            return [], (f"the question gives a speed as a number ('{measured}'), which no question here asks: ask "
+                        "whether the vehicle is static, slow or fast"), read_as, said
         if words[:1] == ["why"] or words[:2] == ["how", "come"]:
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
@@ -434,36 +438,57 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 
 
 # A first sentence or phrase that points at an object ('Watch the yellow bus. Does it hit anything?', 'How about the
-# blue bus, is it fast?'): the question about it
+# blue bus, is it fast?', 'This is about the red sedan. Does it ...', 'There is a red sedan in the video. Is it ...'):
+# the question about it. A sentence of pointing words only: one that says more ('The red sedan is parked.', 'The
+# cruiser shows up at some point.') may set what the question asks, and stays.
 ATTENDING = (["look", "at"], ["watch"], ["consider"], ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
              ["as", "to"])
 POINTING_ENDS = {".", ":", ";", ",", "?", "-"}
+POINTING_WORDS = {"this", "that", "it", "is", "s", "'", "am", "m", "are", "i", "we", "you", "my", "our", "me", "one",
+                  "question", "questions", "about", "regarding", "concerning", "concerns", "interested", "in", "have",
+                  "has", "got", "a", "an", "the", "quick", "let", "us", "talk", "look", "at", "watch", "consider",
+                  "focus", "on", "observe", "notice", "check", "out", "take", "there", "here", "now", "want", "to",
+                  "ask", "see", "saw", "spot", "video", "clip", "scene", "of", "please", "just", "ve", "d", "like"}
+DEFINITE = {"the", "that", "this", "a", "an"}
+
+
+def _pointed_at(words: list[str]) -> int | None:
+    """Where the object begins in a first sentence of pointing words ('this is about the red sedan .'), or None."""
+    k = 0
+    while k < len(words) and words[k] in POINTING_WORDS and words[k] not in OBJECT_WORDS and not (
+            words[k] in DEFINITE and words[k + 1:k + 2] and words[k + 1] in OBJECT_WORDS):
+        k += 1
+    return k if k < len(words) and (words[k] in DEFINITE or words[k] in OBJECT_WORDS) else None
 
 
 def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'watch the yellow bus . does it hit anything ?' -> 'does the yellow bus hit anything ?': the object a first
-    sentence or phrase points at ('how about the blue bus , is it ...') put for the question's first 'it' (or its
-    'its'), two objects ('how about the red car and the bus , do they ...') for its first 'they', and the pointing
-    left out. With the words read so, or the words as they are and ()."""
+    sentence or phrase points at ('how about the blue bus , is it ...', 'this is about the blue bus . is it ...') put
+    for the question's first 'it' (or its 'its'), two objects ('how about the red car and the bus , do they ...') for
+    its first 'they', and the pointing left out. With the words read so, or the words as they are and ()."""
     verb = next((v for v in ATTENDING if words[:len(v)] == v), None)
-    if verb is None:
+    start = len(verb) if verb else _pointed_at(words)
+    if start is None:
         return words, ()
 
     def mention(k: int) -> tuple[list[str], int]:
-        """The object named from word k on ('the', 'that' or 'this' first) and where it ends."""
-        j = k = k + (words[k:k + 1] in (["the"], ["that"], ["this"]))
+        """The object named from word k on ('the', 'a', 'that' or 'this' first) and where it ends."""
+        j = k = k + (words[k:k + 1] != [] and words[k] in DEFINITE)
         while words[j:j + 1] and words[j] in OBJECT_WORDS:
             j += 1
         return ["the", *words[k:j]] if j > k else [], j
 
-    first, j = mention(len(verb))
+    first, j = mention(start)
     second = []
     if first and words[j:j + 1] == ["and"]:
         second, j = mention(j + 1)
         if not second:
             return words, ()
-    if not first or words[j:j + 1] == [] or words[j] not in POINTING_ENDS or not words[j + 1:j + 2] or \
+    while verb is None and j < len(words) and words[j] in POINTING_WORDS:   # 'there is a red sedan in the video .'
+        j += 1
+    ends = POINTING_ENDS if verb else POINTING_ENDS - {",", "?"}
+    if not first or words[j:j + 1] == [] or words[j] not in ends or not words[j + 1:j + 2] or \
             words[j + 1] not in QUESTION_OPENERS:
         return words, ()
     thing, question = first + (["and", *second] if second else []), words[j + 1:]
@@ -473,7 +498,7 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             question = question[:n] + thing + (["'", "s"] if w == "its" else []) + question[n + 1:]
             break
     else:
-        if second:
+        if second or verb is None:
             return words, ()
     return question, ((" ".join(words[:j + 1]), f"nothing; '{pronouns[0]}' as " + " ".join(thing)),)
 
@@ -1150,6 +1175,42 @@ def time_unasked(words: list[str], program: list[str]) -> str:
         return ""
     return (f"the question asks at a time other than the start ('{said or clock}'), which no question here asks of a "
             "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
+
+
+def clock_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
+    within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'),
+    which no program reads."""
+    if "start" in program:
+        return ""
+    # a counterfactual's condition speaks of the start ('had it been slow in the first frames', '... second')
+    imagined = any(t.startswith("Counterfactual") for t in program)
+    clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if b in CLOCK_WORDS and (
+        a.isdigit() or a in NUMBERS or not imagined and a in ORDINAL_WORDS and not b.endswith("s"))), None)
+    if clock is None:
+        return ""
+    return (f"the question asks within a time ('{clock}'), which no question here asks: collisions are asked over the "
+            "whole video, or after it")
+
+
+# A speed said as a number: '5 m/s', '20 mph', '10kph', 'five metres per second'
+SPEED_UNITS = (["m", "/", "s"], ["km", "/", "h"], ["mph"], ["kph"], ["kmh"], ["mps"], ["knots"],
+               *([unit, "per", time] for unit in ("metres", "meters", "m", "km", "kilometres", "kilometers", "miles")
+                 for time in ("second", "sec", "s", "hour", "h")))
+SPEED_NUMBER = re.compile(r"^\d+(?:\.\d+)?(?:mph|kph|kmh|mps|m|km)$")   # a number run together with its unit
+
+
+def speed_measured(words: list[str]) -> str:
+    """The speed a question says as a number ('5 m / s', '20mph'), or ''."""
+    for k, w in enumerate(words):
+        number = w.isdigit() or w in NUMBERS or w in ("one", "six", "seven", "eight", "nine", "ten", "twenty")
+        unit = next((u for u in SPEED_UNITS if words[k + 1:k + 1 + len(u)] == u), None) if number else None
+        if unit:
+            whole = words[k - 2:k] if k >= 2 and words[k - 1] == "." and words[k - 2].isdigit() else []   # '3.5'
+            return " ".join(["".join([*whole, w]), *unit]).replace(" / ", "/")
+        if SPEED_NUMBER.match(w) and (not w.endswith("m") or words[k + 1:k + 3] in (["/", "s"], ["/", "h"])):
+            return "".join(words[k:k + (1 if w[-1] not in "m" else 3)])
+    return ""
 
 
 WHO = {"who", "whom", "whose"}
