@@ -22,13 +22,13 @@ from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_s
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
                                      attention_as_subject, _chosen, clause_time, clock_unasked, comparative_as_said,
-                                     direction_unasked, first_frames_as_said, form_unasked, form_unmatched,
-                                     framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid,
-                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
-                                     program_shape, request_as_imperative, reversed_as_said, reversed_reading,
-                                     speed_as_subject, speed_measured, speed_unsaid, synonyms, tail_as_question,
-                                     time_clause_last, time_unasked, video_end_as_said, well_formed)
+                                     comparison_imagined, direction_unasked, first_frames_as_said, form_unasked,
+                                     form_unmatched, framing_dropped, future_unread, heading_as_direction,
+                                     height_as_aloft, idioms_as_said, interjections_dropped, type_as_said,
+                                     impact_unsaid, named_attribute, negative_question_as_asked,
+                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
+                                     reversed_reading, speed_as_subject, speed_measured, speed_unsaid, synonyms,
+                                     tail_as_question, time_clause_last, time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -655,6 +655,44 @@ def test_the_other_answer_offered_in_a_clause_of_its_own_is_left_out():
     for text in ("Is the jet floating or falling at the start?", "Does the car hit the bus or does it hit the jet?",
                  "Is the car fast at the start, or is it slow?"):
         assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_an_asking_said_in_place_is_said_first():
+    assert tail_as_question(tokenize("The red sedan is moving at what speed at the start?"))[0] == \
+        tokenize("at what speed is the red sedan moving at the start?")
+    assert tail_as_question(tokenize("right at the start, the jet was going at what speed?"))[0] == \
+        tokenize("right at the start, at what speed was the jet going?")
+    for text in ("At what speed is the red sedan moving?", "How fast is it, at what speed?"):
+        assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
+    # the object alone, set off by a comma, is what the question's 'they' stands for
+    assert attention_as_subject(tokenize("The blue bus and the red car, do they crash?"))[0] == \
+        tokenize("do the blue bus and the red car crash?")
+
+
+def test_a_counterfactual_that_compares_a_vehicle_with_itself_is_refused():
+    imagined = "Objects unique Counterfactual_moving_fast Objects unique filter_collision exist".split()
+    for text in ("if it had been slower at the start, would it hit the bus?", "had it moved more slowly, would it "
+                 "hit the bus?", "if it had gone faster, would it hit the bus?"):
+        assert comparison_imagined(tokenize(text), imagined), text
+    accelerating = "Objects unique Counterfactual_accelerating Objects unique filter_collision exist".split()
+    for text in ("if it had been getting faster from the start, would it hit the bus?", "if it had been going "
+                 "faster and faster, would it hit the bus?"):
+        assert not comparison_imagined(tokenize(text), accelerating), text
+    assert not comparison_imagined(tokenize("is the car faster than the bus?"), "Objects unique faster_velocity".split())
+
+
+def test_counts_places_relative_directions_and_a_vehicle_read_as_its_motion_are_refused():
+    parser = QuestionParser.load()
+    texts = ["Does the blue scooter collide with two other vehicles?", "Is the red car heading towards the bus?",
+             "Is the jet flying away from the red bus at the start?", "Which vehicle hits the blue bus first?",
+             "Is the gray jet higher than the blue bus at the start?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    assert "counts" in parser.analyse_batch(texts[:1])[0].reason
+    # ... but a higher speed is a speed
+    assert parser.analyse_batch(["Is the red car moving at a higher speed than the bus at the start?"])[0].program
+    assert form_unmatched(tokenize("which vehicle hits the bus first?"),
+                          "Objects filter_attributes[bus] unique start query_moving_direction".split())
 
 
 def test_a_speed_as_a_number_and_a_time_window_are_refused():

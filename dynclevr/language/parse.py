@@ -224,7 +224,8 @@ class QuestionParser:
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or clock_unasked(said, c.program) or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
-            or future_unread(said, c.program) or speed_unsaid(read, c.program)) else c
+            or future_unread(said, c.program) or speed_unsaid(read, c.program)
+            or comparison_imagined(read, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -280,6 +281,20 @@ class QuestionParser:
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
             return [], "the question asks for a count ('how many'), which no question here answers", read_as, said
+        counted = next((" ".join(said[k:k + n]) for k, a in enumerate(said) for n in (2, 3)
+                        if (a.isdigit() or a in NUMBERS) and said[k + n - 1:k + n] and said[k + n - 1] in PLURALS
+                        and (n == 2 or said[k + 1] in ("other", "more", "different", "separate"))), None)
+        if counted:
+            return [], f"the question counts ('{counted}'), which no question here does", read_as, said
+        higher = next((a for a in said if a in HEIGHT_COMPARISONS and not MOTION_NOUNS.intersection(words)), None)
+        if higher:
+            return [], (f"the question compares heights ('{higher}'), which no question here asks: ask which is faster "
+                        "or slower"), read_as, said
+        toward = next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in TOWARD and b in DETERMINERS
+                       or (a, b) == ("away", "from")), None)
+        if toward:
+            return [], (f"the question asks a direction relative to another vehicle ('{toward}'), which no question "
+                        "here asks: ask which way it moves (left, right, front, back, up or down)"), read_as, said
         often = next((" ".join(r) for k in range(len(said)) for r in REPEATS if said[k:k + len(r)] == r), None) or \
             next((f"{a} times" for a, b in zip(said, said[1:]) if b == "times" and a in NUMBERS), None)
         if often:
@@ -376,6 +391,12 @@ class QuestionParser:
 REPEATS = (["twice"], ["thrice"], ["again"], ["more", "than", "once"], ["repeatedly"], ["multiple", "times"],
            ["several", "times"], ["many", "times"])
 NUMBERS = {"two", "three", "four", "five", "2", "3", "4", "5"}
+PLURALS = {"vehicles", "objects", "things", "cars", "buses", "bikes", "bicycles", "motorbikes", "planes", "aeroplanes",
+           "airplanes", "collisions", "crashes", "others", "ones"}
+# a comparison of height ('is the jet higher than the bus?' was read as faster: the grammar's 'at a higher speed');
+# other words of place and size are unknown words, refused as such
+HEIGHT_COMPARISONS = {"higher", "lower"}
+TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards the bus': a direction no family asks
 
 
 # Words a speaker opens with that ask nothing ('So, um, does ...', 'Hmm... is it ...', 'Okay, right, what ...'). The
@@ -485,9 +506,12 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
         second, j = mention(j + 1)
         if not second:
             return words, ()
+    named = j
     while verb is None and j < len(words) and words[j] in POINTING_WORDS:   # 'there is a red sedan in the video .'
         j += 1
-    ends = POINTING_ENDS if verb else POINTING_ENDS - {",", "?"}
+    # after pointing words a sentence ends ('this is about X .'); the object alone is set off by a comma too ('X , is
+    # it ...')
+    ends = POINTING_ENDS if verb or start == 0 and j == named else POINTING_ENDS - {",", "?"}
     if not first or words[j:j + 1] == [] or words[j] not in ends or not words[j + 1:j + 2] or \
             words[j + 1] not in QUESTION_OPENERS:
         return words, ()
@@ -734,7 +758,18 @@ def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         return body[:k - (body[k - 1] == ",")] + (end or ["?"]), ((" ".join(body[k:]), "?"),)
     if body[-2:] in (["is", "what"], ["was", "what"]) and len(body) > 2 and body[0] not in ASKING | {"how"}:
         return ["what", body[-2], *body[:-2], *end], ((f"... {body[-2]} what", f"what {body[-2]} ..."),)
+    # '(at the start ,) the red sedan is moving at what speed ?': the asking where a statement has its answer
+    k = next((i for i in range(len(body)) if body[i:i + 3] in IN_PLACE), None)
+    first = body.index(",") + 1 if "," in body[:k or 0] else 0
+    c = next((i for i in range(first + 1, k or 0) if body[i] in ("is", "was")), None)
+    if c is not None and body[first] not in ASKING | YES_NO_OPENERS | {"how", "tell"}:
+        phrase = body[k:k + 3]
+        return ([*body[:first], *phrase, body[c], *body[first:c], *body[c + 1:k], *body[k + 3:], *end],
+                ((" ".join(phrase), "said first"),))
     return words, ()
+
+
+IN_PLACE = (["at", "what", "speed"], ["at", "which", "speed"], ["at", "what", "velocity"], ["with", "what", "speed"])
 
 
 # Comparisons of speed: offered as a choice ('is X faster or slower than Y?') they ask which, which no family answers
@@ -1213,6 +1248,25 @@ def speed_measured(words: list[str]) -> str:
     return ""
 
 
+def comparison_imagined(words: list[str], program: list[str]) -> str:
+    """Why a counterfactual reading is not the question's ('' when it is): its condition compares the vehicle with
+    itself ('if it had been slower', 'had it gone faster'), which no intervention sets (they set it static, slow or
+    fast, or accelerating: 'getting faster'); the decoder read 'slower' as fast and 'faster' as accelerating."""
+    if not any(t.startswith("Counterfactual") for t in program):
+        return ""
+    said = next((" ".join(words[k:k + 1 + (w in ("more", "less"))]) for k, w in enumerate(words)
+                 if (w in COMPARISONS or w in ("more", "less") and words[k + 1:k + 2] and words[k + 1] in PACE_WORDS)
+                 and not (k and words[k - 1] in BECOMING or words[k + 1:k + 2] == ["and"])), None)
+    if said is None:
+        return ""
+    return (f"the question imagines a vehicle {said} than it was, which no question here asks: ask as if it had been "
+            "static, slow or fast, or accelerating")
+
+
+PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
+# 'getting faster', 'faster and faster': accelerating, an intervention
+BECOMING = {"getting", "get", "gets", "got", "grow", "grows", "growing", "grew", "become", "becomes", "becoming",
+            "became", "and"}
 WHO = {"who", "whom", "whose"}
 YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had", "should", "are", "were"}
 
@@ -1227,6 +1281,11 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")
+    # 'which vehicle hits the bus first?' read as the bus's direction: a vehicle asked for is its colour or type
+    if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
+            operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):
+        return (f"the question asks which {head[1]}, but its nearest reading asks a speed or a direction: ask for the "
+                "colour or the type of the vehicle")
     return ""
 
 
