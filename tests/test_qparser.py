@@ -678,7 +678,8 @@ def test_a_counterfactual_that_compares_a_vehicle_with_itself_is_refused():
     for text in ("if it had been getting faster from the start, would it hit the bus?", "if it had been going "
                  "faster and faster, would it hit the bus?"):
         assert not comparison_imagined(tokenize(text), accelerating), text
-    assert not comparison_imagined(tokenize("is the car faster than the bus?"), "Objects unique faster_velocity".split())
+    compared = "Objects unique faster_velocity".split()
+    assert not comparison_imagined(tokenize("is the car faster than the bus?"), compared)
 
 
 def test_counts_places_relative_directions_and_a_vehicle_read_as_its_motion_are_refused():
@@ -693,6 +694,21 @@ def test_counts_places_relative_directions_and_a_vehicle_read_as_its_motion_are_
     assert parser.analyse_batch(["Is the red car moving at a higher speed than the bus at the start?"])[0].program
     assert form_unmatched(tokenize("which vehicle hits the bus first?"),
                           "Objects filter_attributes[bus] unique start query_moving_direction".split())
+
+
+def test_a_partner_in_turn_or_by_its_motion_a_height_and_another_property_are_refused():
+    parser = QuestionParser.load()
+    texts = ["What type of vehicle does the green truck hit third?", "Is the cyan airliner moving upwards?",
+             "Is the jet going up at the start?", "Does the brown minivan crash into a stationary vehicle?",
+             "Is the gray sedan hit by a floating plane?", "What is the speed of the vehicle that hits the truck?",
+             "What direction is the vehicle that hits the red jet moving in?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    # ... but a speed going up, what floats up in the air and a partner's colour are read
+    kept = ["Is the blue truck's speed going up at the start?", "Is the red biplane floating up in the air?",
+            "What colour is the vehicle that the purple sedan crashes into?"]
+    for text, parse in zip(kept, parser.analyse_batch(kept)):
+        assert parse.program, text
 
 
 def test_a_speed_as_a_number_and_a_time_window_are_refused():

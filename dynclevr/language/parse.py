@@ -225,7 +225,8 @@ class QuestionParser:
             or time_unasked(said, c.program) or clock_unasked(said, c.program) or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program)
-            or comparison_imagined(read, c.program)) else c
+            or comparison_imagined(read, c.program) or motion_unread(said, c.program)
+            or property_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -1060,7 +1061,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         return ("the question asks where an object is, which no question here asks (they ask which way it is "
                 "moving)")
     later = next((" ".join(said[k:k + 2]) for k in range(len(said) - 1) if said[k] in ORDINALS and (
-        said[k + 1] in GENERIC_NOUNS | OBJECT_WORDS | {"time", "partner"} or asks_impact(said[k + 1:k + 2]))), None)
+        said[k + 1] in GENERIC_NOUNS | OBJECT_WORDS | {"time", "partner"} or asks_impact(said[k + 1:k + 2]))), None) \
+        or next((" ".join(said[k - 1:k + 1]) for k in range(1, len(said)) if said[k] in ORDINALS - {"next"}
+                 and asks_impact(said[k - 1:k])), None)   # 'what does the truck hit third?'
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
@@ -1137,7 +1140,12 @@ def named_attribute(words: list[str], abstract: list[str]) -> str:
 # moves one way, or where it is); 'up' and 'down' say other things too ('speeding up', 'slowing down'), and 'right'
 # a time ('right at the start')
 DIRECTION_WORDS = {"left", "right", "front", "back", "forward", "forwards", "backward", "backwards", "leftward",
-                   "leftwards", "rightward", "rightwards"}
+                   "leftwards", "rightward", "rightwards", "upward", "upwards", "downward", "downwards", "reverse",
+                   "reversing", "reversed", "reverses"}
+# 'up' and 'down' said of the motion ('is the jet going up?' was read as accelerating), not of a speed ('speeding up',
+# 'its speed going up', 'slowing down') nor a place ('flying up in the air')
+HEIGHT_MOTIONS = {"moving", "going", "flying", "heading", "headed", "travelling", "traveling", "climbing", "rising",
+                  "move", "go", "fly", "head", "moves", "goes", "flies", "heads"}
 # Where a vehicle is, said by its neighbour or its distance: never a question here, whatever the lexicon reads them as
 # ('behind' is its 'down')
 PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "front", "of"], ["further"],
@@ -1152,6 +1160,9 @@ def _direction_said(words: list[str]) -> str | None:
             words[k - 1:k] not in (["the"], ["to"])   # 'right at the start', not 'to the right at the start'
         if w in DIRECTION_WORDS and not as_time:
             return w
+        if w in ("up", "down") and words[k - 1:k] and words[k - 1] in HEIGHT_MOTIONS and \
+                not {"speed", "velocity"} & set(words[max(k - 3, 0):k + 2]) and words[k + 1:k + 2] != ["in"]:
+            return " ".join(words[k - 1:k + 1])
         j = k + 1 if w in ("towards", "toward") else k + 2 if words[k:k + 2] == ["away", "from"] else None
         viewer = next((v for v in VIEWER if j and words[j:j + len(v)] == list(v)), None)
         if viewer:
@@ -1326,6 +1337,52 @@ def speed_unsaid(words: list[str], program: list[str]) -> str:
         return ""
     return ("the question says no speed (slow or fast), but its nearest reading asks about one: ask whether the "
             "vehicle is static, slow or fast")
+
+
+MOTION_READ = ("velocity", "direction", "static", "floating", "accelerating", "Counterfactual")
+# how a vehicle moves, said to describe one: no collision question picks its partner so ('hit a parked vehicle')
+MOTION_DESCRIPTIONS = (SPEED_CLASS_WORDS - {"still"}) | {"parked", "stationary", "static", "stopped", "motionless",
+                                                        "floating", "hovering", "airborne", "accelerating"}
+
+
+def motion_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of collisions alone is not the question's ('' when it is): the question describes a vehicle by its
+    motion ('does it crash into a stationary vehicle?', 'is it hit by a floating plane?', read as whether it crashes at
+    all), which no program reads beside a collision."""
+    if not COLLISION_OPERATIONS.intersection(map(operation, program)) or \
+            any(part in t for t in program for part in MOTION_READ):
+        return ""
+    said = next((w for w in words if w in MOTION_DESCRIPTIONS), None)
+    if said is None:
+        return ""
+    return (f"the question describes a vehicle by its motion ('{said}'), which no question here reads beside a "
+            "collision")
+
+
+# the asked word and the query that answers it
+ASKED_QUERIES = {**{w: "query_moving_velocity" for w in ("speed", "velocity")},
+                 **{w: "query_moving_direction" for w in ("direction", "heading")},
+                 **{w: "query_attributes[color]" for w in ("color", "colour")},
+                 **{w: "query_attributes[shape]" for w in ("type", "kind", "sort", "shape", "model")}}
+PARTNER_SAID = {"that", "which", "who"}
+
+
+def property_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): it answers another property than the one asked ('what is
+    the speed of the vehicle that hits the truck?' read as that vehicle's colour), or asks about the object a
+    question names where it asks about the vehicle that hits it ('what direction is the vehicle that hits the jet
+    moving in?' read as the jet's)."""
+    asked, _ = _asked(words)
+    query = program[-1] if program and program[-1].startswith("query_") else None
+    if query and asked in ASKED_QUERIES and ASKED_QUERIES[asked] != query:
+        return (f"the question asks the '{asked}', but its nearest reading asks another property: no question here "
+                "asks it of that vehicle")
+    partner = any(w in GENERIC_NOUNS and words[k + 1:k + 2] and words[k + 1] in PARTNER_SAID
+                  and asks_impact(words[k + 2:k + 6]) for k, w in enumerate(words))
+    if query and partner and "get_all_col_partners" not in program:
+        return ("the question asks about the vehicle that collides with another, which no question here asks but its "
+                "colour or its type")
+    return ""
 
 
 def form_unasked(words: list[str], program: list[str]) -> str:
