@@ -711,6 +711,15 @@ def test_a_partner_in_turn_or_by_its_motion_a_height_and_another_property_are_re
         assert parse.program, text
 
 
+def test_a_pose_a_spin_and_a_landing_are_refused():
+    parser = QuestionParser.load()
+    texts = ["Is the purple motorbike standing upright at the start?", "Is the blue fighter rotating at the start?",
+             "Does the red biplane hit the ground?", "Does the gray airliner touch down at some point?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    assert parser.analyse_batch(["Is the red fighter off the ground when the video begins?"])[0].program
+
+
 def test_a_speed_as_a_number_and_a_time_window_are_refused():
     for text, said in (("is it going 3.5 m/s at the start?", "3.5 m/s"), ("is it doing 20mph?", "20mph"),
                        ("is it over five metres per second?", "five metres per second"), ("at 5m/s?", "5m/s")):

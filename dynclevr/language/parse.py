@@ -1067,6 +1067,16 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
+    pose = next((w for w in said if w in POSE), None)
+    if pose:
+        return (f"the question asks how a vehicle lies ('{pose}'), which no question here asks (they ask how it "
+                "moves)")
+    landing = any(w in GROUND and asks_impact(said[max(k - 4, 0):k]) and not NEGATIONS & set(said[max(k - 6, 0):k])
+                  for k, w in enumerate(said)) or \
+        any(said[k:k + 2] == [t, "down"] for k in range(len(said)) for t in ("touch", "touches", "touched", "touching"))
+    if landing:     # ... but 'had it never touched the ground' is a counterfactual's floating
+        return ("the question asks whether a vehicle lands or hits the ground, which no question here asks (they ask "
+                "whether a plane is floating at the start)")
     turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])), None)
     if turn and not ENGINE_WORDS & set(said):
         return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
@@ -1193,7 +1203,12 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
 TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
-           "veers", "veering", "u-turn"}
+           "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning", "spun"}
+# how a vehicle lies ('is the motorbike upright?' was read as static, 'has it toppled over?' as a collision)
+POSE = {"upright", "upside", "overturned", "toppled", "topple", "topples", "tipped", "tip", "tips", "capsized",
+        "flipped"}
+# the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
+GROUND = {"ground", "floor"}
 
 
 # A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
