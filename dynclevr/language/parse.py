@@ -29,7 +29,11 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
 - it asks what no family asks, however near a family's its words are: a direction or a place asked as yes or no
   ('is it moving left?', 'is it behind the bus?'), the video's end or another time than the start ('in the middle',
   'after two seconds': `time_unasked`), how often ('twice'), the time before or after a collision, the second or
-  last of its partners, a turn; or a yes/no question is read as asking which (`form_unmatched`);
+  last of its partners, a turn or a spin, a vehicle's pose, a landing; a speed as a number ('20 mph'), a time window
+  ('within 2 seconds': `clock_unasked`), a count of vehicles, a height, a direction towards another vehicle, a
+  counterfactual that compares a vehicle with itself ('had it been slower': `comparison_imagined`), a partner
+  described by its motion ('a stationary vehicle': `motion_unread`); or a yes/no question is read as asking which
+  (`form_unmatched`), a reading answers another property than the one asked (`property_unread`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
