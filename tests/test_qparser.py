@@ -292,24 +292,18 @@ def test_questions_in_broken_english_read_as_the_grammar_says_them():
         tokenize("what is red sedan speed at beginning?")
     for text in ("what is the speed of the red car?", "how fast is the red car, is it what?", "yes or no?"):
         assert tail_as_question(tokenize(text)) == (tokenize(text), ()), text
-    # a first sentence that points at an object: the question about it
-    assert attention_as_subject(tokenize("Watch the yellow bus. Does it hit anything?"))[0] == \
-        tokenize("does the yellow bus hit anything?")
-    assert attention_as_subject(tokenize("look at the red car: is its speed low?"))[0] == \
-        tokenize("is the red car's speed low?")
-    assert attention_as_subject(tokenize("How about the blue bus, is it fast at the start?"))[0] == \
-        tokenize("is the blue bus fast at the start?")
-    assert attention_as_subject(tokenize("As for the brown truck - does it hit anything?"))[0] == \
-        tokenize("does the brown truck hit anything?")
-    assert attention_as_subject(tokenize("look at the red car and the bus, do they collide?"))[0] == \
-        tokenize("do the red car and the bus collide?")
-    # ... or says nothing but pointing at it ('this is about ...', 'there is a ... in the video')
-    assert attention_as_subject(tokenize("This is about the red sedan. Does it hit the blue bus?"))[0] == \
-        tokenize("does the red sedan hit the blue bus?")
-    assert attention_as_subject(tokenize("There is a red sedan in the video. Is it fast?"))[0] == \
-        tokenize("is the red sedan fast?")
-    assert attention_as_subject(tokenize("I have a question about the red car and the bus. Do they collide?"))[0] == \
-        tokenize("do the red car and the bus collide?")
+    # a first sentence that points at an object, or says nothing but pointing at it: the question about it
+    for text, asked in (("Watch the yellow bus. Does it hit anything?", "does the yellow bus hit anything?"),
+                        ("look at the red car: is its speed low?", "is the red car's speed low?"),
+                        ("How about the blue bus, is it fast at the start?", "is the blue bus fast at the start?"),
+                        ("As for the brown truck - does it hit anything?", "does the brown truck hit anything?"),
+                        ("look at the red car and the bus, do they collide?", "do the red car and the bus collide?"),
+                        ("This is about the red sedan. Does it hit the blue bus?",
+                         "does the red sedan hit the blue bus?"),
+                        ("There is a red sedan in the video. Is it fast?", "is the red sedan fast?"),
+                        ("I have a question about the red car and the bus. Do they collide?",
+                         "do the red car and the bus collide?")):
+        assert attention_as_subject(tokenize(text))[0] == tokenize(asked), text
     for text in ("watch the video. does the bus hit the car?", "look at the red car and the video, do they collide?",
                  "how about the red car and the bus, does it collide?", "the red car is parked. does it hit the bus?",
                  "the gray cruiser shows up at some point. how fast is it moving then?",
