@@ -26,9 +26,10 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      form_unmatched, framing_dropped, future_unread, heading_as_direction,
                                      height_as_aloft, idioms_as_said, interjections_dropped, type_as_said,
                                      impact_unsaid, named_attribute, negative_question_as_asked,
-                                     noun_phrase_as_question, program_shape, request_as_imperative, reversed_as_said,
-                                     reversed_reading, speed_as_subject, speed_measured, speed_unsaid, synonyms,
-                                     tail_as_question, time_clause_last, time_unasked, video_end_as_said, well_formed)
+                                     noun_phrase_as_question, program_shape, ranking, request_as_imperative,
+                                     reversed_as_said, reversed_reading, speed_as_subject, speed_measured,
+                                     speed_unsaid, speeds_alike, synonyms, tail_as_question, time_clause_last,
+                                     time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -731,6 +732,41 @@ def test_a_speed_as_a_number_and_a_time_window_are_refused():
     assert clock_unasked(tokenize("had it been parked, would it hit the bus within 2 seconds?"), imagined)
 
 
+def test_a_ranking_alike_speeds_a_manner_and_an_amount_of_acceleration_are_refused():
+    for text, said in (("is the red sedan the fastest at the start?", "fastest"), ("which one moves the most?",
+                       "the most"), ("is the wagon the first vehicle to collide?", "the first vehicle"),
+                       ("is it the only one that floats?", "the only one")):
+        assert said in ranking(tokenize(text)), text
+    # the first partner is a partner's question
+    assert not ranking(tokenize("what colour is the first vehicle to hit the red sedan?"))
+    assert speeds_alike(tokenize("is the van as quick as the gray jet?")) == "as quick as"
+    assert speeds_alike(tokenize("are the van and the jet equally fast?")) == "equally fast"
+    for text in ("would you describe the plane as slow as the video starts?", "is it going as fast as it can?",
+                 "is it as still as a rock?"):
+        assert not speeds_alike(tokenize(text)), text
+    parser = QuestionParser.load()
+    texts = ["How hard does the red sedan hit the blue bus?", "What is the acceleration of the brown wagon?",
+             "How quickly is the yellow scooter speeding up at the start?", "Is the red sedan the fastest vehicle?",
+             "Is the cyan minivan as fast as the gray airliner at the start?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    kept = ["How swiftly is the red sedan moving at the start?", "How fsat is the red sedan at the start?"]
+    for text, parse in zip(kept, parser.analyse_batch(kept)):
+        assert parse.program and parse.program[-1] == "query_moving_velocity", text
+
+
+def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():
+    parser = QuestionParser.load()
+    camera, heading, two = parser.analyse_batch([
+        "Initially, where is the green double bus going: left, right, towards the camera or away from it?",
+        "At the start, how is the red sedan heading?", "Is the brown scooter the faster of the two at the start, "
+        "compared with the cyan jet?"])
+    assert camera.program[-1] == heading.program[-1] == "query_moving_direction"
+    assert two.program and two.program[-1] == "faster_velocity"
+    # towards another vehicle is still no direction asked here
+    assert parser.analyse_batch(["Is the red sedan heading towards the blue bus?"])[0].program is None
+
+
 def test_kinds_interjections_and_offered_opposites_read_by_the_shipped_parser():
     parser = QuestionParser.load()
     kind, um, ground, which = parser.analyse_batch([
@@ -1099,8 +1135,9 @@ def test_a_long_misspelt_word_is_read_as_the_one_known_word_an_edit_away():
     red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
     typo = parser.analyse_batch(["Is the red sedan acelerating at the start?"])[0]
     assert typo.program == f"{red} start is_accelerating".split() and ("acelerating", "accelerating") in typo.read_as
-    for word in ("sitting", "bouncing", "fastest", "wreckage"):
+    for word in ("sitting", "bouncing", "wreckage"):
         assert parser._words(f"Is the red sedan {word} at the start?")[0][4] == word, word
+    assert "fastest" in parser._words("Is the red sedan fastest at the start?")[1]   # a ranking, not 'faster'
     for text in ("Is the magenta sedan floating?", "Is the red limousine fast?"):
         assert parser.parse(text) is None, text
 

@@ -32,8 +32,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   last of its partners, a turn or a spin, a vehicle's pose, a landing; a speed as a number ('20 mph'), a time window
   ('within 2 seconds': `clock_unasked`), a count of vehicles, a height, a direction towards another vehicle, a
   counterfactual that compares a vehicle with itself ('had it been slower': `comparison_imagined`), a partner
-  described by its motion ('a stationary vehicle': `motion_unread`); or a yes/no question is read as asking which
-  (`form_unmatched`), a reading answers another property than the one asked (`property_unread`);
+  described by its motion ('a stationary vehicle': `motion_unread`), a vehicle ranked among all ('the fastest',
+  'the first vehicle to collide': `ranking`), two speeds alike ('as quick as the bus': `speeds_alike`), 'how' with
+  a word no family asks ('how hard does it hit'), an amount of acceleration; or a yes/no question is read as asking
+  which (`form_unmatched`), a reading answers another property than the one asked (`property_unread`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -295,8 +297,8 @@ class QuestionParser:
         if higher:
             return [], (f"the question compares heights ('{higher}'), which no question here asks: ask which is faster "
                         "or slower"), read_as, said
-        toward = next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in TOWARD and b in DETERMINERS
-                       or (a, b) == ("away", "from")), None)
+        toward = next((f"{a} {b}" for k, (a, b) in enumerate(zip(said, said[1:])) if (a in TOWARD and b in DETERMINERS
+                       or (a, b) == ("away", "from")) and not _at_viewer(said, k + 1 + (b == "from"))), None)
         if toward:
             return [], (f"the question asks a direction relative to another vehicle ('{toward}'), which no question "
                         "here asks: ask which way it moves (left, right, front, back, up or down)"), read_as, said
@@ -313,11 +315,25 @@ class QuestionParser:
         if measured:
             return [], (f"the question gives a speed as a number ('{measured}'), which no question here asks: ask "
                         "whether the vehicle is static, slow or fast"), read_as, said
+        ranked = ranking(said)
+        if ranked:
+            return [], ranked, read_as, said
+        alike = speeds_alike(said)
+        if alike:
+            return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
+                        "whether one is faster (or slower) than the other"), read_as, said
         if words[:1] == ["why"] or words[:2] == ["how", "come"]:
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
             return [], unasked, read_as, said
+        # 'how hard does it hit the bus?' was read as whether it does ('hard' fixed to 'had'); a slip ('how fsat')
+        # reads as a speed
+        manner = next((b for a, b in zip(said, said[1:]) if a == "how" and b not in HOW_ASKED | AUXILIARIES
+                       | SPEED_CLASS_WORDS), None)
+        if manner and not any(a == "how" and b in SPEED_CLASS_WORDS for a, b in zip(words, words[1:])):
+            return [], (f"the question asks how '{manner}', which no question here asks (they ask how fast a vehicle "
+                        "moves, which way, its colour or type, and about its collisions)"), read_as, said
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as, said
@@ -629,7 +645,12 @@ def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'heading' as a noun ('the heading of the red car', 'its heading', 'the car's heading'): its direction. The
     grammar says 'heading' only as a verb, of motion ('is the red car heading left'), and reads the noun so too
-    ('what is the heading of' was read as the speed)."""
+    ('what is the heading of' was read as the speed). 'how is it heading?' asks which way (it was read as its
+    speed)."""
+    h = len(words) - len(_head(words))
+    if words[h:h + 1] == ["how"] and words[h + 1:h + 2] and words[h + 1] in AUXILIARIES and \
+            {"heading", "headed"} & set(words):
+        return [*words[:h], "which", "way", *words[h + 1:]], (("how", "which way"),)
     out, read = list(words), []
     for k, w in enumerate(words):
         if w == "heading" and k and (words[k - 1] in ("the", "its") or words[k - 2:k] == ["'", "s"]):
@@ -785,18 +806,25 @@ COMPARISONS = set(SPEED_ORDER)
 # A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
 COMPARATIVES = {("more", "fast"): "faster", ("more", "quick"): "quicker", ("more", "slow"): "slower",
                 ("less", "fast"): "slower", ("less", "quick"): "slower", ("less", "slow"): "faster"}
+PAIR_SAID = (["of", "the", "two", "vehicles"], ["of", "the", "two"], ["of", "both"], ["of", "the", "pair"])   # longest first
 
 
 def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'more fast' -> 'faster', 'less fast' -> 'slower' (the decoder read 'more fast' as 'fast'). With the words
-    read so, or the words as they are and ()."""
+    """'more fast' -> 'faster', 'less fast' -> 'slower' (the decoder read 'more fast' as 'fast'), 'the faster of the
+    two' -> 'the faster one' (no family was read). With the words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
         said = COMPARATIVES.get(tuple(words[k:k + 2]))
+        pair = next((p for p in PAIR_SAID if words[k:k + len(p)] == p), None) if out and out[-1] in COMPARISONS \
+            else None
         if said:
             out.append(said)
             read.append((" ".join(words[k:k + 2]), said))
             k += 2
+        elif pair:
+            out.append("one")
+            read.append((" ".join(pair), "one"))
+            k += len(pair)
         else:
             out.append(words[k])
             k += 1
@@ -818,6 +846,13 @@ OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
           (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
 # 'to the left or right of the bus' says where it is, not where it goes
 PLACE_BEFORE = {"the", "to", "its", "of", "on"}
+
+
+def _at_viewer(words: list[str], k: int) -> bool:
+    """Whether words[k:] name the viewer ('the camera', 'us'), or 'it' after the viewer was named ('towards the
+    camera or away from it'): a direction front or back."""
+    return any(words[k:k + len(v)] == list(v) for v in VIEWER) or words[k:k + 1] == ["it"] and any(
+        words[j:j + len(v)] == list(v) for j in range(k) for v in VIEWER if len(v) > 1)
 
 
 def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
@@ -1294,6 +1329,40 @@ def comparison_imagined(words: list[str], program: list[str]) -> str:
 
 
 PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
+# A vehicle ranked among all ('the fastest', 'moves the most', 'is the wagon the first vehicle to collide?'): no
+# program compares more than two; 'the first vehicle it hits' is a partner's question, and stays
+SUPERLATIVES = {"fastest", "quickest", "slowest", "speediest", "swiftest", "highest", "lowest", "biggest", "largest",
+                "smallest", "heaviest", "lightest", "longest", "shortest", "furthest", "farthest", "nearest",
+                "closest", "earliest", "latest"}
+RANKS = {"first", "only", "last"}
+# what follows 'how' in a question here, besides how fast (however said): 'how is it moving', 'how about the jet',
+# 'how come'
+HOW_ASKED = {"about", "come", "would", "will", "can", "could", "has", "have", "had", "the", "it", "its", "many",
+             "much"}
+
+
+def speeds_alike(words: list[str]) -> str:
+    """The words that ask whether two speeds are alike ('as quick as the bus', 'equally fast'), or '': not 'as slow as
+    the video starts' nor 'as fast as it can'."""
+    def vehicle_at(k: int) -> bool:
+        k += bool(words[k:k + 1] and words[k] in DETERMINERS)
+        return bool(words[k:k + 1]) and words[k] in OBJECT_WORDS | GENERIC_NOUNS | INDEFINITES | {"any", "other"}
+    return next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] == words[k + 2] == "as"
+                 and words[k + 1] in SPEED_CLASS_WORDS - REST_WORDS and vehicle_at(k + 3)), "") or \
+        next((f"{a} {b}" for a, b in zip(words, words[1:]) if a == "equally" and b in SPEED_CLASS_WORDS), "")
+
+
+def ranking(words: list[str]) -> str:
+    """Why the question ranks a vehicle among all ('' when it does not)."""
+    said = next((w for w in words if w in SUPERLATIVES), None) or next(
+        (f"{a} {b}" for a, b in zip(words, words[1:]) if a == "the" and b in ("most", "least")), None) or next(
+        (" ".join(words[k - 1:k + 2]) for k in range(2, len(words) - 1) if words[k] in RANKS and words[k - 1] == "the"
+         and words[k + 1] in GENERIC_NOUNS | NOUNS_SAID and words[k - 2] in OBJECT_WORDS | {"it", "one"}),
+        None)
+    if said is None:
+        return ""
+    return (f"the question ranks a vehicle among all ('{said}'), which no question here asks: ask whether one is "
+            "faster (or slower) than another, or whether it collides")
 # 'getting faster', 'faster and faster': accelerating, an intervention
 BECOMING = {"getting", "get", "gets", "got", "grow", "grows", "growing", "grew", "become", "becomes", "becoming",
             "became", "and"}
@@ -1346,7 +1415,7 @@ SPEED_CLASS_WORDS = (frozenset(w for key in ("SLOW", "FAST", "SLOW_ADJ", "FAST_A
                                  for w in tokenize(phrase)) - {"at", "a", "-", "speed", "along"}) | {
     "quick", "swift", "swiftly", "brisk", "briskly", "hurried", "hurriedly", "full", "top", "breakneck", "sluggish",
     "sluggishly", "leisurely", "gentle", "gently", "snail", "inching", "ambling", "chugging", "puttering",
-    "pottering", "idling"} | COMPARISONS
+    "pottering", "idling", "speedily"} | COMPARISONS
 
 
 def speed_unsaid(words: list[str], program: list[str]) -> str:
@@ -1384,6 +1453,9 @@ ASKED_QUERIES = {**{w: "query_moving_velocity" for w in ("speed", "velocity")},
                  **{w: "query_attributes[color]" for w in ("color", "colour")},
                  **{w: "query_attributes[shape]" for w in ("type", "kind", "sort", "shape", "model")}}
 PARTNER_SAID = {"that", "which", "who"}
+# the grammar's words for accelerating: 'how quickly is it speeding up?' asks how much it accelerates
+ACCELERATION_SAID = tuple(tokenize(phrase) for key in ("ACCELERATING", "ACCELERATE") for pool in ("seen", "heldout")
+                          for phrase in templates()["lexicon"][key][pool])
 
 
 def property_unread(words: list[str], program: list[str]) -> str:
@@ -1392,6 +1464,12 @@ def property_unread(words: list[str], program: list[str]) -> str:
     question names where it asks about the vehicle that hits it ('what direction is the vehicle that hits the jet
     moving in?' read as the jet's)."""
     asked, _ = _asked(words)
+    head = _head(words)
+    if head[:1] and head[0] in ASKING and "acceleration" in head or head[:1] == ["how"] and head[1:2] and \
+            head[1] in SPEED_CLASS_WORDS and (any(w.startswith("accelerat") for w in head) or any(
+                head[k:k + len(a)] == a for k in range(2, len(head)) for a in ACCELERATION_SAID)):
+        return ("the question asks how much a vehicle accelerates, which no question here asks: ask whether it is "
+                "accelerating")
     query = program[-1] if program and program[-1].startswith("query_") else None
     if query and asked in ASKED_QUERIES and ASKED_QUERIES[asked] != query:
         return (f"the question asks the '{asked}', but its nearest reading asks another property: no question here "
