@@ -26,10 +26,10 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      form_unmatched, framing_dropped, future_unread, heading_as_direction,
                                      height_as_aloft, idioms_as_said, interjections_dropped, type_as_said,
                                      impact_unsaid, named_attribute, negative_question_as_asked,
-                                     noun_phrase_as_question, program_shape, ranking, request_as_imperative,
-                                     reversed_as_said, reversed_reading, speed_as_subject, speed_measured,
-                                     speed_unsaid, speeds_alike, synonyms, tail_as_question, time_clause_last,
-                                     time_unasked, video_end_as_said, well_formed)
+                                     noun_phrase_as_question, program_shape, properties_joined, questions_joined,
+                                     ranking, several_asked, request_as_imperative, reversed_as_said, reversed_reading,
+                                     speed_as_subject, speed_measured, speed_unsaid, speeds_alike, synonyms,
+                                     tail_as_question, time_clause_last, time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -753,6 +753,27 @@ def test_a_ranking_alike_speeds_a_manner_and_an_amount_of_acceleration_are_refus
     kept = ["How swiftly is the red sedan moving at the start?", "How fsat is the red sedan at the start?"]
     for text, parse in zip(kept, parser.analyse_batch(kept)):
         assert parse.program and parse.program[-1] == "query_moving_velocity", text
+
+
+def test_two_things_at_once_several_vehicles_a_path_and_a_take_off_are_refused():
+    assert properties_joined(tokenize("is it moving fast and accelerating?"))
+    assert properties_joined(tokenize("is it floating and not moving fast?"))
+    for text in ("is it going fast and not slowly?", "do the sedan and the bus collide?", "faster and faster?"):
+        assert not properties_joined(tokenize(text)), text
+    assert several_asked(tokenize("what colours are the floating planes?"))
+    assert not several_asked(tokenize("compare the speeds of the sedan and the cruiser: is the sedan faster?"))
+    assert questions_joined(tokenize("is it fast at the start, and does it hit the bus?"))
+    assert not questions_joined(tokenize("does it hit anything, and if so, is it in the video?"))
+    parser = QuestionParser.load()
+    texts = ["Does the purple biplane fly in a straight line?", "Does the gray jet take off at some point?",
+             "If the red sedan had been static, how fast would the blue bus be when it hits it?",
+             "What is the speed of the red sedan when the blue bus comes into view?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    # the other answer denied after 'and' is the question's own
+    fast, aloft = parser.analyse_batch(["Is the yellow truck going fast and not slowly at the start?",
+                                        "Is the brown biplane up in the air and not on the ground at the start?"])
+    assert fast.program[-1] == "is_moving_velocity[fast]" and aloft.program[-1] == "is_floating"
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

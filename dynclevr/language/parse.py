@@ -34,8 +34,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   counterfactual that compares a vehicle with itself ('had it been slower': `comparison_imagined`), a partner
   described by its motion ('a stationary vehicle': `motion_unread`), a vehicle ranked among all ('the fastest',
   'the first vehicle to collide': `ranking`), two speeds alike ('as quick as the bus': `speeds_alike`), 'how' with
-  a word no family asks ('how hard does it hit'), an amount of acceleration; or a yes/no question is read as asking
-  which (`form_unmatched`), a reading answers another property than the one asked (`property_unread`);
+  a word no family asks ('how hard does it hit'), an amount of acceleration, two kinds of motion or two questions at
+  once (`properties_joined`, `questions_joined`), several vehicles' colours or types (`several_asked`), a path's
+  shape, a take-off; or a yes/no question is read as asking which (`form_unmatched`) or how, a reading answers
+  another property than the one asked (`property_unread`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -315,7 +317,7 @@ class QuestionParser:
         if measured:
             return [], (f"the question gives a speed as a number ('{measured}'), which no question here asks: ask "
                         "whether the vehicle is static, slow or fast"), read_as, said
-        ranked = ranking(said)
+        ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -806,7 +808,8 @@ COMPARISONS = set(SPEED_ORDER)
 # A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
 COMPARATIVES = {("more", "fast"): "faster", ("more", "quick"): "quicker", ("more", "slow"): "slower",
                 ("less", "fast"): "slower", ("less", "quick"): "slower", ("less", "slow"): "faster"}
-PAIR_SAID = (["of", "the", "two", "vehicles"], ["of", "the", "two"], ["of", "both"], ["of", "the", "pair"])   # longest first
+# longest first
+PAIR_SAID = (["of", "the", "two", "vehicles"], ["of", "the", "two"], ["of", "both"], ["of", "the", "pair"])
 
 
 def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1106,6 +1109,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
+    path = next((w for w in said if w in PATH_SHAPES), None)
+    if path:
+        return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "
+                "ask which way it is moving)")
+    if any(a in TAKING and b == "off" for a, b in zip(said, said[1:])):
+        return ("the question asks whether a plane takes off, which no question here asks (they ask whether it is "
+                "floating at the start)")
     pose = next((w for w in said if w in POSE), None)
     if pose:
         return (f"the question asks how a vehicle lies ('{pose}'), which no question here asks (they ask how it "
@@ -1138,8 +1148,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
 
 def offered(words: list[str], k: int) -> bool:
     """Whether word k is in an alternative offered after 'or' ('in the air or on the ground?', '... or is it on the
-    ground', 'or is it not?'): the question offers both answers, and asks the first."""
-    return "or" in words[max(k - 5, 0):k]
+    ground', 'or is it not?'): the question offers both answers, and asks the first; or denied after 'and' ('fast
+    and not slowly', 'in the air and not on the ground': `properties_joined` refuses two kinds of motion)."""
+    return "or" in words[max(k - 5, 0):k] or words[k - 1:k] == ["and"]
 
 
 def reversed_reading(words: list[str], abstract: list[str]) -> str:
@@ -1242,12 +1253,16 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
 TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
-           "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning", "spun"}
+           "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning",
+           "spun"}
 # how a vehicle lies ('is the motorbike upright?' was read as static, 'has it toppled over?' as a collision)
 POSE = {"upright", "upside", "overturned", "toppled", "topple", "topples", "tipped", "tip", "tips", "capsized",
         "flipped"}
 # the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
 GROUND = {"ground", "floor"}
+PATH_SHAPES = {"straight", "circle", "circles", "circular", "curve", "curves", "curved", "curving", "zigzag", "zigzags",
+               "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving"}
+TAKING = {"take", "takes", "took", "taking", "taken", "lift", "lifts", "lifted", "lifting"}   # '... off': a take-off
 
 
 # A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
@@ -1352,6 +1367,48 @@ def speeds_alike(words: list[str]) -> str:
         next((f"{a} {b}" for a, b in zip(words, words[1:]) if a == "equally" and b in SPEED_CLASS_WORDS), "")
 
 
+# The motions a question asks one at a time, by the words that say them: 'is it moving fast and accelerating?' was
+# read as one of them
+MOTION_KINDS = {**{w: "speed" for w in ("moving", "fast", "quick", "quickly", "rapidly", "slow", "slowly", "static",
+                                        "stationary", "parked", "stopped", "motionless")},
+                **{w: "accelerating" for w in ("accelerating", "speeding", "gaining")},
+                **{w: "floating" for w in ("floating", "hovering", "airborne", "afloat", "aloft")}}
+PLURAL_ASKED = {"colours", "colors", "types", "kinds", "sorts", "shapes"}   # not 'compare the speeds of X and Y'
+SUBJECTS = {"it", "they", "the", "that", "this", "he", "she", "there"}
+
+
+def properties_joined(words: list[str]) -> str:
+    """Two kinds of motion asked at once ('fast and accelerating', 'floating and moving fast'), or ''."""
+    for k, w in enumerate(words):
+        if w != "and":
+            continue
+        left = next((MOTION_KINDS[v] for v in reversed(words[max(k - 2, 0):k]) if v in MOTION_KINDS), None)
+        right = next((MOTION_KINDS[v] for v in words[k + 1:k + 4] if v in MOTION_KINDS), None)   # '... and not ...'
+        if left and right and left != right:
+            return (f"the question asks two things at once ('{left}' and '{right}'), which the parser reads one "
+                    "question at a time: ask them apart")
+    return ""
+
+
+def several_asked(words: list[str]) -> str:
+    """A property asked of several vehicles ('what colours are the floating planes?'), or ''."""
+    said = next((w for k, w in enumerate(words) if w in PLURAL_ASKED and k and words[k - 1] in
+                 {"what", "which", "the", "their"}), None)
+    if said is None:
+        return ""
+    return (f"the question asks the {said} of several vehicles, which no question here asks: each asks about one "
+            "vehicle")
+
+
+def questions_joined(words: list[str]) -> str:
+    """Two questions joined by 'and' ('is it fast at the start, and does it hit the bus?'), or ''."""
+    said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 2) if words[k] == "and"
+                 and words[k + 1] in YES_NO_OPENERS and words[k + 2] in SUBJECTS), None)
+    if said is None:
+        return ""
+    return (f"the question asks two questions ('{said}'), which the parser reads one at a time: ask them apart")
+
+
 def ranking(words: list[str]) -> str:
     """Why the question ranks a vehicle among all ('' when it does not)."""
     said = next((w for w in words if w in SUPERLATIVES), None) or next(
@@ -1398,7 +1455,7 @@ def impact_unsaid(words: list[str], program: list[str]) -> str:
     colour is the parked car?' read as the colour of what the car hits)."""
     if not COLLISION_OPERATIONS.intersection(operation(t) for t in program):
         return ""
-    if any(w in IMPACT_SAID or w.startswith(IMPACT_STEMS) for w in words):
+    if asks_impact(words) or any(w in IMPACT_SAID - {"into"} for w in words):   # not 'comes into view'
         return ""
     return ("the question says nothing of a collision, but its nearest reading asks about one: no question here "
             "reads it")
@@ -1493,6 +1550,10 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     if head[:1] and head[0] in WHO:
         return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
                 "the vehicle")
+    how = next((words[k + 1] for k in range(len(words) - 1) if words[k] == "how"
+                and words[k + 1] not in ("about", "come")), None)   # 'if it had been parked, how fast would ...'
+    if how:
+        return f"the question asks how {how}, but its nearest reading asks yes or no"
     asked, _ = _asked(words)
     if asked in QUERY_NOUNS or head[:1] and head[0] in ASKING and head[1:2] and head[1] in QUERY_NOUNS:
         return f"the question asks the '{asked or head[1]}', but its nearest reading asks yes or no"
