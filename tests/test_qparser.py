@@ -21,11 +21,11 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
-                                     attention_as_subject, _chosen, clause_time, clock_unasked, comparative_as_said,
-                                     comparison_imagined, direction_unasked, first_frames_as_said, form_unasked,
-                                     form_unmatched, framing_dropped, future_unread, heading_as_direction,
-                                     height_as_aloft, idioms_as_said, interjections_dropped, type_as_said,
-                                     impact_unsaid, named_attribute, negative_question_as_asked,
+                                     attention_as_subject, _chosen, clause_time, clock_unasked, collision_at_start,
+                                     comparative_as_said, comparison_imagined, direction_unasked, first_frames_as_said,
+                                     form_unasked, form_unmatched, framing_dropped, future_unread,
+                                     heading_as_direction, height_as_aloft, idioms_as_said, interjections_dropped,
+                                     type_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, program_shape, properties_joined, questions_joined,
                                      ranking, several_asked, request_as_imperative, reversed_as_said, reversed_reading,
                                      speed_as_subject, speed_measured, speed_unsaid, speeds_alike, synonyms,
@@ -774,6 +774,25 @@ def test_two_things_at_once_several_vehicles_a_path_and_a_take_off_are_refused()
     fast, aloft = parser.analyse_batch(["Is the yellow truck going fast and not slowly at the start?",
                                         "Is the brown biplane up in the air and not on the ground at the start?"])
     assert fast.program[-1] == "is_moving_velocity[fast]" and aloft.program[-1] == "is_floating"
+
+
+def test_a_near_miss_a_chase_a_size_an_ought_and_a_collision_at_the_start_are_refused():
+    parser = QuestionParser.load()
+    texts = ["Does the red sedan nearly hit the blue bus?", "Does the cyan truck come close to hitting the red jet?",
+             "Is the yellow minivan chasing the red bike?", "Does the red bus pass the green sedan?",
+             "Is the small blue scooter parked at the start?", "Should the gray truck have stopped?",
+             "Are the green jet and the red bus touching at the start?", "Does the red sedan lose control?",
+             "Does the cyan truck knock the green bike over?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    # ... but 'the frames that follow' is the future, and a start said of a motion is the motion's
+    kept = ["Will the gray car slam into the brown bicycle in the frames that follow?",
+            "In the frames that follow the video, will the red jet hit the cyan truck?",
+            "Does the purple bus, parked at the start, get hit by the red sedan?"]
+    for text, parse in zip(kept, parser.analyse_batch(kept)):
+        assert parse.program and "filter_collision" in parse.program, text
+    assert collision_at_start(tokenize("do they touch at the start?"), "Events X filter_collision exist".split())
+    assert not collision_at_start(tokenize("is it parked at the start?"), "Events X filter_collision exist".split())
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

@@ -36,8 +36,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   'the first vehicle to collide': `ranking`), two speeds alike ('as quick as the bus': `speeds_alike`), 'how' with
   a word no family asks ('how hard does it hit'), an amount of acceleration, two kinds of motion or two questions at
   once (`properties_joined`, `questions_joined`), several vehicles' colours or types (`several_asked`), a path's
-  shape, a take-off; or a yes/no question is read as asking which (`form_unmatched`) or how, a reading answers
-  another property than the one asked (`property_unread`);
+  shape, a take-off, a near miss, one vehicle chasing or passing another, a size or a material (CLEVR's), what
+  ought to happen, a loss of control, a collision at the start (`collision_at_start`); or a yes/no question is read
+  as asking which (`form_unmatched`) or how, a reading answers another property than the one asked
+  (`property_unread`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -230,7 +232,8 @@ class QuestionParser:
         # (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
-            or time_unasked(said, c.program) or clock_unasked(said, c.program) or anything_unasked(said, c.program)
+            or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
+            or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
@@ -317,6 +320,13 @@ class QuestionParser:
         if measured:
             return [], (f"the question gives a speed as a number ('{measured}'), which no question here asks: ask "
                         "whether the vehicle is static, slow or fast"), read_as, said
+        looks = next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in LOOKS and b in OBJECT_WORDS), None)
+        if looks:
+            return [], (f"the question describes a vehicle by its size or material ('{looks}'), which no vehicle here "
+                        "has: they have a colour and a type"), read_as, said
+        if said[:1] and said[0] in NORMATIVE:
+            return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
+                        "what would have if ..."), read_as, said
         ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said)
         if ranked:
             return [], ranked, read_as, said
@@ -1109,6 +1119,18 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
+    relative = next((w for k, w in enumerate(said) if w in RELATIVE_MOTION | PASSING and
+                     said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None)
+    if relative:
+        return (f"the question asks how a vehicle moves relative to another ('{relative}'), which no question here "
+                "asks: ask whether it is faster, or whether they collide")
+    near = next((" ".join(said[k:k + 1 + (w == "close")]) for k, w in enumerate(said) if (w in NEAR_MISS or
+                 said[k:k + 2] == ["close", "to"]) and asks_impact(said[k + 1:k + 4])), None)
+    if near:
+        return (f"the question asks about a near miss ('{near}'), which no question here asks: ask whether they "
+                "collide")
+    if any(a in LOSING and b == "control" for a, b in zip(said, said[1:])):
+        return "the question asks whether a vehicle loses control, which no question here asks"
     path = next((w for w in said if w in PATH_SHAPES), None)
     if path:
         return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "
@@ -1116,7 +1138,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if any(a in TAKING and b == "off" for a, b in zip(said, said[1:])):
         return ("the question asks whether a plane takes off, which no question here asks (they ask whether it is "
                 "floating at the start)")
-    pose = next((w for w in said if w in POSE), None)
+    pose = next((w for w in said if w in POSE), None) or next(
+        (" ".join(said[k:k + 2]) for k, w in enumerate(said) if w in KNOCKING and "over" in said[k + 1:k + 6]), None)
     if pose:
         return (f"the question asks how a vehicle lies ('{pose}'), which no question here asks (they ask how it "
                 "moves)")
@@ -1260,6 +1283,14 @@ POSE = {"upright", "upside", "overturned", "toppled", "topple", "topples", "tipp
         "flipped"}
 # the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
 GROUND = {"ground", "floor"}
+KNOCKING = {"knock", "knocks", "knocked", "knocking"}   # '... over': a pose
+# one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
+# collisions), said of a vehicle ('passes the bus'; not 'passed by', 'the frames that follow')
+RELATIVE_MOTION = {"overtake", "overtakes", "overtook", "overtaking", "chase", "chases", "chased", "chasing", "follow",
+                   "follows", "followed", "following", "pursue", "pursues", "pursued", "pursuing", "tailing"}
+PASSING = {"pass", "passes", "passing", "passed"}
+VEHICLE_SAID = OBJECT_WORDS | {"it", "another", "vehicle", "object", "one", "thing"}
+NEAR_MISS = {"nearly", "almost", "narrowly", "barely"}   # 'does it nearly hit the bus?' asks whether it does not
 PATH_SHAPES = {"straight", "circle", "circles", "circular", "curve", "curves", "curved", "curving", "zigzag", "zigzags",
                "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving"}
 TAKING = {"take", "takes", "took", "taking", "taken", "lift", "lifts", "lifted", "lifting"}   # '... off': a take-off
@@ -1290,6 +1321,18 @@ def time_unasked(words: list[str], program: list[str]) -> str:
         return ""
     return (f"the question asks at a time other than the start ('{said or clock}'), which no question here asks of a "
             "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
+
+
+def collision_at_start(words: list[str], program: list[str]) -> str:
+    """Why a reading of whether vehicles collide is not the question's ('' when it is): the question asks it at the
+    start ('are the jet and the bus touching at the start?', read as at any time), and says no motion there for the
+    start to be the time of ('does the car, parked at the start, hit the bus?')."""
+    if "filter_collision" not in program or "start" in program or any(t.startswith("Counterfactual") for t in program):
+        return ""
+    if not START_WORDS & set(words) or (SPEED_CLASS_WORDS | set(MOTION_KINDS)) & set(words):
+        return ""
+    return ("the question asks about a collision at the start, which no question here asks (they ask whether vehicles "
+            "collide during the video or after it)")
 
 
 def clock_unasked(words: list[str], program: list[str]) -> str:
@@ -1407,6 +1450,12 @@ def questions_joined(words: list[str]) -> str:
     if said is None:
         return ""
     return (f"the question asks two questions ('{said}'), which the parser reads one at a time: ask them apart")
+
+
+# sizes and materials (CLEVR's, not DynSuperCLEVR's: 'the small blue scooter' was read as the blue scooter)
+LOOKS = {"small", "big", "large", "tiny", "huge", "little", "giant", "shiny", "metallic", "metal", "matte", "rubber",
+         "plastic", "wooden"}
+NORMATIVE = {"should", "must", "ought", "shall"}   # 'should the truck have stopped?' was read as whether it did
 
 
 def ranking(words: list[str]) -> str:
