@@ -23,7 +23,7 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
                                      attention_as_subject, _chosen, clause_time, clock_unasked, collision_at_start,
                                      comparative_as_said, comparison_imagined, direction_unasked, first_frames_as_said,
-                                     form_unasked, form_unmatched, framing_dropped, future_unread,
+                                     floating_unsaid, form_unasked, form_unmatched, framing_dropped, future_unread,
                                      heading_as_direction, height_as_aloft, idioms_as_said, interjections_dropped,
                                      type_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, program_shape, properties_joined, questions_joined,
@@ -793,6 +793,24 @@ def test_a_near_miss_a_chase_a_size_an_ought_and_a_collision_at_the_start_are_re
         assert parse.program and "filter_collision" in parse.program, text
     assert collision_at_start(tokenize("do they touch at the start?"), "Events X filter_collision exist".split())
     assert not collision_at_start(tokenize("is it parked at the start?"), "Events X filter_collision exist".split())
+
+
+def test_staying_still_speeding_and_coming_down_on_read_and_floating_unsaid_refused():
+    parser = QuestionParser.load()
+    still, put, speeding, down = parser.analyse_batch([
+        "If the red bus had stayed still, would the green truck have hit it?",
+        "What if the purple cruiser had stayed put - would it still have hit the yellow sedan?",
+        "Is the red car speeding at the start?", "Does the purple airliner come down on the cyan wagon?"])
+    assert "Counterfactual_static" in still.program and "Counterfactual_static" in put.program
+    assert speeding.program[-1] == "is_moving_velocity[fast]"
+    assert down.program[-1] == "exist" and "filter_collision" in down.program
+    assert parser.analyse_batch(["Is the red car speeding up at the start?"])[0].program[-1] == "is_accelerating"
+    # a reading of floating needs a word of it; a reading of rest, no speed said
+    assert floating_unsaid(tokenize("had the bus stayed still, would it hit the truck?"),
+                           "Objects unique Counterfactual_floating X".split())
+    assert not floating_unsaid(tokenize("had the jet stayed aloft, would it hit the truck?"),
+                               "Objects unique Counterfactual_floating X".split())
+    assert parser.analyse_batch(["Does the gray jet come down on the ground?"])[0].program is None
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

@@ -39,7 +39,8 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   shape, a take-off, a near miss, one vehicle chasing or passing another, a size or a material (CLEVR's), what
   ought to happen, a loss of control, a collision at the start (`collision_at_start`); or a yes/no question is read
   as asking which (`form_unmatched`) or how, a reading answers another property than the one asked
-  (`property_unread`);
+  (`property_unread`), or asks floating or rest where the question says neither (`floating_unsaid`, a speed read
+  as static in `reversed_reading`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -235,7 +236,7 @@ class QuestionParser:
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
-            or future_unread(said, c.program) or speed_unsaid(read, c.program)
+            or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
             or property_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
@@ -705,6 +706,14 @@ IDIOMS = tuple(sorted({
        for adverb in (("tight",) if verb.startswith("s") else ("nowhere",))},
     ("on", "the", "move"): ("moving",),
     ("stayed", "where", "it", "was"): ("been", "static"),
+    **{(stay, "put"): (stay, "still") for stay in ("stay", "stays", "stayed", "staying")},
+    # a counterfactual's condition: 'had it stayed still' was read as had it stayed in the air
+    **{("had", stayed, still): ("had", "been", "static") for stayed in ("stayed", "remained", "kept", "stood")
+       for still in ("still", "put", "stationary", "motionless", "parked", "stopped")},
+    # said of a plane: 'does it come down on the wagon?' (on the ground, a landing: refused as one)
+    **{(come, "down", "on", *top): (crash, "into") for come, crash in (("come", "crash"), ("comes", "crashes"),
+                                                                      ("came", "crashed"), ("coming", "crashing"))
+       for top in ((), ("top", "of"))},
     # within the video, not after it ('has it hit anything by the end of the video?')
     **{("by", "the", "end", "of", "the", film): ("during", "the", "video") for film in ("video", "clip", "footage",
                                                                                        "film", "recording", "movie")},
@@ -749,7 +758,13 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if words[:1] and words[0] in IMAGINING:
         out, read = phrases_as_said(words[1:], IDIOMS)
         return ["imagine", *out], ((words[0], "imagine"), *read)
-    return phrases_as_said(words, IDIOMS)
+    out, read = phrases_as_said(words, IDIOMS)
+    # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
+    # accelerating, the grammar's 'speeding up')
+    speeding = [k for k, w in enumerate(out) if w == "speeding" and out[k + 1:k + 2] not in (["up"], ["along"])]
+    for k in reversed(speeding):
+        out[k + 1:k + 1] = ["along"]
+    return out, read + (("speeding", "speeding along"),) * bool(speeding)
 
 
 def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1183,6 +1198,9 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
                 "static, or slow or fast)")
+    if ops & REST_OPERATIONS and (SPEED_CLASS_WORDS - COMPARISONS - {"still"}).intersection(words) and \
+            not (REST_WORDS | NEGATIONS).intersection(words):
+        return "the question asks a speed (slow or fast), but its nearest reading asks whether the vehicle is static"
     for k, w in enumerate(words):
         if w not in NEGATIONS or offered(words, k):
             continue
@@ -1531,6 +1549,23 @@ def speed_unsaid(words: list[str], program: list[str]) -> str:
         return ""
     return ("the question says no speed (slow or fast), but its nearest reading asks about one: ask whether the "
             "vehicle is static, slow or fast")
+
+
+FLOATING_OPERATIONS = {"is_floating", "filter_floating", "Counterfactual_floating"}
+# the words that say a vehicle floats: the grammar's, people's ('afloat', 'off the ground', 'never touched the
+# ground', 'above'), and what the lexicon reads as them
+FLOATING_WORDS = {"floating", "float", "floats", "floated", "air", "airborne", "hovering", "hover", "hovers",
+                  "hovered", "flying", "fly", "flies", "flew", "aloft", "afloat", "levitate", "levitating", "ground",
+                  "above", "hanging", "midair", "sky", "up", "flight", "airplane"}
+
+
+def floating_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of floating is not the question's ('' when it is): the question, as read, says nothing of it
+    ('if the bus had stayed still, ...' was read as had it stayed in the air)."""
+    if not FLOATING_OPERATIONS.intersection(map(operation, program)) or FLOATING_WORDS.intersection(words):
+        return ""
+    return ("the question says nothing of floating, but its nearest reading asks about it: ask whether the vehicle "
+            "is floating, or static, slow or fast")
 
 
 MOTION_READ = ("velocity", "direction", "static", "floating", "accelerating", "Counterfactual")
