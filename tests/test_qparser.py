@@ -23,13 +23,14 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
                                      attention_as_subject, _chosen, clause_time, clock_unasked, collision_at_start,
                                      comparative_as_said, comparison_imagined, direction_unasked, first_frames_as_said,
-                                     floating_unsaid, form_unasked, form_unmatched, framing_dropped, future_unread,
-                                     heading_as_direction, height_as_aloft, idioms_as_said, interjections_dropped,
-                                     type_as_said, impact_unsaid, named_attribute, negative_question_as_asked,
-                                     noun_phrase_as_question, program_shape, properties_joined, questions_joined,
-                                     ranking, several_asked, request_as_imperative, reversed_as_said, reversed_reading,
-                                     speed_as_subject, speed_measured, speed_unsaid, speeds_alike, synonyms,
-                                     tail_as_question, time_clause_last, time_unasked, video_end_as_said, well_formed)
+                                     floating_unsaid, form_unasked, form_unmatched, chained, framing_dropped,
+                                     future_unread, heading_as_direction, height_as_aloft, idioms_as_said,
+                                     interjections_dropped, type_as_said, impact_unsaid, named_attribute,
+                                     negative_question_as_asked, noun_phrase_as_question, program_shape,
+                                     properties_joined, questions_joined, premised, quantified, ranking, several_asked,
+                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
+                                     speed_measured, speed_unsaid, speeds_alike, synonyms, tail_as_question,
+                                     time_clause_last, time_unasked, video_end_as_said, well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -811,6 +812,27 @@ def test_staying_still_speeding_and_coming_down_on_read_and_floating_unsaid_refu
     assert not floating_unsaid(tokenize("had the jet stayed aloft, would it hit the truck?"),
                                "Objects unique Counterfactual_floating X".split())
     assert parser.analyse_batch(["Does the gray jet come down on the ground?"])[0].program is None
+    # a condition said in the simple past after 'imagine' is the grammar's 'had been'
+    imagined = parser.analyse_batch(["Imagine the blue double bus was parked the whole time. Would the red utility "
+                                     "bike still crash into it?"])[0]
+    assert imagined.program and "Counterfactual_static" in imagined.program
+
+
+def test_all_vehicles_a_premise_a_chain_an_order_of_appearing_and_visibility_are_refused():
+    assert quantified(tokenize("do all the cars collide?")) and quantified(tokenize("which vehicles are parked?"))
+    assert not quantified(tokenize("of all the vehicles, which one is slow?"))
+    assert not quantified(tokenize("do they collide with each other?"))
+    assert premised(tokenize("given that the bus is parked, does the sedan hit it?"))
+    assert not premised(tokenize("assuming the bus had been parked, would the sedan hit it?"))
+    assert chained(tokenize("what colour is the vehicle hit by the vehicle that hits the bus?"))
+    assert not chained(tokenize("what colour is the vehicle that the red sedan hits?"))
+    assert not chained(tokenize("which model is the thing that the gray vehicle struck?"))   # the grammar's
+    parser = QuestionParser.load()
+    texts = ["Does the red sedan appear before the blue bus?", "Is the red sedan visible at the start?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
+    seen = parser.analyse_batch(["How fast is the yellow fighter moving when it becomes visible?"])[0]
+    assert seen.program and "come_in_frame" in seen.program
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

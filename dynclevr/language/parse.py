@@ -40,7 +40,9 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   ought to happen, a loss of control, a collision at the start (`collision_at_start`); or a yes/no question is read
   as asking which (`form_unmatched`) or how, a reading answers another property than the one asked
   (`property_unread`), or asks floating or rest where the question says neither (`floating_unsaid`, a speed read
-  as static in `reversed_reading`);
+  as static in `reversed_reading`), or not whether a vehicle is visible (`visibility_unread`); all or every vehicle
+  at once (`quantified`), a premise (`premised`), a vehicle described through another described one (`chained`),
+  the order in which vehicles appear;
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -238,7 +240,7 @@ class QuestionParser:
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
-            or property_unread(said, c.program)) else c
+            or property_unread(said, c.program) or visibility_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -328,7 +330,8 @@ class QuestionParser:
         if said[:1] and said[0] in NORMATIVE:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
-        ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said)
+        ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said) or \
+            quantified(said) or premised(said) or chained(said)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -759,6 +762,14 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         out, read = phrases_as_said(words[1:], IDIOMS)
         return ["imagine", *out], ((words[0], "imagine"), *read)
     out, read = phrases_as_said(words, IDIOMS)
+    # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past is the grammar's
+    # 'had been' (it was read as whether the bus is parked at the collision)
+    if out[:1] and out[0] in ("imagine", "suppose", "supposing"):
+        end = next((k for k, w in enumerate(out) if w in (".", ",", ";", ":", "-", "?")), len(out))
+        k = next((k for k in range(1, end) if out[k] in ("was", "were")), None)
+        if k is not None:
+            read += ((out[k], "had been"),)
+            out[k:k + 1] = ["had", "been"]
     # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
     # accelerating, the grammar's 'speeding up')
     speeding = [k for k, w in enumerate(out) if w == "speeding" and out[k + 1:k + 2] not in (["up"], ["along"])]
@@ -1146,6 +1157,12 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
                 "collide")
     if any(a in LOSING and b == "control" for a, b in zip(said, said[1:])):
         return "the question asks whether a vehicle loses control, which no question here asks"
+    order = next((" ".join(said[k:k + 2]) for k, w in enumerate(said) if w in COMES_IN_WORDS and
+                  said[k + 1:k + 2] in (["before"], ["after"], ["first"], ["last"]) and not (
+                      said[k + 1] == "after" and FILM_WORDS & set(said[k + 2:k + 4]))), None)
+    if order:
+        return (f"the question asks the order in which vehicles appear ('{order}'), which no question here asks (they "
+                "ask how fast a vehicle is moving when it comes into view)")
     path = next((w for w in said if w in PATH_SHAPES), None)
     if path:
         return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "
@@ -1341,6 +1358,20 @@ def time_unasked(words: list[str], program: list[str]) -> str:
             "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
 
 
+VISIBILITY = {"visible", "invisible", "hidden", "occluded"}   # not 'see': 'based on what you see, will ...'
+
+
+def visibility_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question asks whether a vehicle can be seen ('is
+    the red sedan visible at the start?' was read as accelerating), which only the time of its coming into view
+    reads."""
+    said = next((w for w in words if w in VISIBILITY), None)
+    if said is None or "come_in_frame" in program:
+        return ""
+    return (f"the question asks whether a vehicle can be seen ('{said}'), which no question here asks (they ask how "
+            "fast it moves when it comes into view)")
+
+
 def collision_at_start(words: list[str], program: list[str]) -> str:
     """Why a reading of whether vehicles collide is not the question's ('' when it is): the question asks it at the
     start ('are the jet and the bus touching at the start?', read as at any time), and says no motion there for the
@@ -1474,6 +1505,50 @@ def questions_joined(words: list[str]) -> str:
 LOOKS = {"small", "big", "large", "tiny", "huge", "little", "giant", "shiny", "metallic", "metal", "matte", "rubber",
          "plastic", "wooden"}
 NORMATIVE = {"should", "must", "ought", "shall"}   # 'should the truck have stopped?' was read as whether it did
+
+
+# 'given that the bus is parked, does the sedan hit it?' was read as whether the bus is parked at the collision
+# ... but 'assuming the bus had been parked, would ...?' is the grammar's counterfactual
+PREMISES = (["given", "that"], ["assuming", "that"], ["assuming"], ["provided", "that"], ["knowing", "that"])
+IMAGINED = {"had", "were", "would"}
+RELATIVES = {"that", "which", "who"}                    # 'the vehicle that ...'
+PASSIVES = {"hit", "struck", "rammed", "bumped"}         # 'the vehicle hit by ...', not 'the gray vehicle struck'
+
+
+def quantified(words: list[str]) -> str:
+    """All or every vehicle asked about at once ('do all the cars collide?', 'which vehicles are parked?'), or ''."""
+    said = next((" ".join(words[k:k + 2 + (words[k + 1:k + 2] == ["the"])]) for k, w in enumerate(words)
+                 if w == "all" and words[k + 1 + (words[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in PLURALS)
+                 and words[k - 1:k] not in (["of"], ["among"], ["from"])   # 'of all the vehicles, which one ...'
+                 or w in ("every", "each") and words[k + 1:k + 2] in ([v] for v in VEHICLE_SAID - {"it"})), None)
+    head = _head(words)
+    if said is None and head[:1] and head[0] in ASKING and head[1:2] and head[1] in PLURALS:
+        said = " ".join(head[:2])
+    if said is None:
+        return ""
+    return (f"the question asks about several vehicles at once ('{said}'), which no question here asks: each asks "
+            "about one vehicle, or a pair")
+
+
+def premised(words: list[str]) -> str:
+    """A premise stated first ('given that the bus is parked, ...'), or ''."""
+    said = next((" ".join(p) for k in range(len(words)) for p in PREMISES if words[k:k + len(p)] == p
+                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
+    if said is None:
+        return ""
+    return (f"the question states a premise ('{said}'), which no question here reads: ask the question alone, or as "
+            "a counterfactual ('if X had been ..., would ...')")
+
+
+def chained(words: list[str]) -> str:
+    """A vehicle described through another described vehicle ('the vehicle hit by the vehicle that hits the bus'),
+    or ''."""
+    relatives = [k for k, w in enumerate(words[:-1]) if w in GENERIC_NOUNS and (
+        words[k + 1] in RELATIVES or words[k + 1] in PASSIVES and words[k + 2:k + 3] == ["by"])]
+    if len(relatives) < 2:
+        return ""
+    return ("the question describes a vehicle through another described vehicle, which no question here reads: ask "
+            "about the one in between first")
 
 
 def ranking(words: list[str]) -> str:
