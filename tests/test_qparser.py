@@ -21,16 +21,17 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
-                                     attention_as_subject, _chosen, clause_time, clock_unasked, collision_at_start,
-                                     comparative_as_said, comparison_imagined, direction_unasked, first_frames_as_said,
-                                     floating_unsaid, form_unasked, form_unmatched, chained, framing_dropped,
-                                     future_unread, heading_as_direction, height_as_aloft, idioms_as_said,
-                                     interjections_dropped, type_as_said, impact_unsaid, named_attribute,
-                                     negative_question_as_asked, noun_phrase_as_question, program_shape,
-                                     properties_joined, questions_joined, premised, quantified, ranking, several_asked,
-                                     request_as_imperative, reversed_as_said, reversed_reading, speed_as_subject,
-                                     speed_measured, speed_unsaid, speeds_alike, synonyms, tail_as_question,
-                                     time_clause_last, time_unasked, video_end_as_said, well_formed)
+                                     attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
+                                     collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
+                                     first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
+                                     framing_dropped, future_unread, heading_as_direction, height_as_aloft,
+                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid,
+                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
+                                     program_shape, properties_joined, questions_joined, premised, quantified, ranking,
+                                     several_asked, request_as_imperative, reversed_as_said, reversed_reading,
+                                     speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
+                                     synonyms, tail_as_question, time_clause_last, time_unasked, video_end_as_said,
+                                     well_formed)
 from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
                                           corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
@@ -833,6 +834,21 @@ def test_all_vehicles_a_premise_a_chain_an_order_of_appearing_and_visibility_are
         assert parse.program is None and parse.reason, text
     seen = parser.analyse_batch(["How fast is the yellow fighter moving when it becomes visible?"])[0]
     assert seen.program and "come_in_frame" in seen.program
+
+
+def test_a_measure_of_speed_a_colour_checked_a_count_and_scenery_are_refused():
+    for text in ("what is the top speed of the red sedan?", "how does the speed of the sedan change?",
+                 "what speed does the sedan reach?", "is the sedan much faster than the bus?"):
+        assert speed_measure(tokenize(text)), text
+    for text in ("is the car going at top speed?", "what would happen if it had been gaining speed: would it hit "
+                 "the bus?", "what is the speed of the sedan at the start?"):
+        assert not speed_measure(tokenize(text)), text
+    assert checked_attribute(tokenize("is the accelerating vehicle blue?"))
+    assert not checked_attribute(tokenize("what colour is the accelerating vehicle?"))
+    parser = QuestionParser.load()
+    texts = ["Count the planes in the video.", "Does the green jet hit the wall?", "Is the accelerating vehicle blue?"]
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is None and parse.reason, text
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

@@ -42,7 +42,8 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   (`property_unread`), or asks floating or rest where the question says neither (`floating_unsaid`, a speed read
   as static in `reversed_reading`), or not whether a vehicle is visible (`visibility_unread`); all or every vehicle
   at once (`quantified`), a premise (`premised`), a vehicle described through another described one (`chained`),
-  the order in which vehicles appear;
+  the order in which vehicles appear; a measure of speed or a comparison's degree (`speed_measure`), a colour
+  checked (`checked_attribute`), a collision with scenery ('the wall');
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
@@ -294,7 +295,8 @@ class QuestionParser:
                                                                                else [part])]
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
-        if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])):
+        if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])) or \
+                said[:1] == ["count"] or any(said[k:k + 3] == ["the", "number", "of"] for k in range(len(said))):
             return [], "the question asks for a count ('how many'), which no question here answers", read_as, said
         counted = next((" ".join(said[k:k + n]) for k, a in enumerate(said) for n in (2, 3)
                         if (a.isdigit() or a in NUMBERS) and said[k + n - 1:k + n] and said[k + n - 1] in PLURALS
@@ -331,7 +333,7 @@ class QuestionParser:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
         ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said) or \
-            quantified(said) or premised(said) or chained(said)
+            quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -1163,6 +1165,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if order:
         return (f"the question asks the order in which vehicles appear ('{order}'), which no question here asks (they "
                 "ask how fast a vehicle is moving when it comes into view)")
+    scenery = next((w for k, w in enumerate(said) if w in SCENERY and asks_impact(said[max(k - 4, 0):k])), None)
+    if scenery:
+        return (f"the question asks about a collision with the '{scenery}', which is no vehicle here (they ask about "
+                "collisions between vehicles)")
     path = next((w for w in said if w in PATH_SHAPES), None)
     if path:
         return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "
@@ -1319,6 +1325,8 @@ POSE = {"upright", "upside", "overturned", "toppled", "topple", "topples", "tipp
 # the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
 GROUND = {"ground", "floor"}
 KNOCKING = {"knock", "knocks", "knocked", "knocking"}   # '... over': a pose
+SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
+           "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
 # collisions), said of a vehicle ('passes the bus'; not 'passed by', 'the frames that follow')
 RELATIVE_MOTION = {"overtake", "overtakes", "overtook", "overtaking", "chase", "chases", "chased", "chasing", "follow",
@@ -1549,6 +1557,40 @@ def chained(words: list[str]) -> str:
         return ""
     return ("the question describes a vehicle through another described vehicle, which no question here reads: ask "
             "about the one in between first")
+
+
+# a speed other than the class at a time ('the top speed', 'the average speed', 'what speed does it reach', 'how
+# does its speed change'), a degree of a comparison ('much faster'): no program measures them
+MEASURES = {"top", "maximum", "max", "average", "mean", "peak", "minimum", "min", "highest", "lowest", "final"}
+CHANGES = {"change", "changes", "changed", "changing", "vary", "varies", "varying", "varied"}
+REACHING = {"reach", "reaches", "reached", "reaching", "attain", "attains"}
+DEGREES = {"much", "slightly", "far", "way", "significantly", "somewhat", "considerably", "marginally", "bit", "lot",
+           "twice", "thrice"}
+
+
+def speed_measure(words: list[str]) -> str:
+    """A measure of a speed the speed classes do not give, or a comparison's degree, or ''."""
+    nouns = SPEED_NOUNS | {"speeds"}
+    said = next((" ".join(words[k:k + 2]) for k, w in enumerate(words[:-1]) if w in MEASURES and words[k + 1] in nouns
+                 and words[k - 1:k] in (["the"], ["its"], ["s"])), None) or \
+        next((w for w in words if w in CHANGES and nouns & set(words)), None) or \
+        next((f"{w} speed" for k, w in enumerate(words) if w in REACHING and nouns & set(words[:k])
+              and words[:1] in (["what"], ["which"])), None) or \
+        next((f"{a} {b}" for a, b in zip(words, words[1:]) if a in DEGREES and b in COMPARISONS), None)
+    if said is None:
+        return ""
+    return (f"the question asks a measure of speed ('{said}'), which no question here asks: ask whether a vehicle is "
+            "static, slow or fast, or faster than another")
+
+
+def checked_attribute(words: list[str]) -> str:
+    """A yes/no question whether a described vehicle is of a colour ('is the accelerating vehicle blue?'), or ''."""
+    end = len(words) - (words[-1:] == ["?"])
+    said = next((words[k + 1] for k in range(end - 1) if k + 2 == end and words[k] in GENERIC_NOUNS | NOUNS_SAID
+                 and words[k + 1] in COLOR_NAMES), None)
+    if said is None or not words[:1] or words[0] not in YES_NO_OPENERS:
+        return ""
+    return f"the question asks whether a vehicle is '{said}', which no question here asks: ask what colour it is"
 
 
 def ranking(words: list[str]) -> str:
