@@ -20,13 +20,14 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked,
+from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     idioms_as_said, interjections_dropped, type_as_said, impact_unsaid,
-                                     named_attribute, negative_question_as_asked, noun_phrase_as_question,
+                                     idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
+                                     impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
+                                     noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
                                      several_asked, request_as_imperative, reversed_as_said, reversed_reading,
                                      speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
@@ -847,6 +848,56 @@ def test_a_measure_of_speed_a_colour_checked_a_count_and_scenery_are_refused():
     parser = QuestionParser.load()
     texts = ["Count the planes in the video.", "Does the green jet hit the wall?", "Is the accelerating vehicle blue?"]
     assert_refused(parser, texts)
+
+
+def test_a_label_an_aside_a_closing_word_and_an_inverted_condition_are_read():
+    assert asides_dropped(tokenize("Q1: how fast is the red sedan (the car) moving?"))[0] == \
+        tokenize("how fast is the red sedan moving?")
+    assert asides_dropped(tokenize("quick question: is it fast?"))[0] == tokenize("is it fast?")
+    # an aside that says more stays ('the blue one' is a colour), and so does a first sentence that is no label
+    assert asides_dropped(tokenize("is the bus (the blue one) fast?"))[0] == tokenize("is the bus (the blue one) fast?")
+    assert asides_dropped(tokenize("the bus is parked. is it red?"))[0] == tokenize("the bus is parked. is it red?")
+    assert interjections_dropped(tokenize("does it hit anything lol?"))[0] == tokenize("does it hit anything")
+    parser = QuestionParser.load()
+    red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
+    label, chat, inverted, landed = parser.analyse_batch([
+        "Q1: how fast is the red sedan (the car) moving at the start?", "does the red sedan hit anything lol",
+        "Had the cyan biplane stayed still, would the cyan biplane have collided with the red sedan?",
+        "If the gray jet had never landed, would it have hit the red sedan?"])
+    assert label.program == f"{red} start query_moving_velocity".split()
+    assert chat.program == f"Events {red} filter_collision exist".split()
+    assert "Counterfactual_static" in inverted.program and "Counterfactual_floating" in landed.program
+
+
+def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_are_refused():
+    assert motion_unfiltered(tokenize("is the parked blue bus faster than the sedan?"),
+                             "Objects X unique Objects Y unique start faster_velocity".split())
+    assert not motion_unfiltered(tokenize("what colour is the parked vehicle?"),
+                                 "Objects start filter_static unique query_attributes[color]".split())
+    assert not motion_unfiltered(tokenize("is the bus the faster one?"), "X Y start faster_velocity".split())
+    parser = QuestionParser.load()
+    texts = ["Is the gray scooter ridden by anyone?", "Does the blue jet cast a shadow on the ground?",
+             "Does the red sedan hit the blue bus on purpose?", "Is the red sedan trying to reach the blue bus?",
+             "Does the brown scooter flip over when it hits the red sedan?", "Is the yellow airliner about to land?",
+             "Does the green minivan change lanes?", "Does the cyan biplane lose height during the video?",
+             "Is the red sedan accelerating faster than the blue bus?", "Is the moving bus faster than the red sedan?",
+             "Is the red sedan still accelerating when it hits the blue bus?"]
+    assert_refused(parser, texts)
+
+
+def test_two_changes_the_video_otherwise_and_other_comparisons_are_refused_not_the_grammars():
+    for text in ("if the sedan had been fast and the blue bus parked, would they collide?",
+                 "would the sedan hit the bus if the video were longer?"):
+        assert imagined_otherwise(tokenize(text)), text
+    for text in ("if the video kept going, would the bus hit the sedan?", "do you know if the sedan and the bus "
+                 "will collide?", "if the sedan had been parked, would it and the bus collide?"):
+        assert not imagined_otherwise(tokenize(text)), text
+    for text in ("is the collision violent?", "does the sedan move more than the bus?", "is the truck faster than it "
+                 "was at the start?", "is the truck carrying anything?", "is either the sedan or the bus fast?"):
+        assert otherwise_compared(tokenize(text), tokenize(text)), text
+    for text in ("is the bike moving more slowly than the bus?", "when it hits the bus, is it slower than it?",
+                 "is the bike going less quickly than the bus?"):
+        assert not otherwise_compared(tokenize(text), tokenize(text)), text
 
 
 def test_the_viewer_how_it_heads_and_the_faster_of_two_read_by_the_shipped_parser():

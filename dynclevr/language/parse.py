@@ -241,6 +241,7 @@ class QuestionParser:
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
+            or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
@@ -255,6 +256,7 @@ class QuestionParser:
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, named = catalogue_names(words)
+        words, labelled = asides_dropped(words)
         words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)
         words, described = description_as_said(words)
@@ -272,8 +274,8 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + opened + idioms + described + typed + end + framing + attended + request + negative + asked
-                   + aloft + heading + subject + first + more + tail + offered)
+        request = (named + labelled + opened + idioms + described + typed + end + framing + attended + request
+                   + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -333,7 +335,8 @@ class QuestionParser:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
         ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said) or \
-            quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said)
+            quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said) or \
+            imagined_otherwise(words) or otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -445,6 +448,9 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  "hey", "anyway", "anyways"}
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
+# ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
+CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
+                         "thanks", "cheers", "tho"}
 
 
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -456,12 +462,50 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         k += 1
         while k < len(words) and words[k] in INTERJECTION_ENDS:
             k += 1
+    end = len(words)
+    while end > k and (words[end - 1] in CLOSING_INTERJECTIONS or words[end - 1] in INTERJECTION_ENDS
+                       and end - 1 > k and words[end - 2] in CLOSING_INTERJECTIONS):
+        end -= 1
+    closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"}:
-        return words, ()
-    return words[k:], ((" ".join(words[:k]), "nothing, an interjection"),)
+        return words[:end], closing
+    return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
+
+# A label the question is put under ('Q1:', 'Question 3:', 'Quick question:'), and an aside in brackets that only
+# says again what the object is ('the red sedan (the car)'): they ask nothing ('quick' read as a speed, and each
+# bracket is an unknown word).
+LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
+               "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
+               "is", "the"}
+ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
+
+
+def _label(word: str) -> bool:
+    return word in LABEL_WORDS or re.fullmatch(r"q?\d+[a-z]?", word) is not None
+
+
+def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question without its label and its asides ('q1 : how fast is the red sedan ( the car ) ...' -> 'how fast
+    is the red sedan ...'). With the words read as nothing, or the words as they are and ()."""
+    read = []
+    end = next((k for k, w in enumerate(words[:7]) if w in (":", ".")), None)
+    if end and all(map(_label, words[:end])) and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS:
+        read.append((" ".join(words[:end + 1]), "nothing, a label"))
+        words = words[end + 1:]
+    out, k = [], 0
+    while k < len(words):
+        close = next((j for j in range(k + 1, min(k + 6, len(words))) if words[j] == ")"), None) \
+            if words[k] == "(" and out and out[-1] in OBJECT_WORDS else None
+        if close and close > k + 1 and ASIDE_WORDS.issuperset(words[k + 1:close]):
+            read.append((" ".join(words[k:close + 1]), "nothing, an aside"))
+            k = close + 1
+            continue
+        out.append(words[k])
+        k += 1
+    return out, tuple(read)
 
 
 def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -689,6 +733,8 @@ SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becom
 # word by word they meant something else ('flat out' was 'floating' through a typo fix, 'tearing along' slow,
 # 'sitting tight' fast, 'right off the bat' a direction). The longest phrase at a place wins.
 _START = ("at", "the", "start")
+STAYED = ("stayed", "remained", "kept", "stood")
+STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
 IDIOMS = tuple(sorted({
     **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
                            ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
@@ -713,8 +759,7 @@ IDIOMS = tuple(sorted({
     ("stayed", "where", "it", "was"): ("been", "static"),
     **{(stay, "put"): (stay, "still") for stay in ("stay", "stays", "stayed", "staying")},
     # a counterfactual's condition: 'had it stayed still' was read as had it stayed in the air
-    **{("had", stayed, still): ("had", "been", "static") for stayed in ("stayed", "remained", "kept", "stood")
-       for still in ("still", "put", "stationary", "motionless", "parked", "stopped")},
+    **{("had", stayed, still): ("had", "been", "static") for stayed in STAYED for still in STILL},
     # said of a plane: 'does it come down on the wagon?' (on the ground, a landing: refused as one)
     **{(come, "down", "on", *top): (crash, "into") for come, crash in (("come", "crash"), ("comes", "crashes"),
                                                                       ("came", "crashed"), ("coming", "crashing"))
@@ -772,6 +817,13 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if k is not None:
             read += ((out[k], "had been"),)
             out[k:k + 1] = ["had", "been"]
+    # the same condition inverted: 'had the plane stayed still , would it ...' (read as had it stayed in the air)
+    if out[:1] == ["had"]:
+        end = next((k for k, w in enumerate(out) if w in (",", "?")), len(out))
+        k = next((k for k in range(2, end - 1) if out[k] in STAYED and out[k + 1] in STILL), None)
+        if k is not None:
+            read += ((f"{out[k]} {out[k + 1]}", "been static"),)
+            out[k:k + 2] = ["been", "static"]
     # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
     # accelerating, the grammar's 'speeding up')
     speeding = [k for k, w in enumerate(out) if w == "speeding" and out[k + 1:k + 2] not in (["up"], ["along"])]
@@ -1181,16 +1233,40 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if pose:
         return (f"the question asks how a vehicle lies ('{pose}'), which no question here asks (they ask how it "
                 "moves)")
-    landing = any(w in GROUND and asks_impact(said[max(k - 4, 0):k]) and not NEGATIONS & set(said[max(k - 6, 0):k])
-                  for k, w in enumerate(said)) or \
+    landing = any((w in GROUND and asks_impact(said[max(k - 4, 0):k]) or w in LANDING)
+                  and not NEGATIONS & set(said[max(k - 6, 0):k]) for k, w in enumerate(said)) or \
         any(said[k:k + 2] == [t, "down"] for k in range(len(said)) for t in ("touch", "touches", "touched", "touching"))
     if landing:     # ... but 'had it never touched the ground' is a counterfactual's floating
         return ("the question asks whether a vehicle lands or hits the ground, which no question here asks (they ask "
                 "whether a plane is floating at the start)")
-    turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])), None)
+    turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])), None) \
+        or next((w for w in said if w in LANES), None)
     if turn and not ENGINE_WORDS & set(said):
         return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
                 "way it is moving)")
+    person = next((w for w in said if w in PEOPLE), None)
+    if person:
+        return (f"the question asks about a person ('{person}'), and the videos show only vehicles (questions ask "
+                "how they move and what they hit)")
+    picture = next((w for w in said if w in PICTURE), None)
+    if picture:
+        return (f"the question asks about the picture ('{picture}'), not the vehicles (questions ask how they move "
+                "and what they hit)")
+    intent = next((w for w in said if w in INTENT), None) or next(
+        (w for k, w in enumerate(said) if w in TRYING and k and said[k - 1] in VEHICLE_SAID), None)
+    if intent:
+        return (f"the question asks what a vehicle means to do ('{intent}'), which no question here asks (they ask "
+                "what it does)")
+    height = next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in HEIGHT_CHANGES and b in HEIGHT_NOUNS), None)
+    if height:
+        return (f"the question asks about a change of height ('{height}'), which no question here asks (they ask "
+                "whether a plane is floating, and which way a vehicle moves)")
+    compared = next((" ".join(said[k:k + len(a) + 1]) for k in range(len(said)) for a in ACCELERATION_SAID
+                     if said[k:k + len(a)] == a and said[k + len(a):k + len(a) + 1] and
+                     said[k + len(a)] in COMPARISONS | {"more", "less", "harder"}), None)
+    if compared:
+        return (f"the question compares how fast vehicles accelerate ('{compared}'), which no question here asks: ask "
+                "whether one is accelerating, or which is faster")
     around = next((w for k, w in enumerate(said) if w in ("before", "after") and asks_impact(said[k + 1:k + 5])
                    and not FILM_WORDS & set(said[k + 1:k + 3])), None)
     if around:
@@ -1320,11 +1396,26 @@ TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving"
            "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning",
            "spun"}
 # how a vehicle lies ('is the motorbike upright?' was read as static, 'has it toppled over?' as a collision)
-POSE = {"upright", "upside", "overturned", "toppled", "topple", "topples", "tipped", "tip", "tips", "capsized",
-        "flipped"}
+POSE = {"upright", "upside", "overturned", "overturn", "overturns", "toppled", "topple", "topples", "tipped", "tip",
+        "tips", "capsized", "flipped", "flip", "flips", "flipping", "tilted", "tilting", "leaning"}
 # the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
 GROUND = {"ground", "floor"}
-KNOCKING = {"knock", "knocks", "knocked", "knocking"}   # '... over': a pose
+KNOCKING = {"knock", "knocks", "knocked", "knocking", "keel", "keels", "keeled"}   # '... over': a pose
+LANDING = {"land", "lands", "landed", "landing"}   # said of a plane: 'is it about to land?' (a landing)
+LANES = {"lane", "lanes"}   # 'does it change lanes?': a turn
+# no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
+PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
+          "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
+# a change of height ('does the plane lose height?' was read as a collision)
+HEIGHT_CHANGES = {"lose", "loses", "losing", "lost", "gain", "gains", "gaining", "gained"}
+HEIGHT_NOUNS = {"height", "altitude", "elevation"}
+# the picture's light and weather, not the vehicles ('does the jet cast a shadow?' was read as whether it is fast)
+PICTURE = {"shadow", "shadows", "reflection", "reflections", "lighting", "sun", "sunlight", "sunny", "cloud", "clouds",
+           "cloudy", "rain", "raining", "rainy", "snow", "snowing", "weather", "fog", "foggy"}
+# what a vehicle means to do ('does it hit the bus on purpose?' was read as whether it does)
+INTENT = {"purpose", "deliberately", "intentionally", "purposely", "purposefully", "intend", "intends", "intended",
+          "intending", "aiming", "aims"}
+TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted", "attempting"}
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
@@ -1500,6 +1591,64 @@ def several_asked(words: list[str]) -> str:
             "vehicle")
 
 
+CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
+# how a collision went ('is the collision violent?' was read as whether there is one)
+COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
+                    "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic"}
+TRAVELLED = MOTION_WORDS | {"travel", "travels", "travelled", "traveled", "go", "goes", "went", "drive", "drives",
+                            "drove"}
+CARRYING = {"carry", "carries", "carried", "carrying", "cargo", "load", "loaded", "tow", "tows", "towed", "towing"}
+ITSELF = {"itself", "before", "earlier", "previously", "later", "usual", "normal"}
+ITSELF_THEN = {"was", "is", "had", "did", "were", "used"}   # 'than it was' (not 'than it?': its partner)
+
+
+def imagined_otherwise(words: list[str]) -> str:
+    """A counterfactual this grammar has no program for, or '': two changes at once ('if the sedan had been fast and
+    the bus parked' was read as the sedan's alone) or the video changed ('if the video were longer' as the future)."""
+    if any(w == "if" and words[k + 1] == "the" and words[k + 2] in FILM_WORDS and words[k + 3:k + 4] and
+           words[k + 3] in ("were", "was", "had") for k, w in enumerate(words[:-3])):   # not 'if the video went on'
+        return "the question imagines the video itself otherwise, which no question here does"
+    if not (words[:1] and words[0] in CONDITION_OPENERS or "if" in words):
+        return ""
+    start = 0 if words[0] in CONDITION_OPENERS else words.index("if")
+    end = next((k for k in range(start, len(words)) if words[k] in (",", ":", ";", ".", "would", "will", "?")),
+               len(words))
+    second = next((k for k in range(start, end) if words[k] == "and" and OBJECT_WORDS.intersection(words[k + 1:k + 4])),
+                  None)
+    if second is None or not {"had", "were", "been"}.intersection(words[start:end]):   # 'do you know if X and Y ...'
+        return ""
+    return (f"the question imagines two changes at once ('and {' '.join(words[second + 1:end])}'), which no question "
+            "here does: each imagines one vehicle's motion changed")
+
+
+def otherwise_compared(words: list[str], read: list[str]) -> str:
+    """A question (`words`; `read`: its typos fixed) of some other comparison or manner ('' when none): how a
+    collision went, how far vehicles move, a vehicle against itself at another time, what it carries, either of
+    two."""
+    manner = next((w for w in words if w in COLLISION_MANNER), None)
+    if manner:
+        return (f"the question asks how a collision went ('{manner}'), which no question here asks: ask whether they "
+                "collide")
+    farther = next((f"{a} {b}" for k, (a, b) in enumerate(zip(read, read[1:])) if a in TRAVELLED and (
+        b in ("further", "farther", "longer") or b in ("more", "less") and not (
+            read[k + 2:k + 3] and (read[k + 2].endswith("ly") or read[k + 2] in SPEED_CLASS_WORDS)))), None)
+    if farther:
+        return (f"the question compares how far vehicles move ('{farther}'), which no question here asks: ask which "
+                "is faster")
+    itself = next((" ".join(words[k:k + 2 + (b == "it")]) for k, (a, b) in enumerate(zip(words, words[1:]))
+                   if a == "than" and (b in ITSELF or b == "it" and words[k + 2:k + 3]
+                                       and words[k + 2] in ITSELF_THEN)), None)
+    if itself:
+        return (f"the question compares a vehicle with itself at another time ('{itself}'), which no question here "
+                "asks: ask how fast it is at the start or at a collision")
+    carried = next((w for w in words if w in CARRYING), None)
+    if carried:
+        return f"the question asks what a vehicle carries ('{carried}'), which no question here asks"
+    if "either" in words and "or" in words[words.index("either"):]:
+        return "the question asks about either of two vehicles, which no question here asks: ask about each"
+    return ""
+
+
 def questions_joined(words: list[str]) -> str:
     """Two questions joined by 'and' ('is it fast at the start, and does it hit the bus?'), or ''."""
     said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 2) if words[k] == "and"
@@ -1673,7 +1822,7 @@ FLOATING_OPERATIONS = {"is_floating", "filter_floating", "Counterfactual_floatin
 # ground', 'above'), and what the lexicon reads as them
 FLOATING_WORDS = {"floating", "float", "floats", "floated", "air", "airborne", "hovering", "hover", "hovers",
                   "hovered", "flying", "fly", "flies", "flew", "aloft", "afloat", "levitate", "levitating", "ground",
-                  "above", "hanging", "midair", "sky", "up", "flight", "airplane"}
+                  "above", "hanging", "midair", "sky", "up", "flight", "airplane"} | LANDING   # 'had it never landed'
 
 
 def floating_unsaid(words: list[str], program: list[str]) -> str:
@@ -1703,6 +1852,43 @@ def motion_unread(words: list[str], program: list[str]) -> str:
         return ""
     return (f"the question describes a vehicle by its motion ('{said}'), which no question here reads beside a "
             "collision")
+
+
+STATIC_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
+STATIC_SAID = {"static", "stationary", "parked", "stopped", "motionless", "rest", "idle", "standing", "stand",
+               "stands", "not", "never", "immobile", "unmoving"}
+
+
+def still_continuing(words: list[str], program: list[str]) -> str:
+    """Why a reading of rest is not the question's ('' when it is): its only word of rest is 'still' saying that a
+    motion goes on ('is it still accelerating when it hits the bus?' was read as whether it is static there)."""
+    if not STATIC_OPERATIONS.intersection(map(operation, program)) or STATIC_SAID.intersection(words):
+        return ""
+    going = next((f"still {b}" for a, b in zip(words, words[1:]) if a == "still" and b.endswith("ing")
+                  and b not in GENERIC_NOUNS | {"thing", "something", "anything", "nothing"}), None)
+    if going is None or sum(w == "still" for w in words) > 1:
+        return ""
+    return f"the question says a motion goes on ('{going}'), but its nearest reading asks whether the vehicle is static"
+
+
+MOTION_FILTERS = {"filter_static", "filter_moving_velocity", "filter_accelerating", "filter_floating"}
+# said before a vehicle to pick it ('the parked bus'); not a comparison ('the faster one' is the grammar's)
+MOTION_PICKS = {w for w in MOTION_DESCRIPTIONS - COMPARISONS - {"full", "top", "high", "low"}
+                if not w.endswith("ly")} | {"moving"}
+
+
+def motion_unfiltered(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question picks a vehicle by its motion ('is the
+    accelerating sedan faster than the bus?' was read about any sedan) and the program picks none so."""
+    if MOTION_FILTERS.intersection(map(operation, program)):
+        return ""
+    said = next((" ".join(words[k:j + 1]) for k, w in enumerate(words) if w in MOTION_PICKS
+                 and words[k - 1:k] in (["the"], ["that"], ["this"])
+                 for j in (k + 2, k + 1) if words[j:j + 1] and words[j] in OBJECT_WORDS | GENERIC_NOUNS
+                 and all(x in OBJECT_WORDS for x in words[k + 1:j])), None)
+    if said is None:
+        return ""
+    return f"the question picks a vehicle by its motion ('{said}'), which no question here does so"
 
 
 # the asked word and the query that answers it
