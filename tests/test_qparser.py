@@ -858,6 +858,11 @@ def test_a_label_an_aside_a_closing_word_and_an_inverted_condition_are_read():
     assert asides_dropped(tokenize("is the bus (the blue one) fast?"))[0] == tokenize("is the bus (the blue one) fast?")
     assert asides_dropped(tokenize("the bus is parked. is it red?"))[0] == tokenize("the bus is parked. is it red?")
     assert interjections_dropped(tokenize("does it hit anything lol?"))[0] == tokenize("does it hit anything")
+    # a remark that names no vehicle, motion or collision goes; one that says what is asked stays
+    assert asides_dropped(tokenize("there are many vehicles here. is this red bus fast?"))[0] == \
+        tokenize("is the red bus fast?")
+    assert asides_dropped(tokenize("one vehicle is floating. what colour is it?"))[0] == \
+        tokenize("one vehicle is floating. what colour is it?")
     parser = QuestionParser.load()
     red = "Objects filter_attributes[red] filter_attributes[sedan] unique"
     label, chat, inverted, landed = parser.analyse_batch([
@@ -881,8 +886,12 @@ def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_ar
              "Does the brown scooter flip over when it hits the red sedan?", "Is the yellow airliner about to land?",
              "Does the green minivan change lanes?", "Does the cyan biplane lose height during the video?",
              "Is the red sedan accelerating faster than the blue bus?", "Is the moving bus faster than the red sedan?",
-             "Is the red sedan still accelerating when it hits the blue bus?"]
+             "Is the red sedan still accelerating when it hits the blue bus?", "Does the blue bus complete a lap?",
+             "Are the red sedan and the blue bus in a queue?", "Is the red sedan breaking the speed limit?",
+             "Does the cyan jet stall?"]
     assert_refused(parser, texts)
+    who = parser.analyse_batch(["Who is faster at the start: the purple sedan or the gray jet?"])[0]
+    assert who.program and who.program[-1] == "faster_velocity"
 
 
 def test_two_changes_the_video_otherwise_and_other_comparisons_are_refused_not_the_grammars():

@@ -488,9 +488,22 @@ def _label(word: str) -> bool:
 
 
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """The question without its label and its asides ('q1 : how fast is the red sedan ( the car ) ...' -> 'how fast
-    is the red sedan ...'). With the words read as nothing, or the words as they are and ()."""
+    """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
+    how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence
+    that names no vehicle, motion or collision and imagines nothing. With the words read as nothing, or the words as
+    they are and ()."""
     read = []
+    while True:
+        end = next((k for k, w in enumerate(words) if w in (".", "!")), None)
+        if end is None or end + 1 == len(words) or set(words[:end]) & (
+                OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
+                | FLOATING_WORDS | STATIC_SAID) or asks_impact(words[:end]):   # one that says what is asked stays
+            break
+        read.append((" ".join(words[:end + 1]), "nothing, a remark"))
+        words = words[end + 1:]
+    if any(a == "this" and b in OBJECT_WORDS for a, b in zip(words, words[1:])):   # 'is this green bus ...'
+        read.append(("this", "the"))
+        words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
     end = next((k for k, w in enumerate(words[:7]) if w in (":", ".")), None)
     if end and all(map(_label, words[:end])) and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS:
         read.append((" ".join(words[:end + 1]), "nothing, a label"))
@@ -545,7 +558,8 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 # blue bus, is it fast?', 'This is about the red sedan. Does it ...', 'There is a red sedan in the video. Is it ...'):
 # the question about it. A sentence of pointing words only: one that says more ('The red sedan is parked.', 'The
 # cruiser shows up at some point.') may set what the question asks, and stays.
-ATTENDING = (["look", "at"], ["watch"], ["consider"], ["focus", "on"], ["observe"], ["notice"], ["check"],
+ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "at"], ["watch"], ["consider"],
+             ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
              ["as", "to"])
 POINTING_ENDS = {".", ":", ";", ",", "?", "-"}
@@ -1252,6 +1266,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if picture:
         return (f"the question asks about the picture ('{picture}'), not the vehicles (questions ask how they move "
                 "and what they hit)")
+    arranged = next((w for w in said if w in ARRANGEMENT), None)
+    if arranged:
+        return (f"the question asks how vehicles are arranged ('{arranged}'), which no question here asks (they ask "
+                "how each moves and what it hits)")
+    stall = next((w for w in said if w in STALLING), None)
+    if stall:
+        return f"the question asks whether a vehicle stalls ('{stall}'), which no question here asks"
     intent = next((w for w in said if w in INTENT), None) or next(
         (w for k, w in enumerate(said) if w in TRYING and k and said[k - 1] in VEHICLE_SAID), None)
     if intent:
@@ -1416,6 +1437,10 @@ PICTURE = {"shadow", "shadows", "reflection", "reflections", "lighting", "sun", 
 INTENT = {"purpose", "deliberately", "intentionally", "purposely", "purposefully", "intend", "intends", "intended",
           "intending", "aiming", "aims"}
 TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted", "attempting"}
+# how vehicles are arranged ('are they in a queue?' was read as whether they collide), and a stall
+ARRANGEMENT = {"queue", "queues", "queued", "queueing", "queuing", "convoy", "convoys", "formation", "traffic", "jam",
+               "lined"}
+STALLING = {"stall", "stalls", "stalled", "stalling"}
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
@@ -1426,7 +1451,8 @@ PASSING = {"pass", "passes", "passing", "passed"}
 VEHICLE_SAID = OBJECT_WORDS | {"it", "another", "vehicle", "object", "one", "thing"}
 NEAR_MISS = {"nearly", "almost", "narrowly", "barely"}   # 'does it nearly hit the bus?' asks whether it does not
 PATH_SHAPES = {"straight", "circle", "circles", "circular", "curve", "curves", "curved", "curving", "zigzag", "zigzags",
-               "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving"}
+               "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving", "lap", "laps",
+               "circuit", "circuits", "route", "routes"}
 TAKING = {"take", "takes", "took", "taking", "taken", "lift", "lifts", "lifted", "lifting"}   # '... off': a take-off
 
 
@@ -1725,7 +1751,8 @@ def speed_measure(words: list[str]) -> str:
         next((w for w in words if w in CHANGES and nouns & set(words)), None) or \
         next((f"{w} speed" for k, w in enumerate(words) if w in REACHING and nouns & set(words[:k])
               and words[:1] in (["what"], ["which"])), None) or \
-        next((f"{a} {b}" for a, b in zip(words, words[1:]) if a in DEGREES and b in COMPARISONS), None)
+        next((f"{a} {b}" for a, b in zip(words, words[1:]) if a in DEGREES and b in COMPARISONS), None) or \
+        next((f"{a} {b}" for a, b in zip(words, words[1:]) if a in nouns and b in ("limit", "limits")), None)
     if said is None:
         return ""
     return (f"the question asks a measure of speed ('{said}'), which no question here asks: ask whether a vehicle is "
@@ -1934,7 +1961,8 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     if OPS[operation(program[-1])].output is not bool:
         return ""
     head = _head(words)
-    if head[:1] and head[0] in WHO:
+    if head[:1] and head[0] in WHO and not OBJECT_WORDS.intersection(words[words.index("or"):] if "or" in words
+                                                                    else []):   # not 'who is faster: X or Y?'
         return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
                 "the vehicle")
     how = next((words[k + 1] for k in range(len(words) - 1) if words[k] == "how"
