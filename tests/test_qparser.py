@@ -890,8 +890,24 @@ def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_ar
              "Are the red sedan and the blue bus in a queue?", "Is the red sedan breaking the speed limit?",
              "Does the cyan jet stall?"]
     assert_refused(parser, texts)
+    assert_refused(parser, ["Would you recommend the blue bus?", "What physics engine made this video?",
+                            "Is gravity acting on the gray jet?", "Does the yellow bus absorb the impact?"])
     who = parser.analyse_batch(["Who is faster at the start: the purple sedan or the gray jet?"])[0]
     assert who.program and who.program[-1] == "faster_velocity"
+
+
+def test_a_hedge_is_a_preamble_but_a_preamble_that_says_when_stays():
+    assert framing_dropped(tokenize("if you had to guess, do the bus and the truck collide?"))[0] == \
+        tokenize("do the bus and the truck collide?")
+    assert framing_dropped(tokenize("considering the video, and looking closely, is the bus fast?"))[0] == \
+        tokenize("is the bus fast?")
+    assert framing_dropped(tokenize("thinking about the moment they collide, is the bus faster?"))[1] == ()
+    assert framing_dropped(tokenize("if the bus had been parked, would it hit the truck?"))[1] == ()
+    parser = QuestionParser.load()
+    guess, when = parser.analyse_batch([
+        "If you had to guess, do the blue bus and the green truck collide at any point in the video?",
+        "Thinking only about the moment they collide, is the yellow bus faster than the brown sedan?"])
+    assert guess.program[0] == "Events" and when.program[-3:] == ["unique", "get_frame", "faster_velocity"]
 
 
 def test_two_changes_the_video_otherwise_and_other_comparisons_are_refused_not_the_grammars():

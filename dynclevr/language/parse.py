@@ -534,22 +534,29 @@ def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
 
 # A preamble that frames the question and asks nothing ('Thinking about the whole clip, do ...', 'Not sure about this
 # one, but is ...'): the question is what follows it ('thinking' would be WordNet's 'imagine', a counterfactual's).
-FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing"}
+FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing",
+           "based"}
+TIME_SAID = {"moment", "instant", "when", "while", "during"}   # a preamble saying when stays
 QUESTION_OPENERS = {"is", "was", "are", "were", "do", "does", "did", "will", "would", "can", "could", "has", "have",
                     "how", "what", "which", "where"}
 
 
 def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after a framing preamble that names no object (its 'it' would lose what it stands for): a
-    participle's phrase ('looking at the video ,') or any phrase before ', but' ('not sure about this one , but'),
-    where a question follows it and the preamble sets no condition. With the preamble read as nothing, or the words
-    as they are and ()."""
-    if "," not in words:
+    participle's phrase, of one or more commas ('looking at the video ,'), a hedge ('if you had to guess ,'), or any
+    phrase before ', but' ('not sure about this one , but'), where a question follows it and the preamble sets no
+    condition and no time ('thinking only about the moment they collide ,' says when). With the preamble read as
+    nothing, or the words as they are and ()."""
+    k = next((k for k, w in enumerate(words) if w == "," and words[k + 1 + (words[k + 1:k + 2] == ["but"]):][:1]
+              and words[k + 1 + (words[k + 1:k + 2] == ["but"])] in QUESTION_OPENERS), None)
+    if k is None:
         return words, ()
-    k = words.index(",")
     main = words[k + 1 + (words[k + 1:k + 2] == ["but"]):]
-    framed = (words[0] in FRAMING or words[k + 1:k + 2] == ["but"]) and not OBJECT_WORDS.intersection(words[:k])
-    if not framed or main[:1] == [] or main[0] not in QUESTION_OPENERS or CONDITION_WORDS.intersection(words[:k]):
+    hedge = words[:2] in (["if", "you"], ["if", "i"])   # 'if you had to guess': no counterfactual's condition
+    framed = (words[0] in FRAMING or hedge or words[k + 1:k + 2] == ["but"]) and \
+        not OBJECT_WORDS.intersection(words[:k])
+    if not framed or (CONDITION_WORDS.intersection(words[:k]) and not hedge) or asks_impact(words[:k]) or \
+            TIME_SAID.intersection(words[:k]):
         return words, ()
     return main, ((" ".join(words[:k]), "nothing, a preamble"),)
 
@@ -1270,6 +1277,17 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if arranged:
         return (f"the question asks how vehicles are arranged ('{arranged}'), which no question here asks (they ask "
                 "how each moves and what it hits)")
+    opinion = next((w for k, w in enumerate(said) if w in OPINION
+                    and said[k - 2:k] not in (["in", "your"], ["in", "my"])), None)   # 'in your opinion': a hedge
+    if opinion:
+        return f"the question asks an opinion ('{opinion}'), which no question here asks (they ask what happens)"
+    making = next((w for w in said if w in MAKING), None)
+    if making:
+        return f"the question asks how the video was made ('{making}'), which no question here asks"
+    quantity = next((w for w in said if w in QUANTITIES), None)
+    if quantity:
+        return (f"the question asks about a physical quantity ('{quantity}'), which no question here asks (they ask "
+                "speed classes, directions, colours, types and collisions)")
     stall = next((w for w in said if w in STALLING), None)
     if stall:
         return f"the question asks whether a vehicle stalls ('{stall}'), which no question here asks"
@@ -1441,6 +1459,14 @@ TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted",
 ARRANGEMENT = {"queue", "queues", "queued", "queueing", "queuing", "convoy", "convoys", "formation", "traffic", "jam",
                "lined"}
 STALLING = {"stall", "stalls", "stalled", "stalling"}
+# an opinion of a vehicle ('would you recommend the bus?' was read as whether it collides), how the video was made
+# ('what physics engine made this video?' as the accelerating vehicle's colour), a physical quantity ('is gravity
+# acting on the jet?' as a collision)
+OPINION = {"opinion", "opinions", "recommend", "recommended", "designed", "design", "favourite", "favorite", "prefer",
+           "ugly", "beautiful", "cool", "safe", "dangerous", "reckless", "recklessly", "nervous", "quality"}
+MAKING = {"physics", "simulator", "simulation", "simulated", "renderer", "rendered", "rendering", "generated"}
+QUANTITIES = {"gravity", "force", "forces", "energy", "momentum", "friction", "inertia", "torque", "pressure",
+              "elastic", "inelastic", "bouncy", "bounciness", "restitution"}
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
@@ -1620,7 +1646,8 @@ def several_asked(words: list[str]) -> str:
 CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
 # how a collision went ('is the collision violent?' was read as whether there is one)
 COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
-                    "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic"}
+                    "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic", "absorb",
+                    "absorbs", "absorbed", "absorbing"}
 TRAVELLED = MOTION_WORDS | {"travel", "travels", "travelled", "traveled", "go", "goes", "went", "drive", "drives",
                             "drove"}
 CARRYING = {"carry", "carries", "carried", "carrying", "cargo", "load", "loaded", "tow", "tows", "towed", "towing"}
