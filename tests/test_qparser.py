@@ -16,6 +16,7 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError
 from dynclevr.config import Config, ConfigError
 from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
@@ -33,8 +34,8 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
                                      synonyms, tail_as_question, time_clause_last, time_unasked, video_end_as_said,
                                      well_formed)
-from dynclevr.language.references import (EVERYDAY_NAMES, abstract_program, catalogue_names, concrete_program,
-                                          corefer, delexicalise, description_as_said)
+from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
+                                          concrete_program, corefer, delexicalise, description_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -228,6 +229,13 @@ def test_the_names_people_give_the_vehicles_are_read_as_the_catalogues():
     for said in ("is the tandem bike moving up in the air ?", "does the red sedan hit the bus - or the car ?",
                  "the jet , a plane , and the bike"):
         assert catalogue_names(tokenize(said)) == (tokenize(said), ()), said
+    # a shade that is one catalogue colour reads as it; one that is not stays ('navy' is as near purple as blue)
+    for said, read in {"the crimson sedan": "the red sedan", "the forest green bus": "the green bus",
+                       "the dark blue jet": "the blue jet", "the gray-ish truck": "the gray truck",
+                       "the navy bus": "the navy bus", "the light blue jet": "the light blue jet"}.items():
+        assert catalogue_names(tokenize(said))[0] == read.split(), said
+    for shade, colour in COLOUR_SHADES.items():
+        assert colour in COLOR_NAMES and shade not in COLOR_NAMES, shade
     # every everyday name is one sub-type of the catalogue's
     for name in EVERYDAY_NAMES:
         refs = delexicalise(catalogue_names(tokenize(name))[0])[1]
@@ -858,6 +866,11 @@ def test_a_label_an_aside_a_closing_word_and_an_inverted_condition_are_read():
     assert asides_dropped(tokenize("is the bus (the blue one) fast?"))[0] == tokenize("is the bus (the blue one) fast?")
     assert asides_dropped(tokenize("the bus is parked. is it red?"))[0] == tokenize("the bus is parked. is it red?")
     assert interjections_dropped(tokenize("does it hit anything lol?"))[0] == tokenize("does it hit anything")
+    # more said between commas about a vehicle already named by colour and type is no part of the question
+    assert asides_dropped(tokenize("is the red sedan, which later hits the bus, fast?"))[0] == \
+        tokenize("is the red sedan fast?")
+    for kept in ("is the sedan, the red one, fast?", "when the red sedan hits the blue bus, is it fast, or slow?"):
+        assert asides_dropped(tokenize(kept))[0] == tokenize(kept), kept
     # a remark that names no vehicle, motion or collision goes; one that says what is asked stays
     assert asides_dropped(tokenize("there are many vehicles here. is this red bus fast?"))[0] == \
         tokenize("is the red bus fast?")
@@ -891,7 +904,15 @@ def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_ar
              "Does the cyan jet stall?"]
     assert_refused(parser, texts)
     assert_refused(parser, ["Would you recommend the blue bus?", "What physics engine made this video?",
-                            "Is gravity acting on the gray jet?", "Does the yellow bus absorb the impact?"])
+                            "Is gravity acting on the gray jet?", "Does the yellow bus absorb the impact?",
+                            "Was the collision between the red sedan and the blue bus avoidable?",
+                            "Track the blue bus through the video.", "Explain why the red sedan hits the blue bus.",
+                            "Does the red sedan stop moving?", "How fast is the red sedan now?",
+                            "Can you see the red sedan?", "Are you sure about the blue bus?"])
+    stops, request = parser.analyse_batch([
+        "After the video stops, are the yellow jet and the green sedan going to crash into each other?",
+        "Can you see whether the yellow tandem bike is accelerating at the start?"])
+    assert stops.program[0] == "futureEvents" and request.program[-1] == "is_accelerating"
     who = parser.analyse_batch(["Who is faster at the start: the purple sedan or the gray jet?"])[0]
     assert who.program and who.program[-1] == "faster_velocity"
 

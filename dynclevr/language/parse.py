@@ -288,9 +288,11 @@ class QuestionParser:
         # (fixing every word made 'black' 'back' and 'pink' 'pick'; 'sitting' would be 'hitting').
         # A slip of the fingers ('slolwy', 'oclor') is fixed first, in a word of any length, towards a word the
         # parser reads (known, or a synonym's, which then stands in; 'tsruck' is 'struck', not 'truck').
-        # Two words run together ('fastmoving', 'speedup') are read apart where they split one way only.
+        # Two words run together ('fastmoving', 'speedup') are read apart where they split one way only. A question's
+        # first word is no vehicle's ('Track the blue bus' was read about a truck).
         fixed = {w: slipped(w, self.readable, SPELLINGS) or run_together(w, self.readable)
-                 or OBJECT_LEXICON.closest(w) or (len(w) >= TYPO_LETTERS and self.words.closest(w)) or w
+                 or (w != words[0] and OBJECT_LEXICON.closest(w)) or (len(w) >= TYPO_LETTERS and self.words.closest(w))
+                 or w
                  for w in words if w not in self.known}
         read_as += tuple((w, k) for w, k in fixed.items() if k != w and k not in OBJECT_WORDS)
         words = [k for w in words for part in fixed.get(w, w).split() for k in (self._stand_in(part) if w in fixed
@@ -343,7 +345,7 @@ class QuestionParser:
         if alike:
             return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        if words[:1] == ["why"] or words[:2] == ["how", "come"]:
+        if "why" in said or words[:2] == ["how", "come"] or said[:1] == ["explain"]:
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
@@ -518,7 +520,29 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             continue
         out.append(words[k])
         k += 1
+    # a clause or appositive between commas after a vehicle already named by colour and type ('the red sedan , which
+    # later hits the bus ,'): it says more about a vehicle it does not pick out
+    k = 0
+    while k < len(out):
+        close = next((j for j in range(k + 2, min(k + 12, len(out))) if out[j] == ","), None) \
+            if out[k] == "," and out[k + 1:k + 2] and out[k + 1] in ASIDE_STARTS and _coloured_before(out, k) else None
+        if close and "?" not in out[k:close]:
+            read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
+            out[k:close + 1] = []
+            continue
+        k += 1
     return out, tuple(read)
+
+
+ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally"}
+
+
+def _coloured_before(words: list[str], k: int) -> bool:
+    """Whether the words before k end with a vehicle named by its colour and type ('the red sedan')."""
+    j = k
+    while j and words[j - 1] in OBJECT_WORDS and words[j - 1] not in COLOR_NAMES:
+        j -= 1
+    return j < k and j > 0 and words[j - 1] in COLOR_NAMES
 
 
 def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1288,6 +1312,15 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if quantity:
         return (f"the question asks about a physical quantity ('{quantity}'), which no question here asks (they ask "
                 "speed classes, directions, colours, types and collisions)")
+    stop = next((w for k, w in enumerate(said) if w in ("stop", "stops", "stopping") and k
+                 and said[k - 1] not in FILM_WORDS), None)   # not 'after the video stops'
+    if stop:
+        return (f"the question asks whether a vehicle comes to a stop ('{stop}'), which no question here asks (they "
+                "ask whether it is static at the start or at a collision)")
+    if said[:2] in (["are", "you"], ["were", "you"]) or any(   # not 'can you see whether ...': a request
+            said[k:k + 3] in ([a, "you", b] for a in ("can", "could", "do", "did") for b in ("see", "spot", "notice"))
+            and said[k + 3:k + 4] and said[k + 3] in DEFINITE for k in range(len(said))):
+        return "the question asks about the one answering, which no question here asks (they ask about the video)"
     stall = next((w for w in said if w in STALLING), None)
     if stall:
         return f"the question asks whether a vehicle stalls ('{stall}'), which no question here asks"
@@ -1488,7 +1521,7 @@ TAKING = {"take", "takes", "took", "taking", "taken", "lift", "lifts", "lifted",
 NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["throughout"], ["during"], ["later"], ["ever"],
              ["always"], ["eventually"], ["afterwards"], ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
              ["at", "any", "time"], ["at", "one", "point"], ["most", "of", "the", "time"], ["all", "the", "time"],
-             ["the", "whole", "time"], ["whole"], ["entire"])
+             ["the", "whole", "time"], ["whole"], ["entire"], ["now"], ["currently"], ["presently"])
 CLOCK_WORDS = {"second", "seconds", "frame", "frames", "s", "sec", "secs"}
 ORDINAL_WORDS = {"first", "1", "0", "one", "zero"}   # 'frame 1', 'the first second': the start
 
@@ -1647,7 +1680,7 @@ CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
 # how a collision went ('is the collision violent?' was read as whether there is one)
 COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
                     "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic", "absorb",
-                    "absorbs", "absorbed", "absorbing"}
+                    "absorbs", "absorbed", "absorbing", "avoidable", "unavoidable", "preventable", "inevitable"}
 TRAVELLED = MOTION_WORDS | {"travel", "travels", "travelled", "traveled", "go", "goes", "went", "drive", "drives",
                             "drove"}
 CARRYING = {"carry", "carries", "carried", "carrying", "cargo", "load", "loaded", "tow", "tows", "towed", "towing"}
@@ -1680,8 +1713,8 @@ def otherwise_compared(words: list[str], read: list[str]) -> str:
     two."""
     manner = next((w for w in words if w in COLLISION_MANNER), None)
     if manner:
-        return (f"the question asks how a collision went ('{manner}'), which no question here asks: ask whether they "
-                "collide")
+        return (f"the question asks what a collision was like ('{manner}'), which no question here asks: ask whether "
+                "they collide")
     farther = next((f"{a} {b}" for k, (a, b) in enumerate(zip(read, read[1:])) if a in TRAVELLED and (
         b in ("further", "farther", "longer") or b in ("more", "less") and not (
             read[k + 2:k + 3] and (read[k + 2].endswith("ly") or read[k + 2] in SPEED_CLASS_WORDS)))), None)

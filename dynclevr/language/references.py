@@ -34,6 +34,22 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
                   **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
+# Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a
+# margin (the second nearest at least 1.3 times as far, and within 45), and of that colour's hue by common usage.
+# 'navy', 'teal', 'silver', 'tan' and 'khaki' fail the margin, 'orange', 'pink', 'black' and 'white' are none of the
+# eight: they stay unparsed ('no object here is ...'). A shade before its colour ('forest green'), 'dark', 'bright'
+# or 'deep' before a colour, and '-ish' after it, leave the colour ('the dark blue sedan', 'the reddish bus').
+COLOUR_SHADES = {**dict.fromkeys(("crimson", "scarlet", "maroon", "burgundy", "ruby", "cherry"), "red"),
+                 **dict.fromkeys(("azure", "cobalt", "sapphire"), "blue"),
+                 **dict.fromkeys(("indigo", "violet", "magenta"), "purple"),
+                 **dict.fromkeys(("turquoise", "aqua", "aquamarine"), "cyan"),
+                 **dict.fromkeys(("charcoal", "slate"), "gray"),
+                 **dict.fromkeys(("gold", "golden", "lemon", "mustard"), "yellow"),
+                 **dict.fromkeys(("chocolate", "bronze"), "brown"), "forest": "green"}
+_SHADES = {(said, colour) for shade, colour in COLOUR_SHADES.items() for said in ((shade,), (shade, colour))} | \
+    {((tone, c), c) for tone in ("dark", "bright", "deep") for c in COLOR_NAMES} | \
+    {(ish, c) for c in COLOR_NAMES for ish in ((c + "ish",), (c, "-", "ish"))} | \
+    {(("reddish",), "red"), (("bluish",), "blue"), (("purplish",), "purple"), (("greyish",), "gray")}
 # A category as people say it, for a sub-type said with its category ('the fighter plane', 'the sedan car').
 CATEGORY_SAID = {"aeroplane": ("aeroplane", "plane", "aircraft"), "bicycle": ("bicycle", "bike"),
                  "bus": ("bus", "coach"), "car": ("car", "automobile"), "motorbike": ("motorbike",)}
@@ -51,8 +67,8 @@ def _written(name: str) -> set[tuple[str, ...]]:
 _EVERYDAY = [(w, tuple(said.split())) for w, said in sorted(
     {(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
                                   *EVERYDAY_NAMES.items()] for w in _written(name)}
-    | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]},
-    key=lambda kv: (-len(kv[0]), kv))]
+    | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]}
+    | _SHADES, key=lambda kv: (-len(kv[0]), kv))]
 
 
 def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -74,9 +90,9 @@ def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str
 
 
 def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """['the', 'dirt', '-', 'bike'] -> (['the', 'dirtbike'], (('dirt-bike', 'dirtbike'),)): every vehicle name
-    of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, or a sub-type said with its category, as the
-    catalogue's name; with the names read so."""
+    """['the', 'crimson', 'dirt', '-', 'bike'] -> (['the', 'red', 'dirtbike'], (('crimson', 'red'), ('dirt-bike',
+    'dirtbike'))): every vehicle name of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, a sub-type
+    said with its category, and every shade of COLOUR_SHADES, as the catalogue's name; with the names read so."""
     return phrases_as_said(words, _EVERYDAY)
 
 
