@@ -1268,7 +1268,7 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
     assert said.reordered == ""
     # `ask` shows the second mention's reading among its evidence, and only a merged mention
     said = parser.analyse_batch(["When the red sedan hits the blue bus, is it going slower than the bus?",
-                                 "Does the red sedan hit the bus before the sedan stops, and the school bus?"])
+                                 "Does the red sedan hit the bus before the sedan is parked, and the school bus?"])
     assert said[0].read_as == (("bus", "blue bus"),)
     assert ("sedan", "red sedan") in said[1].read_as and not any(a == b for a, b in said[1].read_as)
 

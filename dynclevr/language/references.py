@@ -36,12 +36,13 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a
 # margin (the second nearest at least 1.3 times as far, and within 45), and of that colour's hue by common usage.
-# 'navy', 'teal', 'silver', 'tan' and 'khaki' fail the margin, 'orange', 'pink', 'black' and 'white' are none of the
-# eight: they stay unparsed ('no object here is ...'). A shade before its colour ('forest green'), 'dark', 'bright'
-# or 'deep' before a colour, and '-ish' after it, leave the colour ('the dark blue sedan', 'the reddish bus').
+# 'navy', 'teal', 'silver', 'tan' and 'khaki' fail the margin, 'magenta' is pink or red as often as purple by usage,
+# and 'orange', 'pink', 'black' and 'white' are none of the eight: they stay unparsed ('no object here is ...'). A
+# shade before its colour ('forest green'), 'dark', 'bright' or 'deep' before a colour, and '-ish' after it, leave
+# the colour ('the dark blue sedan', 'the reddish bus').
 COLOUR_SHADES = {**dict.fromkeys(("crimson", "scarlet", "maroon", "burgundy", "ruby", "cherry"), "red"),
                  **dict.fromkeys(("azure", "cobalt", "sapphire"), "blue"),
-                 **dict.fromkeys(("indigo", "violet", "magenta"), "purple"),
+                 **dict.fromkeys(("indigo", "violet"), "purple"),
                  **dict.fromkeys(("turquoise", "aqua", "aquamarine"), "cyan"),
                  **dict.fromkeys(("charcoal", "slate"), "gray"),
                  **dict.fromkeys(("gold", "golden", "lemon", "mustard"), "yellow"),
