@@ -908,7 +908,12 @@ def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_ar
                             "Was the collision between the red sedan and the blue bus avoidable?",
                             "Track the blue bus through the video.", "Explain why the red sedan hits the blue bus.",
                             "Does the red sedan stop moving?", "How fast is the red sedan now?",
-                            "Can you see the red sedan?", "Are you sure about the blue bus?"])
+                            "Can you see the red sedan?", "Are you sure about the blue bus?",
+                            "Does the red sedan cut off the blue bus?", "Does the blue bus tailgate the red sedan?",
+                            "Is the red sedan drifting at the start?", "Does the red sedan hit the blue bus at an angle?",
+                            "Does the red sedan cross the path of the blue bus?"])
+    drifting = parser.analyse_batch(["Is the gray jet drifting in the air at the start?"])[0]
+    assert drifting.program and drifting.program[-1] == "is_floating"
     stops, request = parser.analyse_batch([
         "After the video stops, are the yellow jet and the green sedan going to crash into each other?",
         "Can you see whether the yellow tandem bike is accelerating at the start?"])

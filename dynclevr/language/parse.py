@@ -1245,7 +1245,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
     relative = next((w for k, w in enumerate(said) if w in RELATIVE_MOTION | PASSING and
-                     said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None)
+                     said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None) or \
+        next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in ("cut", "cuts", "cutting") and b in ("off", "in")),
+             None)   # 'does it cut off the bus?'
     if relative:
         return (f"the question asks how a vehicle moves relative to another ('{relative}'), which no question here "
                 "asks: ask whether it is faster, or whether they collide")
@@ -1284,8 +1286,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if landing:     # ... but 'had it never touched the ground' is a counterfactual's floating
         return ("the question asks whether a vehicle lands or hits the ground, which no question here asks (they ask "
                 "whether a plane is floating at the start)")
-    turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])), None) \
-        or next((w for w in said if w in LANES), None)
+    turn = next((w for k, w in enumerate(said) if w in TURNING and said[k + 1:k + 2] not in (["on"], ["off"])
+                 and not (w.startswith("drift") and {"air", "sky"} & set(said[k + 1:k + 5]))), None) \
+        or next((w for w in said if w in LANES), None)   # 'drifting in the air' floats
     if turn and not ENGINE_WORDS & set(said):
         return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
                 "way it is moving)")
@@ -1466,7 +1469,7 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
 TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
            "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning",
-           "spun"}
+           "spun", "drift", "drifts", "drifting", "drifted", "barrel", "nosedive", "nosedives", "nosediving"}
 # how a vehicle lies ('is the motorbike upright?' was read as static, 'has it toppled over?' as a collision)
 POSE = {"upright", "upside", "overturned", "overturn", "overturns", "toppled", "topple", "topples", "tipped", "tip",
         "tips", "capsized", "flipped", "flip", "flips", "flipping", "tilted", "tilting", "leaning"}
@@ -1505,13 +1508,14 @@ SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildin
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
 # collisions), said of a vehicle ('passes the bus'; not 'passed by', 'the frames that follow')
 RELATIVE_MOTION = {"overtake", "overtakes", "overtook", "overtaking", "chase", "chases", "chased", "chasing", "follow",
-                   "follows", "followed", "following", "pursue", "pursues", "pursued", "pursuing", "tailing"}
+                   "follows", "followed", "following", "pursue", "pursues", "pursued", "pursuing", "tailing",
+                   "tailgate", "tailgates", "tailgated", "tailgating", "cross", "crosses", "crossed", "crossing"}
 PASSING = {"pass", "passes", "passing", "passed"}
 VEHICLE_SAID = OBJECT_WORDS | {"it", "another", "vehicle", "object", "one", "thing"}
 NEAR_MISS = {"nearly", "almost", "narrowly", "barely"}   # 'does it nearly hit the bus?' asks whether it does not
 PATH_SHAPES = {"straight", "circle", "circles", "circular", "curve", "curves", "curved", "curving", "zigzag", "zigzags",
                "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving", "lap", "laps",
-               "circuit", "circuits", "route", "routes"}
+               "circuit", "circuits", "route", "routes", "path", "paths"}
 TAKING = {"take", "takes", "took", "taking", "taken", "lift", "lifts", "lifted", "lifting"}   # '... off': a take-off
 
 
@@ -1680,7 +1684,8 @@ CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
 # how a collision went ('is the collision violent?' was read as whether there is one)
 COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
                     "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic", "absorb",
-                    "absorbs", "absorbed", "absorbing", "avoidable", "unavoidable", "preventable", "inevitable"}
+                    "absorbs", "absorbed", "absorbing", "avoidable", "unavoidable", "preventable", "inevitable",
+                    "angle", "angled", "glancing"}
 TRAVELLED = MOTION_WORDS | {"travel", "travels", "travelled", "traveled", "go", "goes", "went", "drive", "drives",
                             "drove"}
 CARRYING = {"carry", "carries", "carried", "carrying", "cargo", "load", "loaded", "tow", "tows", "towed", "towing"}
