@@ -1292,29 +1292,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if turn and not ENGINE_WORDS & set(said):
         return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
                 "way it is moving)")
-    person = next((w for w in said if w in PEOPLE), None)
-    if person:
-        return (f"the question asks about a person ('{person}'), and the videos show only vehicles (questions ask "
-                "how they move and what they hit)")
-    picture = next((w for w in said if w in PICTURE), None)
-    if picture:
-        return (f"the question asks about the picture ('{picture}'), not the vehicles (questions ask how they move "
-                "and what they hit)")
-    arranged = next((w for w in said if w in ARRANGEMENT), None)
-    if arranged:
-        return (f"the question asks how vehicles are arranged ('{arranged}'), which no question here asks (they ask "
-                "how each moves and what it hits)")
+    kind = next((why.format(w) for words_of_kind, why in NO_FAMILY_WORDS for w in said if w in words_of_kind), None)
+    if kind:
+        return kind
     opinion = next((w for k, w in enumerate(said) if w in OPINION
                     and said[k - 2:k] not in (["in", "your"], ["in", "my"])), None)   # 'in your opinion': a hedge
     if opinion:
         return f"the question asks an opinion ('{opinion}'), which no question here asks (they ask what happens)"
-    making = next((w for w in said if w in MAKING), None)
-    if making:
-        return f"the question asks how the video was made ('{making}'), which no question here asks"
-    quantity = next((w for w in said if w in QUANTITIES), None)
-    if quantity:
-        return (f"the question asks about a physical quantity ('{quantity}'), which no question here asks (they ask "
-                "speed classes, directions, colours, types and collisions)")
     stop = next((w for k, w in enumerate(said) if w in ("stop", "stops", "stopping") and k
                  and said[k - 1] not in FILM_WORDS), None)   # not 'after the video stops'
     if stop:
@@ -1324,9 +1308,6 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             said[k:k + 3] in ([a, "you", b] for a in ("can", "could", "do", "did") for b in ("see", "spot", "notice"))
             and said[k + 3:k + 4] and said[k + 3] in DEFINITE for k in range(len(said))):
         return "the question asks about the one answering, which no question here asks (they ask about the video)"
-    stall = next((w for w in said if w in STALLING), None)
-    if stall:
-        return f"the question asks whether a vehicle stalls ('{stall}'), which no question here asks"
     intent = next((w for w in said if w in INTENT), None) or next(
         (w for k, w in enumerate(said) if w in TRYING and k and said[k - 1] in VEHICLE_SAID), None)
     if intent:
@@ -1503,6 +1484,19 @@ OPINION = {"opinion", "opinions", "recommend", "recommended", "designed", "desig
 MAKING = {"physics", "simulator", "simulation", "simulated", "renderer", "rendered", "rendering", "generated"}
 QUANTITIES = {"gravity", "force", "forces", "energy", "momentum", "friction", "inertia", "torque", "pressure",
               "elastic", "inelastic", "bouncy", "bounciness", "restitution"}
+# each word of a kind no family asks, and why it is refused ('{}': the word)
+NO_FAMILY_WORDS = (
+    (PEOPLE, "the question asks about a person ('{}'), and the videos show only vehicles (questions ask how they move "
+             "and what they hit)"),
+    (PICTURE, "the question asks about the picture ('{}'), not the vehicles (questions ask how they move and what "
+              "they hit)"),
+    (ARRANGEMENT, "the question asks how vehicles are arranged ('{}'), which no question here asks (they ask how each "
+                  "moves and what it hits)"),
+    (MAKING, "the question asks how the video was made ('{}'), which no question here asks"),
+    (QUANTITIES, "the question asks about a physical quantity ('{}'), which no question here asks (they ask speed "
+                 "classes, directions, colours, types and collisions)"),
+    (STALLING, "the question asks whether a vehicle stalls ('{}'), which no question here asks"),
+)
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
