@@ -1675,7 +1675,8 @@ def several_asked(words: list[str]) -> str:
 
 
 CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
-# how a collision went ('is the collision violent?' was read as whether there is one)
+# what a collision was like ('is the collision violent?', 'avoidable', 'at an angle' were read as whether there
+# is one)
 COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
                     "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic", "absorb",
                     "absorbs", "absorbed", "absorbing", "avoidable", "unavoidable", "preventable", "inevitable",
@@ -1707,8 +1708,8 @@ def imagined_otherwise(words: list[str]) -> str:
 
 
 def otherwise_compared(words: list[str], read: list[str]) -> str:
-    """A question (`words`; `read`: its typos fixed) of some other comparison or manner ('' when none): how a
-    collision went, how far vehicles move, a vehicle against itself at another time, what it carries, either of
+    """A question (`words`; `read`: its typos fixed) of some other comparison or manner ('' when none): what a
+    collision was like, how far vehicles move, a vehicle against itself at another time, what it carries, either of
     two."""
     manner = next((w for w in words if w in COLLISION_MANNER), None)
     if manner:
