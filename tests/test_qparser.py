@@ -259,6 +259,11 @@ def test_a_shorter_second_mention_is_the_same_object():
         "Is the airliner fast when the blue airliner and the green scooter collide?")))
     assert refs == [("blue", "airliner"), ("green", "scooter")]
     assert [w for w in words if w.startswith("<")] == ["<obj1>", "<obj1>", "<obj2>"]
+    # Joined by 'and' or 'or', the question itself tells them apart: the bus is not the school bus.
+    for text in ("Does the red sedan hit the bus and the sedan, and the school bus?",
+                 "Does the red sedan hit the bus or the school bus?"):
+        assert {("bus",), ("school_bus",)} <= set(corefer(*delexicalise(tokenize(text)))[1]), text
+    assert QuestionParser.load().parse("Does the red sedan hit the bus and the school bus?") is None
 
 
 def test_a_clause_of_time_said_first_is_also_read_last():

@@ -194,6 +194,27 @@ def _generalises(short: Ref, full: Ref) -> bool:
     return set(short) <= said
 
 
+_JOINING = {",", "and", "or", "nor", "the", "a", "an", "both", "either", "neither"}
+
+
+def _coordinated(words: list[str]) -> set[tuple[int, int]]:
+    """Pairs of references (0-based) in one list joined by 'and', 'or' or 'nor' ('A , B and C')."""
+    pairs, group, joined, between = set(), [], False, []
+    for w in words + ["."]:
+        m = _PLACEHOLDER.fullmatch(w)
+        if m and (not group or all(b in _JOINING for b in between)):
+            joined |= bool(group) and bool({"and", "or", "nor"} & set(between))
+            group.append(int(m.group(1)) - 1)
+            between = []
+        elif m or w not in _JOINING:
+            if joined:
+                pairs |= {(a, b) for a in group for b in group if a != b}
+            group, joined, between = ([int(m.group(1)) - 1], False, []) if m else ([], False, [])
+        else:
+            between.append(w)
+    return pairs
+
+
 def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
     """A shorter mention of an object as the placeholder of its fuller one, said before or after it: 'When the cyan
     mountain bike hits the yellow double bus, is it slower than *the bus*?', 'Is *the airliner* fast when the blue
@@ -201,8 +222,11 @@ def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
     reference that generalises another can only be that object again (were it another, the fuller one would not be
     unique). Only where exactly one other reference fits; the placeholders are then numbered again in order of first
     mention, as training numbers them. Parsing only: the training questions' random objects need not be unique, so
-    training scores them without it (`QuestionParser.corefer`)."""
-    fuller = {k: [j for j, r in enumerate(refs) if r != ref and _generalises(ref, r)] for k, ref in enumerate(refs)}
+    training scores them without it (`QuestionParser.corefer`). Mentions joined by 'and' or 'or' ('the bus and the
+    school bus') are told apart by the question itself, so neither is read as the other."""
+    apart = _coordinated(words)
+    fuller = {k: [j for j, r in enumerate(refs) if r != ref and _generalises(ref, r) and (k, j) not in apart]
+              for k, ref in enumerate(refs)}
     root = list(range(len(refs)))
     for k, js in fuller.items():
         if len(js) == 1:
