@@ -27,6 +27,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
+                                     condition_subject, condition_subject_first, floating_plane_as_vehicle,
                                      impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
@@ -1390,3 +1391,30 @@ def test_bad_synonym_lexicon_is_one_clear_error(tmp_path):
         synonyms(bad)
     with pytest.raises(DynclevrError, match="lexicon .* is unreadable .* restore it"):
         synonyms(tmp_path / "missing.txt")
+
+
+def test_a_counterfactual_changes_the_vehicle_its_condition_names():
+    """'Would the car have hit the bus if the bus had been parked?' changes the bus, wherever the condition stands; a
+    pronoun in the condition leaves the decoder's reading."""
+    words = delexicalise(tokenize("Would the red car have hit the bus if the bus had been static?"))[0]
+    assert condition_subject(words) == "<obj2>"
+    program = ["<obj1>", "Counterfactual_static", "<obj1>", "filter_collision", "<obj2>", "filter_collision", "exist"]
+    assert condition_subject_first(words, program) == \
+        ["<obj2>", "Counterfactual_static", "<obj2>", "filter_collision", "<obj1>", "filter_collision", "exist"]
+    for text in ("Would the red car have hit the bus if it had been static?",
+                 "If the red car had been static, would it have hit the bus?",
+                 "Would the red car have hit the bus had the red car been parked?"):
+        words = delexicalise(tokenize(text))[0]
+        assert condition_subject_first(words, program) == program, text
+    parser = QuestionParser.load()
+    assert parser.parse("Would the red car have collided with the bus had the bus been moving fast at the start?") \
+        == parser.parse("If the bus had been moving fast at the start, would it have collided with the red car?")
+
+
+def test_the_floating_plane_is_the_floating_vehicle():
+    """Only aeroplanes float: 'the floating plane' says no more than 'the floating vehicle'."""
+    assert floating_plane_as_vehicle(tokenize("What colour is the floating plane?"))[0] == \
+        tokenize("What colour is the floating vehicle?")
+    assert floating_plane_as_vehicle(tokenize("Is the red floating plane fast?"))[1] == ()
+    assert QuestionParser.load().parse("What is the colour of the floating aeroplane?") == \
+        "Objects start filter_floating unique query_attributes[color]".split()

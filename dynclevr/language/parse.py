@@ -261,6 +261,7 @@ class QuestionParser:
         words, idioms = idioms_as_said(words)
         words, described = description_as_said(words)
         words, typed = type_as_said(words)
+        words, afloat = floating_plane_as_vehicle(words)
         words, end = video_end_as_said(words)
         words, framing = framing_dropped(words)
         words, attended = attention_as_subject(words)
@@ -274,7 +275,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + labelled + opened + idioms + described + typed + end + framing + attended + request
+        request = (named + labelled + opened + idioms + described + typed + afloat + end + framing + attended + request
                    + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
@@ -420,6 +421,8 @@ class QuestionParser:
         reverse = reversed_reading(words, abstract) or named_attribute(words, abstract)
         if reverse:
             return Parse(None, reverse, p)
+        abstract = condition_subject_first(words, abstract)
+        tokens = concrete_program(abstract, refs)
         # 'What type of plane is floating?': only aeroplanes float, so a bare 'plane' there is the object's noun
         # ('vehicle'), not an object the program leaves out
         unused = [" ".join(refs[k - 1]).replace("_", " ") for k in range(1, len(refs) + 1)
@@ -553,6 +556,20 @@ def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
         if words[k - 1] in ASKING and words[k] in ("kind", "sort") and words[k + 1] == "of" and \
                 words[k + 2] in OBJECT_WORDS | NOUNS_SAID and words[k + 2] not in COLOR_NAMES:
             return words[:k] + ["type"] + words[k + 1:], ((f"{words[k]} of", "type of"),)
+    return words, ()
+
+
+AFLOAT_SAID = {"floating", "hovering", "airborne", "flying"}
+PLANE_SAID = {"plane", "aeroplane", "airplane", "aircraft"}
+
+
+def floating_plane_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the floating plane' -> 'the floating vehicle': only aeroplanes float, so the noun says nothing more, and the
+    decoder read a bare plane after 'floating' as a second object ('what colour is the floating plane?' as a collision
+    partner's). With the words read so, or the words as they are and ()."""
+    for k in range(2, len(words)):
+        if words[k] in PLANE_SAID and words[k - 1] in AFLOAT_SAID and words[k - 2] in DETERMINERS:
+            return words[:k] + ["vehicle"] + words[k + 1:], ((f"{words[k - 1]} {words[k]}", f"{words[k - 1]} vehicle"),)
     return words, ()
 
 
@@ -1373,6 +1390,39 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
                 return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
                         "way round and take the opposite answer")
     return ""
+
+
+# Words that open a counterfactual's condition, its vehicle said within a few words after them ('if the bus had been
+# parked', 'suppose that the bus', 'in a world where the bus'); 'had' only as 'had the bus been'
+CONDITION_MARKERS = {"if", "suppose", "supposing", "assuming", "assume", "imagine", "pretend", "where", "had"}
+
+
+def condition_subject(words: list[str]) -> str | None:
+    """The placeholder of the vehicle a counterfactual's condition changes, wherever the condition stands, or None
+    where it says none (a pronoun: 'if it had been parked')."""
+    for k, w in enumerate(words):
+        if w not in CONDITION_MARKERS:
+            continue
+        for j in range(k + 1, min(k + 4, len(words))):
+            if words[j].startswith("<obj"):
+                if w != "had" or words[j + 1:j + 2] in (["been"], ["not"], ["never"], ["instead"]):
+                    return words[j]
+                break
+            if words[j] not in ("the", "a", "an", "that", "only", "we", "say"):
+                break
+    return None
+
+
+def condition_subject_first(words: list[str], abstract: list[str]) -> list[str]:
+    """A counterfactual program whose changed vehicle is the one the condition names. 'Would the car have hit the bus
+    if the bus had been parked?' was read as the car parked: the decoder takes the main clause's subject. A
+    collision is one event of the pair, so the program with the two vehicles swapped asks the question."""
+    if len(abstract) != 7 or not abstract[1].startswith("Counterfactual"):
+        return abstract
+    x, y = abstract[0], abstract[4]
+    if condition_subject(words) != y or x == y:
+        return abstract
+    return [y, abstract[1], y, abstract[3], x, *abstract[5:]]
 
 
 def named_attribute(words: list[str], abstract: list[str]) -> str:
