@@ -28,6 +28,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
+                                     inserted_time_last,
                                      impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
@@ -1418,3 +1419,26 @@ def test_the_floating_plane_is_the_floating_vehicle():
     assert floating_plane_as_vehicle(tokenize("Is the red floating plane fast?"))[1] == ()
     assert QuestionParser.load().parse("What is the colour of the floating aeroplane?") == \
         "Objects start filter_floating unique query_attributes[color]".split()
+
+
+def test_a_time_between_commas_after_the_subject_is_said_last():
+    assert inserted_time_last(tokenize("Does the red biplane, at any point, collide with the green sedan?"))[0] == \
+        tokenize("Does the red biplane collide with the green sedan at any point?")
+    assert inserted_time_last(tokenize("Is the red car, when it hits the bus, moving fast?"))[0] == \
+        tokenize("Is the red car moving fast when it hits the bus?")
+    # a clause of time that ends the question, or one a question follows, stays where it is
+    for text in ("Is the red car fast, at the start?", "When the red car hits the bus, is it fast?",
+                 "The red car, at the start, is it fast?"):
+        assert inserted_time_last(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_cause_or_what_happens_is_not_asked():
+    """'because' asks why ('did it hit the bus because it was fast?' was read as whether it was fast); 'what would
+    happen if ...' asks what happens, unless a question follows it."""
+    parser = QuestionParser.load()
+    why, happens, asked = parser.analyse_batch([
+        "Did the red car hit the bus because it was fast?", "What would happen if the red car were static?",
+        "What would happen if the red car had been static: would it have hit the bus?"])
+    assert why.program is None and "why" in why.reason
+    assert happens.program is None and "what happens" in happens.reason
+    assert asked.program is not None and "Counterfactual_static" in asked.program

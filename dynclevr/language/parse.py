@@ -239,6 +239,7 @@ class QuestionParser:
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
+            or what_happens(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
@@ -257,6 +258,7 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, named = catalogue_names(words)
         words, labelled = asides_dropped(words)
+        words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)
         words, described = description_as_said(words)
@@ -275,7 +277,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + labelled + opened + idioms + described + typed + afloat + end + framing + attended + request
+        request = (named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended + request
                    + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
@@ -346,7 +348,7 @@ class QuestionParser:
         if alike:
             return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        if "why" in said or words[:2] == ["how", "come"] or said[:1] == ["explain"]:
+        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or said[:1] == ["explain"]:
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
@@ -538,6 +540,26 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 
 
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally"}
+# A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
+# the red car , when it hits the bus , fast ?'): the grammar says it last
+INSERTED_TIMES = {"at", "in", "during", "ever", "right", "initially", "once", "when", "while", "after", "before",
+                  "later", "from"}
+
+
+def inserted_time_last(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question with a time between commas after its first vehicle put last ('does the red biplane , at any
+    point , collide with the green sedan ?' -> '... collide with the green sedan at any point ?'), where the sentence
+    goes on after it. With the words read so, or the words as they are and ()."""
+    for k in range(1, len(words) - 2):
+        if words[k] != "," or words[k - 1] not in OBJECT_WORDS or words[k + 1] not in INSERTED_TIMES:
+            continue
+        close = next((j for j in range(k + 2, min(k + 10, len(words))) if words[j] in (",", "?", ".")), None)
+        if close is None or words[close] != "," or close + 1 == len(words) or words[close + 1] in QUESTION_OPENERS:
+            return words, ()
+        end = len(words) - (words[-1] in ("?", "."))
+        moved = words[:k] + words[close + 1:end] + words[k + 1:close] + words[end:]
+        return moved, ((" ".join(words[k:close + 1]), f"'{' '.join(words[k + 1:close])}' said last"),)
+    return words, ()
 
 
 def _coloured_before(words: list[str], k: int) -> bool:
@@ -1667,6 +1689,8 @@ def comparison_imagined(words: list[str], program: list[str]) -> str:
             "static, slow or fast, or accelerating")
 
 
+# a cause asked ('did it hit the bus because it was fast?' was read as whether it was fast)
+CAUSES = {"because", "due", "reason", "reasons"}
 PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
 # A vehicle ranked among all ('the fastest', 'moves the most', 'is the wagon the first vehicle to collide?'): no
 # program compares more than two; 'the first vehicle it hits' is a partner's question, and stays
@@ -2091,7 +2115,20 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     return ""
 
 
+def what_happens(words: list[str], program: list[str]) -> str:
+    """Why a yes/no reading is not the question's ('' when it is): the question (`words`: typos fixed) asks what
+    happens and asks no question after it ('what would happen if it were static?' was read as whether it is)."""
+    head = _head(words)
+    if OPS[operation(program[-1])].output is not bool or head[:1] != ["what"] or \
+            not HAPPENING.intersection(head) - {"if"} or \
+            CLAUSE_ENDS.intersection(words[:-1]):   # a question after it: '..., would it hit the bus?'
+        return ""
+    return ("the question asks what happens, which no question here answers: ask whether a vehicle collides, or how "
+            "it moves")
+
+
 HAPPENING = {"if", "happen", "happens", "happened", "happening", "next"}   # 'what would happen if ...: would ...?'
+CLAUSE_ENDS = {",", ":", ";", ".", "?", "-"}
 FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["from", "now"])
 
 
