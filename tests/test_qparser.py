@@ -28,7 +28,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
-                                     inserted_time_last,
+                                     impact_like, inserted_time_last,
                                      impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
@@ -946,10 +946,10 @@ def test_a_hedge_is_a_preamble_but_a_preamble_that_says_when_stays():
 def test_two_changes_the_video_otherwise_and_other_comparisons_are_refused_not_the_grammars():
     for text in ("if the sedan had been fast and the blue bus parked, would they collide?",
                  "would the sedan hit the bus if the video were longer?"):
-        assert imagined_otherwise(tokenize(text)), text
+        assert imagined_otherwise(tokenize(text), tokenize(text)), text
     for text in ("if the video kept going, would the bus hit the sedan?", "do you know if the sedan and the bus "
                  "will collide?", "if the sedan had been parked, would it and the bus collide?"):
-        assert not imagined_otherwise(tokenize(text)), text
+        assert not imagined_otherwise(tokenize(text), tokenize(text)), text
     for text in ("is the collision violent?", "does the sedan move more than the bus?", "is the truck faster than it "
                  "was at the start?", "is the truck carrying anything?", "is either the sedan or the bus fast?"):
         assert otherwise_compared(tokenize(text), tokenize(text)), text
@@ -1442,3 +1442,27 @@ def test_a_cause_or_what_happens_is_not_asked():
     assert why.program is None and "why" in why.reason
     assert happens.program is None and "what happens" in happens.reason
     assert asked.program is not None and "Counterfactual_static" in asked.program
+
+
+def test_a_counterfactual_changes_the_motion_from_the_start_only():
+    """Every intervention here sets a motion from the start: one at the end or after a collision is refused, 'the
+    whole time' and 'when the video starts' (misspelt too) are the start."""
+    for text in ("If the red car had been static at the end, would it have hit the bus?",
+                 "If the red car had been static after the collision, would it have hit the truck?",
+                 "If the red car had stopped halfway, would it have hit the bus?"):
+        assert "other than the start" in imagined_otherwise(tokenize(text), tokenize(text)), text
+    for text in ("Had the yellow bus kept still the whole time, would it have hit the blue sedan?",
+                 "If the red car had been static when the video started, would it have hit the bus?"):
+        assert not imagined_otherwise(tokenize(text), tokenize(text)), text
+    said = tokenize("Would the red car have hit the bus if it had been slow when the video begisn?")
+    assert not imagined_otherwise(said, [w if w != "begisn" else "begins" for w in said])
+
+
+def test_a_word_the_parser_does_not_know_may_be_an_impact_misspelt():
+    """Only then is a collision read where the question says none ('would the bus have been static too?' is no
+    collision's question; 'collied' may be one)."""
+    assert all(map(impact_like, ["collied", "crahsed", "tocuh", "colision", "smahsed"]))
+    assert not any(map(impact_like, ["too", "while", "also", "then", "both"]))
+    parser = QuestionParser.load()
+    assert parser.parse("If the red car had been static, would the bus have been static too?") is None
+    assert parser.parse("Is the red car moving fast while the bus is static?") is None

@@ -56,6 +56,7 @@ import json
 import pickle
 import re
 from dataclasses import dataclass, replace
+from difflib import SequenceMatcher
 from pathlib import Path
 
 import snowballstemmer
@@ -232,13 +233,14 @@ class QuestionParser:
                                          reordered=readings[i][k].reordered)
         chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
         # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned');
-        # a collision against the words as read, typos fixed ('colide'), where the parser knows every one of them
-        # (the decoder reads a collision in 'collied' from the rest of the question)
+        # a collision against the words as read, typos fixed ('colide'), where no word it does not know may be an
+        # impact's misspelt (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
-            or (self.known.issuperset(read) and impact_unsaid(read, c.program)) or form_unasked(said, c.program)
+            or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
+            or form_unasked(said, c.program)
             or what_happens(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
@@ -341,7 +343,7 @@ class QuestionParser:
                         "what would have if ..."), read_as, said
         ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said) or \
             quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said) or \
-            imagined_otherwise(words) or otherwise_compared(said, words)
+            imagined_otherwise(said, words) or otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -1762,20 +1764,43 @@ ITSELF = {"itself", "before", "earlier", "previously", "later", "usual", "normal
 ITSELF_THEN = {"was", "is", "had", "did", "were", "used"}   # 'than it was' (not 'than it?': its partner)
 
 
-def imagined_otherwise(words: list[str]) -> str:
-    """A counterfactual this grammar has no program for, or '': two changes at once ('if the sedan had been fast and
-    the bus parked' was read as the sedan's alone) or the video changed ('if the video were longer' as the future)."""
+def _condition_clause(words: list[str]) -> tuple[int, int]:
+    """Where a counterfactual's condition stands: from 'if' (or the opener it starts with: 'suppose', 'had') to the
+    end of its clause; (0, 0) where there is none."""
+    if not (words[:1] and words[0] in CONDITION_OPENERS or "if" in words):
+        return 0, 0
+    start = 0 if words[0] in CONDITION_OPENERS else words.index("if")
+    return start, next((k for k in range(start, len(words)) if words[k] in (",", ":", ";", ".", "would", "will", "?")),
+                       len(words))
+
+
+# A change at a time after the start ('at the end', 'halfway', 'after the collision'); 'the whole time' and 'always'
+# are from the start on, as every intervention here is
+LATER_TIMES = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["later"], ["eventually"], ["afterwards"],
+               ["at", "some", "point"], ["at", "one", "point"], ["now"])
+CLAUSE_TIMES = (["after"], ["before"], ["when"], ["once"], ["while"], ["until"])
+
+
+def imagined_otherwise(words: list[str], read: list[str]) -> str:
+    """A counterfactual this grammar has no program for, or '': a change at another time than the start ('if it had
+    been static at the end'), two changes at once ('if the sedan had been fast and the bus parked' was read as the
+    sedan's alone) or the video changed ('if the video were longer' as the future). `words` as said, `read` with
+    typos fixed ('when the video begisn' is the start)."""
     if any(w == "if" and words[k + 1] == "the" and words[k + 2] in FILM_WORDS and words[k + 3:k + 4] and
            words[k + 3] in ("were", "was", "had") for k, w in enumerate(words[:-3])):   # not 'if the video went on'
         return "the question imagines the video itself otherwise, which no question here does"
-    if not (words[:1] and words[0] in CONDITION_OPENERS or "if" in words):
+    start, end = _condition_clause(words)
+    clause = words[start:end]
+    if not {"had", "were", "been"}.intersection(clause):   # 'do you know if X and Y ...'
         return ""
-    start = 0 if words[0] in CONDITION_OPENERS else words.index("if")
-    end = next((k for k in range(start, len(words)) if words[k] in (",", ":", ";", ".", "would", "will", "?")),
-               len(words))
+    other = next((" ".join(t) for k in range(len(clause)) for t in (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
+                  if clause[k:k + len(t)] == t), None)
+    if other and not START_WORDS.intersection(clause + read[slice(*_condition_clause(read))]) and "first" not in clause:
+        return (f"the question imagines a change at a time other than the start ('{other}'), which no question here "
+                "does: each changes a vehicle's motion from the start")
     second = next((k for k in range(start, end) if words[k] == "and" and OBJECT_WORDS.intersection(words[k + 1:k + 4])),
                   None)
-    if second is None or not {"had", "were", "been"}.intersection(words[start:end]):   # 'do you know if X and Y ...'
+    if second is None:
         return ""
     return (f"the question imagines two changes at once ('and {' '.join(words[second + 1:end])}'), which no question "
             "here does: each imagines one vehicle's motion changed")
@@ -1942,6 +1967,12 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
 COLLISION_OPERATIONS = {"filter_collision", "get_all_col_partners"}
 # besides IMPACT_STEMS, the words a collision is said with: 'run into', 'drive into', 'each other'
 IMPACT_SAID = {"into", "onto", "run", "runs", "ran", "running", "other", "another"}
+
+
+def impact_like(word: str) -> bool:
+    """Whether an unknown word may be an impact's word misspelt ('collied', 'crahsed', 'tocuh'), which the decoder
+    reads a collision in from the rest of the question; 'too', 'while' are not."""
+    return any(SequenceMatcher(None, word[:len(s) + 1], s).ratio() >= 0.7 for s in IMPACT_STEMS)
 
 
 def impact_unsaid(words: list[str], program: list[str]) -> str:
@@ -2280,13 +2311,14 @@ COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "come
 IMPACT_WORDS = {"impact", "collision", "collide", "collides", "hit", "hits", "crash", "crashes", "bump", "bumps",
                 "strike", "strikes", "smash", "smashes", "slam", "slams", "contact", "meet", "meets"}
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
-                "touch", "bang", "knock", "ram", "accident", "meet")
+                "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup")
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
 END_TIMES = [[p, "the", e] for p in ("at", "by", "towards", "toward", "near") for e in ("end", "finish", "close")] + \
     [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
-START_WORDS = {"start", "starts", "beginning", "begins", "begin", "initially", "opening", "outset", "onset"}
+START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
+               "outset", "onset"}
 
 
 def clause_time(clause: list[str]) -> str | None:
