@@ -1466,3 +1466,15 @@ def test_a_word_the_parser_does_not_know_may_be_an_impact_misspelt():
     parser = QuestionParser.load()
     assert parser.parse("If the red car had been static, would the bus have been static too?") is None
     assert parser.parse("Is the red car moving fast while the bus is static?") is None
+
+
+def test_a_frame_a_vector_or_an_amount_of_acceleration_is_not_asked_but_a_colour_beside_them_is():
+    parser = QuestionParser.load()
+    frame, vector, angular, amount, colour = parser.analyse_batch([
+        "In which frame does the red car hit the bus?", "What is the red sedan's velocity vector at the start?",
+        "What is the angular velocity of the jet?", "What is the blue sedan's rate of acceleration at the start?",
+        "What is the colour of the object with a positive acceleration at the start?"])
+    assert frame.program is None and "when" in frame.reason
+    assert vector.program is None and angular.program is None and "physical quantity" in vector.reason
+    assert amount.program is None and "how much" in amount.reason
+    assert colour.program == "Objects start filter_accelerating unique query_attributes[color]".split()

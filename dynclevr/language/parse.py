@@ -1237,7 +1237,8 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             k += 1
         if k > 2 and head[k:k + 2] == ["'", "s"] and head[k + 2:k + 3]:
             asked = head[k + 2]
-    if head[:1] == ["at"] and head[1:2] and head[1] in ASKING and head[2:3]:   # 'at what height', 'at which frame'
+    if head[:1] and head[0] in ("at", "in", "on", "during") and head[1:2] and head[1] in ASKING and head[2:3]:
+        # 'at what height', 'in which frame'
         asked = head[2]
     what = f"the '{asked}'" if asked else ""
     if head[:1] == ["how"] and head[1:2] and (head[2:3] and head[2] in AUXILIARIES or head[1] in SPATIAL):
@@ -1557,7 +1558,8 @@ OPINION = {"opinion", "opinions", "recommend", "recommended", "designed", "desig
            "ugly", "beautiful", "cool", "safe", "dangerous", "reckless", "recklessly", "nervous", "quality"}
 MAKING = {"physics", "simulator", "simulation", "simulated", "renderer", "rendered", "rendering", "generated"}
 QUANTITIES = {"gravity", "force", "forces", "energy", "momentum", "friction", "inertia", "torque", "pressure",
-              "elastic", "inelastic", "bouncy", "bounciness", "restitution"}
+              "elastic", "inelastic", "bouncy", "bounciness", "restitution", "vector", "vectors", "angular",
+              "rotational", "kinetic", "mass", "weight", "weighs", "altitude", "coordinates", "coordinate"}
 # each word of a kind no family asks, and why it is refused ('{}': the word)
 NO_FAMILY_WORDS = (
     (PEOPLE, "the question asks about a person ('{}'), and the videos show only vehicles (questions ask how they move "
@@ -2101,9 +2103,12 @@ def property_unread(words: list[str], program: list[str]) -> str:
     moving in?' read as the jet's)."""
     asked, _ = _asked(words)
     head = _head(words)
-    if head[:1] and head[0] in ASKING and "acceleration" in head or head[:1] == ["how"] and head[1:2] and \
-            head[1] in SPEED_CLASS_WORDS and (any(w.startswith("accelerat") for w in head) or any(
-                head[k:k + len(a)] == a for k in range(2, len(head)) for a in ACCELERATION_SAID)):
+    # ('what colour is the vehicle with a positive acceleration?' asks a colour)
+    if head[:1] and head[0] in ASKING and "acceleration" in head and \
+            not ASKED_QUERIES.get(asked, "").startswith("query_attributes") or \
+            head[:1] == ["how"] and head[1:2] and head[1] in SPEED_CLASS_WORDS and (
+                any(w.startswith("accelerat") for w in head) or any(
+                    head[k:k + len(a)] == a for k in range(2, len(head)) for a in ACCELERATION_SAID)):
         return ("the question asks how much a vehicle accelerates, which no question here asks: ask whether it is "
                 "accelerating")
     query = program[-1] if program and program[-1].startswith("query_") else None
