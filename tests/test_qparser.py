@@ -34,7 +34,8 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
                                      several_asked, request_as_imperative, reversed_as_said, reversed_reading,
                                      speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
-                                     synonyms, tail_as_question, time_clause_last, time_unasked, video_end_as_said,
+                                     synonyms, tail_as_question, time_clause_last, time_unasked, times_joined,
+                                     video_end_as_said,
                                      well_formed)
 from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
                                           concrete_program, corefer, delexicalise, description_as_said)
@@ -1478,3 +1479,18 @@ def test_a_frame_a_vector_or_an_amount_of_acceleration_is_not_asked_but_a_colour
     assert vector.program is None and angular.program is None and "physical quantity" in vector.reason
     assert amount.program is None and "how much" in amount.reason
     assert colour.program == "Objects start filter_accelerating unique query_attributes[color]".split()
+
+
+def test_a_part_of_the_video_two_times_or_a_rank_to_move_are_not_asked():
+    """'in the last second' or 'at the end' narrows the video's collisions, 'before the video ends' is no future, 'at
+    the start and when it hits the bus' asks two times, 'the first to move' ranks: no program reads them."""
+    parser = QuestionParser.load()
+    for text, why in (("Does the red car hit the bus in the last second of the video?", "within a time"),
+                      ("Does the red car hit the bus during the second half of the video?", "within a time"),
+                      ("Will the red car and the bus collide before the video ends?", "asks about the video"),
+                      ("Is the red car fast at the start and when it hits the bus?", "two times"),
+                      ("Is the red car the first to move?", "ranks")):
+        parsed = parser.analyse_batch([text])[0]
+        assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
+    assert times_joined(tokenize("When the red car and the bus collide, is the car fast?")) == ""
+    assert parser.parse("Does the red car hit the bus at some point in the video?") is not None

@@ -341,7 +341,7 @@ class QuestionParser:
         if said[:1] and said[0] in NORMATIVE:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
-        ranked = ranking(said) or properties_joined(said) or several_asked(said) or questions_joined(said) or \
+        ranked = ranking(said) or properties_joined(said) or times_joined(said) or several_asked(said) or questions_joined(said) or \
             quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said) or \
             imagined_otherwise(said, words) or otherwise_compared(said, words)
         if ranked:
@@ -1642,16 +1642,27 @@ def collision_at_start(words: list[str], program: list[str]) -> str:
             "collide during the video or after it)")
 
 
+VIDEO_PARTS = (["early", "in"], ["late", "in"], ["later", "in"], ["halfway"], ["midway"], ["in", "the", "middle"])
+PART_ORDINALS = {"first", "last", "final", "next", "second", "latter"}
+PART_NOUNS = {"half", "part", "few", "moments", "moment"}
+
+
 def clock_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
-    within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'),
-    which no program reads."""
+    within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'), or
+    of the video's collisions within a part of it ('in the last second', 'at the end', 'in the second half'), which
+    no program reads."""
     if "start" in program:
         return ""
     # a counterfactual's condition speaks of the start ('had it been slow in the first frames', '... second')
     imagined = any(t.startswith("Counterfactual") for t in program)
     clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if b in CLOCK_WORDS and (
         a.isdigit() or a in NUMBERS or not imagined and a in ORDINAL_WORDS and not b.endswith("s"))), None)
+    if clock is None and "Events" in program:   # a part of the video ('in the last second', 'at the end')
+        clock = next((" ".join(t) for k in range(len(words)) for t in (*END_TIMES, *VIDEO_PARTS)
+                      if words[k:k + len(t)] == t), None) or next(
+            (f"{a} {b}" for a, b in zip(words, words[1:]) if a in PART_ORDINALS and b in CLOCK_WORDS | PART_NOUNS),
+            None)
     if clock is None:
         return ""
     return (f"the question asks within a time ('{clock}'), which no question here asks: collisions are asked over the "
@@ -1739,6 +1750,16 @@ def properties_joined(words: list[str]) -> str:
         if left and right and left != right:
             return (f"the question asks two things at once ('{left}' and '{right}'), which the parser reads one "
                     "question at a time: ask them apart")
+    return ""
+
+
+def times_joined(words: list[str]) -> str:
+    """Two times asked at once ('fast at the start and when it hits the bus'), or ''."""
+    for k, w in enumerate(words[:-2]):
+        if w == "and" and (words[k + 1] in ("when", "while", "once") or words[k + 1:k + 3] == ["at", "the"]) and (
+                START_WORDS.intersection(words[:k]) or "when" in words[:k]):
+            return (f"the question asks at two times at once ('and {' '.join(words[k + 1:k + 3])}'), which the parser "
+                    "reads one question at a time: ask them apart")
     return ""
 
 
@@ -1935,7 +1956,8 @@ def ranking(words: list[str]) -> str:
     said = next((w for w in words if w in SUPERLATIVES), None) or next(
         (f"{a} {b}" for a, b in zip(words, words[1:]) if a == "the" and b in ("most", "least")), None) or next(
         (" ".join(words[k - 1:k + 2]) for k in range(2, len(words) - 1) if words[k] in RANKS and words[k - 1] == "the"
-         and words[k + 1] in GENERIC_NOUNS | NOUNS_SAID and words[k - 2] in OBJECT_WORDS | {"it", "one"}),
+         and (words[k + 1] in GENERIC_NOUNS | NOUNS_SAID or words[k + 1] == "to")   # 'the first to move'
+         and words[k - 2] in OBJECT_WORDS | {"it", "one"}),
         None)
     if said is None:
         return ""
@@ -2170,7 +2192,13 @@ FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["fro
 
 def future_unread(words: list[str], program: list[str]) -> str:
     """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
-    video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there)."""
+    video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there); or
+    the other way round, a reading after the video where the question asks before its end."""
+    before = next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] == "before" and (
+        words[k + 1:k + 3] == ["the", "end"] or words[k + 1] == "the" and words[k + 2] in FILM_WORDS)), None)
+    if before and "futureEvents" in program:   # 'will they collide before the video ends?' asks within it
+        return (f"the question asks about the video ('{before}'), but its nearest reading asks after it: ask whether "
+                "they collide in the video")
     if "Events" not in program or "futureEvents" in program:
         return ""
     said = next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
