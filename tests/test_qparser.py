@@ -1494,3 +1494,18 @@ def test_a_part_of_the_video_two_times_or_a_rank_to_move_are_not_asked():
         assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
     assert times_joined(tokenize("When the red car and the bus collide, is the car fast?")) == ""
     assert parser.parse("Does the red car hit the bus at some point in the video?") is not None
+
+
+def test_which_vehicle_what_it_does_or_a_part_of_it_is_not_asked():
+    """A colour or type reading needs the question to ask an attribute; 'what is it doing' and 'what part of the bus'
+    ask what no family answers; 'what speed is it doing' is a speed."""
+    parser = QuestionParser.load()
+    for text, why in (("What does the red car hit?", "which vehicle"),
+                      ("Name the vehicle that the red car hits.", "which vehicle"),
+                      ("What is the red car doing at the start?", "what a vehicle does"),
+                      ("What part of the bus does the red car hit?", "'part'")):
+        parsed = parser.analyse_batch([text])[0]
+        assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
+    assert parser.parse("What speed is the brown sedan doing when the clip begins?") == \
+        "Objects filter_attributes[brown] filter_attributes[sedan] unique start query_moving_velocity".split()
+    assert parser.parse("What type of vehicle does the red car hit?")[-1] == "query_attributes[shape]"

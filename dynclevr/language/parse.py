@@ -241,7 +241,7 @@ class QuestionParser:
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
-            or what_happens(read, c.program)
+            or what_happens(read, c.program) or attribute_unsaid(said, read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
@@ -1202,7 +1202,8 @@ WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes
 
 # What a question may ask of a place or a size, which no question here asks, however the lexicon reads the word
 # ('position' would be WordNet's 'state', 'far' its 'right', 'close' its 'next', 'high' the grammar's speed)
-SPATIAL = frozenset({"distance", "position", "location", "place", "height", "altitude", "gap", "separation", "size",
+PARTS = {"part", "parts", "side", "sides", "section", "portion", "area", "corner", "edge", "end"}   # of a vehicle
+SPATIAL = PARTS | frozenset({"distance", "position", "location", "place", "height", "altitude", "gap", "separation", "size",
                      "length", "width", "weight", "mass", "far", "close", "near", "high", "low", "tall", "big",
                      "large", "small", "long", "wide", "heavy", "apart"})
 TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "second"})   # 'at which frame ...'
@@ -1225,8 +1226,8 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             rest = rest[1:]
         if rest[:1] == ["the"] and rest[2:3] in (["of"], ["for"], ["between"]):
             asked = rest[1]
-        elif rest[1:2] and rest[1] in AUXILIARIES:
-            asked = rest[0]
+        elif rest[1:2] and rest[1] in AUXILIARIES or rest[1:2] == ["of"] and rest[0] in PARTS:
+            asked = rest[0]   # 'what colour is', 'what part of the bus'
     for opener in TELLING:
         if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
                 head[len(opener) + 2:len(opener) + 3] == ["of"]:
@@ -2173,10 +2174,28 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     return ""
 
 
+ATTRIBUTE_SAID = {w for w, query in ASKED_QUERIES.items() if query.startswith("query_attributes")} | {
+    "coloured", "colored", "colours", "colors", "category", "make"}
+
+
+def attribute_unsaid(said: list[str], read: list[str], program: list[str]) -> str:
+    """Why a reading of a colour or a type is not the question's ('' when it is): the question names no attribute
+    ('what does the red car hit?', 'name the vehicle that ...' ask which vehicle, and were read as its colour)."""
+    if not program[-1].startswith("query_attributes") or ATTRIBUTE_SAID.intersection(said + read):
+        return ""
+    return ("the question asks which vehicle, which no question here answers but by its colour or its type: ask what "
+            "colour (or type) it is")
+
+
 def what_happens(words: list[str], program: list[str]) -> str:
-    """Why a yes/no reading is not the question's ('' when it is): the question (`words`: typos fixed) asks what
-    happens and asks no question after it ('what would happen if it were static?' was read as whether it is)."""
+    """Why a reading is not the question's ('' when it is): the question (`words`: typos fixed) asks what a vehicle
+    does ('what is the red car doing at the start?' was read as its speed), or what happens and asks no question
+    after it ('what would happen if it were static?' was read as whether it is)."""
     head = _head(words)
+    if head[:1] == ["what"] and head[1:2] and head[1] in AUXILIARIES | {"will", "would"} and (
+            "doing" in head or "do" in head[2:]):   # not 'what speed is it doing'
+        return ("the question asks what a vehicle does, which no question here answers: ask how fast it moves, which "
+                "way, or whether it collides")
     if OPS[operation(program[-1])].output is not bool or head[:1] != ["what"] or \
             not HAPPENING.intersection(head) - {"if"} or \
             CLAUSE_ENDS.intersection(words[:-1]):   # a question after it: '..., would it hit the bus?'
