@@ -1509,3 +1509,22 @@ def test_which_vehicle_what_it_does_or_a_part_of_it_is_not_asked():
     assert parser.parse("What speed is the brown sedan doing when the clip begins?") == \
         "Objects filter_attributes[brown] filter_attributes[sedan] unique start query_moving_velocity".split()
     assert parser.parse("What type of vehicle does the red car hit?")[-1] == "query_attributes[shape]"
+
+
+def test_a_count_a_leaving_a_bare_faster_others_and_a_counterfactual_future_are_not_asked():
+    parser = QuestionParser.load()
+    for text, why in (("Does the red car hit exactly one vehicle?", "how often"),
+                      ("Do the red car and the bus collide at most once?", "how often"),
+                      ("How fast is the red car moving when it leaves the view?", "leaves the view"),
+                      ("Is the red car faster?", "nothing to compare"),
+                      ("Is the red car fast compared with the others at the start?", "ranks"),
+                      ("Is the red car at the start faster than the bus at the collision?", "speaks of a collision"),
+                      ("If the red car had been static, will it hit the bus after the video ends?", "after the video")):
+        parsed = parser.analyse_batch([text])[0]
+        assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
+    # ... but 'exactly' as stress, 'the rest of the video', 'getting' or 'going' faster and 'by any chance' read
+    for text in ("How fast exactly is the brown wagon moving at the start?",
+                 "Will the red car hit the bus in the rest of the video?",
+                 "At the start, is the engine of the gray sedan pushing it to go faster?",
+                 "By any chance, is the gray bus creeping along slowly as the video opens?"):
+        assert parser.parse(text) is not None, text

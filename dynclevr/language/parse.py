@@ -242,6 +242,7 @@ class QuestionParser:
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
             or what_happens(read, c.program) or attribute_unsaid(said, read, c.program)
+            or collision_unread(said, c.program) or uncompared(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
@@ -440,7 +441,8 @@ class QuestionParser:
 
 # How often a thing happens ('twice', 'more than once', 'three times'): a count, which no program makes
 REPEATS = (["twice"], ["thrice"], ["again"], ["more", "than", "once"], ["repeatedly"], ["multiple", "times"],
-           ["several", "times"], ["many", "times"])
+           ["several", "times"], ["many", "times"], ["at", "most"], ["only", "once"], ["just", "once"],
+           *(["exactly", n] for n in ("once", "one", "two", "2", "1")))
 NUMBERS = {"two", "three", "four", "five", "2", "3", "4", "5"}
 PLURALS = {"vehicles", "objects", "things", "cars", "buses", "bikes", "bicycles", "motorbikes", "planes", "aeroplanes",
            "airplanes", "collisions", "crashes", "others", "ones"}
@@ -1626,9 +1628,43 @@ def visibility_unread(words: list[str], program: list[str]) -> str:
     reads."""
     said = next((w for w in words if w in VISIBILITY), None)
     if said is None or "come_in_frame" in program:
+        leaving = next((w for w in words if w in LEAVING), None)
+        if leaving and "come_in_frame" in program:   # 'when it leaves the view' was read as when it comes into it
+            return (f"the question asks when a vehicle leaves the view ('{leaving}'), which no question here asks "
+                    "(they ask how fast it moves when it comes into view)")
         return ""
     return (f"the question asks whether a vehicle can be seen ('{said}'), which no question here asks (they ask how "
             "fast it moves when it comes into view)")
+
+
+LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "exited", "disappear", "disappears",
+           "disappearing", "disappeared", "vanish", "vanishes", "vanished", "departs", "departed"}
+
+
+def collision_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question (as said: 'by any chance' is
+    no 'bump') also speaks of a collision ('is the red car at the start faster than the bus at the collision?' was
+    read at the start alone)."""
+    if "start" not in program or COLLISION_OPERATIONS.intersection(map(operation, program)) or not asks_impact(words):
+        return ""
+    return ("the question speaks of a collision, but its nearest reading asks at the start alone: no question here "
+            "reads both")
+
+
+GOING = {"go", "goes", "going", "went"}   # 'pushing it to go faster'
+
+
+def uncompared(words: list[str], program: list[str]) -> str:
+    """Why a reading of accelerating is not the question's ('' when it is): it says 'faster' of nothing ('is the red
+    car faster?' was read as accelerating; 'getting faster', 'faster and faster' are)."""
+    if not {"is_accelerating", "filter_accelerating"}.intersection(map(operation, program)):
+        return ""
+    said = next((w for k, w in enumerate(words) if w in COMPARISONS and not (k and words[k - 1] in BECOMING | GOING)
+                 and words[k + 1:k + 2] != ["and"]), None)
+    if said is None:
+        return ""
+    return (f"the question says '{said}' of nothing to compare with, which no question here asks: ask whether it is "
+            "faster than another vehicle, or accelerating")
 
 
 def collision_at_start(words: list[str], program: list[str]) -> str:
@@ -1959,7 +1995,9 @@ def ranking(words: list[str]) -> str:
         (" ".join(words[k - 1:k + 2]) for k in range(2, len(words) - 1) if words[k] in RANKS and words[k - 1] == "the"
          and (words[k + 1] in GENERIC_NOUNS | NOUNS_SAID or words[k + 1] == "to")   # 'the first to move'
          and words[k - 2] in OBJECT_WORDS | {"it", "one"}),
-        None)
+        None) or next((f"the {b}" for k, (a, b) in enumerate(zip(words, words[1:])) if a == "the" and (
+            b == "others" or b == "rest" and words[k + 2:k + 3] != ["of"]) and not asks_impact(words)),
+        None)   # 'fast compared with the others' (not 'the rest of the video': after it)
     if said is None:
         return ""
     return (f"the question ranks a vehicle among all ('{said}'), which no question here asks: ask whether one is "
@@ -2209,21 +2247,30 @@ CLAUSE_ENDS = {",", ":", ";", ".", "?", "-"}
 FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["from", "now"])
 
 
+def _future_said(words: list[str]) -> str:
+    """The words that say the time after the video ('after the video', 'in the future'), or ''."""
+    return next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
+                 if words[k:k + len(f)] == f and (f[0] != "after" or words[k + 2:k + 3] and
+                                                  words[k + 2] in FILM_WORDS)), "")
+
+
 def future_unread(words: list[str], program: list[str]) -> str:
     """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
     video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there); or
-    the other way round, a reading after the video where the question asks before its end."""
+    the other way round, a reading after the video where the question asks before its end, or a counterfactual's
+    after the video ('if it had been static, will it hit the bus after the video ends?')."""
     before = next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] == "before" and (
         words[k + 1:k + 3] == ["the", "end"] or words[k + 1] == "the" and words[k + 2] in FILM_WORDS)), None)
     if before and "futureEvents" in program:   # 'will they collide before the video ends?' asks within it
         return (f"the question asks about the video ('{before}'), but its nearest reading asks after it: ask whether "
                 "they collide in the video")
+    if any(t.startswith("Counterfactual") for t in program) and _future_said(words):
+        return (f"the question imagines the time after the video ('{_future_said(words)}'), which no question here "
+                "does: a counterfactual asks about the video's own time")
     if "Events" not in program or "futureEvents" in program:
         return ""
-    said = next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
-                 if words[k:k + len(f)] == f and (f[0] != "after" or words[k + 2:k + 3] and
-                                                  words[k + 2] in FILM_WORDS)), None)
-    if said is None:
+    said = _future_said(words)
+    if not said:
         return ""
     return (f"the question asks about the time after the video ('{said}'), but its nearest reading asks about the "
             "video: no question here reads it")
