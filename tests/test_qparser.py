@@ -1519,7 +1519,8 @@ def test_a_count_a_leaving_a_bare_faster_others_and_a_counterfactual_future_are_
                       ("Is the red car faster?", "nothing to compare"),
                       ("Is the red car fast compared with the others at the start?", "ranks"),
                       ("Is the red car at the start faster than the bus at the collision?", "speaks of a collision"),
-                      ("If the red car had been static, will it hit the bus after the video ends?", "after the video")):
+                      ("If the red car had been static, will it hit the bus after the video ends?", "after the video"),
+                      ("Will the red car be faster than the bus after the video?", "other than the start")):
         parsed = parser.analyse_batch([text])[0]
         assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
     # ... but 'exactly' as stress, 'the rest of the video', 'getting' or 'going' faster and 'by any chance' read

@@ -1609,7 +1609,8 @@ def time_unasked(words: list[str], program: list[str]) -> str:
     which the decoder read as the start."""
     if "start" not in program or START_WORDS & set(words) or "first" in words:
         return ""
-    said = next((" ".join(t) for k in range(len(words)) for t in NOT_START if words[k:k + len(t)] == t), None)
+    said = next((" ".join(t) for k in range(len(words)) for t in NOT_START if words[k:k + len(t)] == t),
+                None) or _future_said(words)   # 'will it be faster than the bus after the video?'
     clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if (a in CLOCK_WORDS and b.isdigit() or
                                                                    b in CLOCK_WORDS and (a.isdigit() or a in NUMBERS))
                   and not {a, b} & ORDINAL_WORDS), None)
