@@ -280,8 +280,8 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended + request
-                   + negative + asked + aloft + heading + subject + first + more + tail + offered)
+        request = (named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended
+                   + request + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -342,9 +342,9 @@ class QuestionParser:
         if said[:1] and said[0] in NORMATIVE:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
-        ranked = ranking(said) or properties_joined(said) or times_joined(said) or several_asked(said) or questions_joined(said) or \
-            quantified(said) or premised(said) or chained(said) or speed_measure(said) or checked_attribute(said) or \
-            imagined_otherwise(said, words) or otherwise_compared(said, words)
+        ranked = ranking(said) or properties_joined(said) or times_joined(said) or several_asked(said) or \
+            questions_joined(said) or quantified(said) or premised(said) or chained(said) or speed_measure(said) or \
+            checked_attribute(said) or imagined_otherwise(said, words) or otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -1205,9 +1205,9 @@ WHERE_MOTION = MOTION_WORDS | {"heading", "headed", "head", "heads", "go", "goes
 # What a question may ask of a place or a size, which no question here asks, however the lexicon reads the word
 # ('position' would be WordNet's 'state', 'far' its 'right', 'close' its 'next', 'high' the grammar's speed)
 PARTS = {"part", "parts", "side", "sides", "section", "portion", "area", "corner", "edge", "end"}   # of a vehicle
-SPATIAL = PARTS | frozenset({"distance", "position", "location", "place", "height", "altitude", "gap", "separation", "size",
-                     "length", "width", "weight", "mass", "far", "close", "near", "high", "low", "tall", "big",
-                     "large", "small", "long", "wide", "heavy", "apart"})
+SPATIAL = PARTS | frozenset({"distance", "position", "location", "place", "height", "altitude", "gap", "separation",
+                            "size", "length", "width", "weight", "mass", "far", "close", "near", "high", "low", "tall",
+                            "big", "large", "small", "long", "wide", "heavy", "apart"})
 TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "second"})   # 'at which frame ...'
 
 
