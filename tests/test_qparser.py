@@ -1529,3 +1529,18 @@ def test_a_count_a_leaving_a_bare_faster_others_and_a_counterfactual_future_are_
                  "At the start, is the engine of the gray sedan pushing it to go faster?",
                  "By any chance, is the gray bus creeping along slowly as the video opens?"):
         assert parser.parse(text) is not None, text
+
+
+def test_what_could_happen_or_an_imagined_collision_compared_is_not_asked():
+    parser = QuestionParser.load()
+    for text, why in (("Is it possible for the red car to hit the bus?", "could happen"),
+                      ("Could the red car have hit the bus?", "could happen"),
+                      ("Would the red car have hit the bus sooner if it had been fast?", "imagined collision"),
+                      ("Would the collision between the red car and the bus have happened later if the car had been "
+                       "slow?", "imagined collision")):
+        parsed = parser.analyse_batch([text])[0]
+        assert parsed.program is None and why in parsed.reason, (text, parsed.reason)
+    # 'likely' hedges a prediction; 'could' with a condition is a counterfactual
+    assert parser.parse("Is the red car likely to hit the bus after the video?")[0] == "futureEvents"
+    assert "Counterfactual_moving_fast" in parser.parse(
+        "Could the red car have hit the bus if it had been moving fast at the start?")

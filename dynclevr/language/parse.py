@@ -342,9 +342,10 @@ class QuestionParser:
         if said[:1] and said[0] in NORMATIVE:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
-        ranked = ranking(said) or properties_joined(said) or times_joined(said) or several_asked(said) or \
-            questions_joined(said) or quantified(said) or premised(said) or chained(said) or speed_measure(said) or \
-            checked_attribute(said) or imagined_otherwise(said, words) or otherwise_compared(said, words)
+        ranked = ranking(said) or properties_joined(said) or times_joined(said) or possibility_asked(said) or \
+            several_asked(said) or questions_joined(said) or quantified(said) or premised(said) or chained(said) or \
+            speed_measure(said) or checked_attribute(said) or imagined_otherwise(said, words) or \
+            otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -1727,12 +1728,20 @@ def speed_measured(words: list[str]) -> str:
     return ""
 
 
+# the imagined collision compared with the real one ('would it have hit the bus sooner?' was read as whether it would)
+IMAGINED_COMPARED = {"sooner", "earlier", "later", "harder", "softer", "gentler", "longer"}
+
+
 def comparison_imagined(words: list[str], program: list[str]) -> str:
     """Why a counterfactual reading is not the question's ('' when it is): its condition compares the vehicle with
     itself ('if it had been slower', 'had it gone faster'), which no intervention sets (they set it static, slow or
     fast, or accelerating: 'getting faster'); the decoder read 'slower' as fast and 'faster' as accelerating."""
     if not any(t.startswith("Counterfactual") for t in program):
         return ""
+    compared = next((w for w in words if w in IMAGINED_COMPARED), None)
+    if compared:
+        return (f"the question compares the imagined collision with the real one ('{compared}'), which no question "
+                "here asks: ask whether it would have happened")
     said = next((" ".join(words[k:k + 1 + (w in ("more", "less"))]) for k, w in enumerate(words)
                  if (w in COMPARISONS or w in ("more", "less") and words[k + 1:k + 2] and words[k + 1] in PACE_WORDS)
                  and not (k and words[k - 1] in BECOMING or words[k + 1:k + 2] == ["and"])), None)
@@ -1789,6 +1798,21 @@ def properties_joined(words: list[str]) -> str:
             return (f"the question asks two things at once ('{left}' and '{right}'), which the parser reads one "
                     "question at a time: ask them apart")
     return ""
+
+
+POSSIBILITY = {"possible", "possibly", "possibility", "probability", "odds"}   # not 'likely': a hedge of 'will'
+
+
+def possibility_asked(words: list[str]) -> str:
+    """Whether a collision could happen asked ('is it possible for the red car to hit the bus?', 'could the red car
+    have hit the bus?' were read as whether it will, or does), or ''."""
+    said = next((w for w in words if w in POSSIBILITY), None) or (
+        f"{words[0]} ... have" if words[:1] in (["could"], ["might"]) and "have" in words
+        and not CONDITION_OPENERS.intersection(words) else None)
+    if said is None:
+        return ""
+    return (f"the question asks what could happen ('{said}'), which no question here asks: ask whether it does, will "
+            "after the video, or would have if ...")
 
 
 def times_joined(words: list[str]) -> str:
