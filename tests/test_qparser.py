@@ -1000,6 +1000,10 @@ def test_bad_text_is_unparsed_never_a_crash(synthetic_fit):
     text = "floating collide sedan the the red velocity with?"
     salad = p.parse(text)
     assert salad is None or program_shape(abstract_program(salad, delexicalise(tokenize(text))[1])) in p.shapes
+    # Every opening of a question, down to one word, reads without an exception (a rule once read a third word
+    # that 'Is the?' does not have).
+    question = tokenize("Is the vehicle that hits the red car a bus, and what colour and type is it?")
+    p.analyse_batch([" ".join(question[:k]) for k in range(1, len(question) + 1)])
 
 
 def test_one_unknown_word(synthetic_fit):
@@ -1541,3 +1545,17 @@ def test_what_could_happen_or_an_imagined_collision_compared_is_not_asked():
     assert parser.parse("Is the red car likely to hit the bus after the video?")[0] == "futureEvents"
     assert "Counterfactual_moving_fast" in parser.parse(
         "Could the red car have hit the bus if it had been moving fast at the start?")
+
+
+def test_a_type_checked_two_attributes_a_motions_onset_and_a_partner_at_the_start_are_not_asked():
+    parser = QuestionParser.load()
+    assert_refused(parser, {
+        "Is the vehicle that hits the red car a bus?": "is a 'bus'",
+        "What is the colour and type of the floating vehicle at the start?": "two things at once",
+        "What colour is the vehicle that starts floating?": "begins or ends",
+        "What colour is the vehicle that was moving fast before it stopped?": "other than the start",
+        "What colour is the vehicle that hits the red car at the start?": "collision at the start"})
+    # ... but a time said by a motion's start, and a vehicle described as stopped, read
+    for text in ("Does the purple bus crash into anything after it starts moving?",
+                 "At the start of the clip, which color is the stopped thing?"):
+        assert parser.parse(text) is not None, text

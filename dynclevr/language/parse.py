@@ -343,6 +343,7 @@ class QuestionParser:
             return [], (f"the question asks what '{said[0]}' happen, which no question here asks: ask what does, or "
                         "what would have if ..."), read_as, said
         ranked = ranking(said) or properties_joined(said) or times_joined(said) or possibility_asked(said) or \
+            onset_asked(said) or \
             several_asked(said) or questions_joined(said) or quantified(said) or premised(said) or chained(said) or \
             speed_measure(said) or checked_attribute(said) or imagined_otherwise(said, words) or \
             otherwise_compared(said, words)
@@ -1610,8 +1611,8 @@ def time_unasked(words: list[str], program: list[str]) -> str:
     which the decoder read as the start."""
     if "start" not in program or START_WORDS & set(words) or "first" in words:
         return ""
-    said = next((" ".join(t) for k in range(len(words)) for t in NOT_START if words[k:k + len(t)] == t),
-                None) or _future_said(words)   # 'will it be faster than the bus after the video?'
+    said = next((" ".join(t) for k in range(len(words)) for t in (*NOT_START, ["before"], ["until"])
+                 if words[k:k + len(t)] == t), None) or _future_said(words)   # 'faster than the bus after the video?'
     clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if (a in CLOCK_WORDS and b.isdigit() or
                                                                    b in CLOCK_WORDS and (a.isdigit() or a in NUMBERS))
                   and not {a, b} & ORDINAL_WORDS), None)
@@ -1641,6 +1642,22 @@ def visibility_unread(words: list[str], program: list[str]) -> str:
 
 LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "exited", "disappear", "disappears",
            "disappearing", "disappeared", "vanish", "vanishes", "vanished", "departs", "departed"}
+
+
+def onset_asked(words: list[str]) -> str:
+    """A vehicle described by its motion's beginning or end ('the vehicle that starts floating', 'that stops
+    accelerating', read at the start), or ''; not a time ('after it starts moving', 'as it starts to move')."""
+    said = next((f"{a} {b}" for k, (a, b) in enumerate(zip(words, words[1:])) if a in ONSETS and k and (
+        words[k - 1] in PARTNER_SAID | GENERIC_NOUNS) and (b.endswith("ing") and not b.endswith("thing") or b == "to")),
+                None)   # not 'the stopped thing'
+    if said is None:
+        return ""
+    return (f"the question asks when a motion begins or ends ('{said}'), which no question here asks (they ask the "
+            "motion at the start, when a vehicle comes into view, or at a collision)")
+
+
+ONSETS = {"start", "starts", "started", "begin", "begins", "began", "stop", "stops", "stopped", "quit", "quits",
+          "finish", "finishes", "finished"}
 
 
 def collision_unread(words: list[str], program: list[str]) -> str:
@@ -1673,7 +1690,8 @@ def collision_at_start(words: list[str], program: list[str]) -> str:
     """Why a reading of whether vehicles collide is not the question's ('' when it is): the question asks it at the
     start ('are the jet and the bus touching at the start?', read as at any time), and says no motion there for the
     start to be the time of ('does the car, parked at the start, hit the bus?')."""
-    if "filter_collision" not in program or "start" in program or any(t.startswith("Counterfactual") for t in program):
+    if not COLLISION_OPERATIONS.intersection(map(operation, program)) or "start" in program or \
+            any(t.startswith("Counterfactual") for t in program):   # a partner's too: 'what hits it at the start?'
         return ""
     if not START_WORDS & set(words) or (SPEED_CLASS_WORDS | set(MOTION_KINDS)) & set(words):
         return ""
@@ -2004,12 +2022,25 @@ def speed_measure(words: list[str]) -> str:
 
 
 def checked_attribute(words: list[str]) -> str:
-    """A yes/no question whether a described vehicle is of a colour ('is the accelerating vehicle blue?'), or ''."""
+    """A yes/no question whether a described vehicle is of a colour ('is the accelerating vehicle blue?') or of a
+    type ('is the vehicle that hits the red car a bus?', read as whether the bus hits it), or ''; or one that asks
+    two attributes at once ('what is the colour and type of ...')."""
+    two = next((f"{a} and {c}" for a, b, c in zip(words, words[1:], words[2:])
+                if b == "and" and a in ATTRIBUTE_SAID and c in ATTRIBUTE_SAID), None)
+    if two:
+        return (f"the question asks two things at once ('{two}'), which the parser reads one question at a time: ask "
+                "them apart")
     end = len(words) - (words[-1:] == ["?"])
     said = next((words[k + 1] for k in range(end - 1) if k + 2 == end and words[k] in GENERIC_NOUNS | NOUNS_SAID
                  and words[k + 1] in COLOR_NAMES), None)
-    if said is None or not words[:1] or words[0] not in YES_NO_OPENERS:
+    typed = words[1:2] == ["the"] and words[2:3] and words[2] in GENERIC_NOUNS and next(
+        (" ".join(words[k + 1:end]) for k in range(3, end - 1) if words[k] in ("a", "an")
+         and all(w in OBJECT_WORDS for w in words[k + 1:end])), None)
+    if not words[:1] or words[0] not in YES_NO_OPENERS or not (said or typed):
         return ""
+    if typed:
+        return (f"the question asks whether a vehicle is a '{typed}', which no question here asks: ask what type it "
+                "is")
     return f"the question asks whether a vehicle is '{said}', which no question here asks: ask what colour it is"
 
 
