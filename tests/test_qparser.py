@@ -929,6 +929,11 @@ def test_a_person_the_picture_an_intent_a_pose_a_landing_and_motions_compared_ar
     assert stops.program[0] == "futureEvents" and request.program[-1] == "is_accelerating"
     who = parser.analyse_batch(["Who is faster at the start: the purple sedan or the gray jet?"])[0]
     assert who.program and who.program[-1] == "faster_velocity"
+    # two vehicles side by side with nothing that compares them ask about each, not whether one is faster
+    assert_refused(parser, {"Is the red car or the blue bus moving at the start?": "side by side",
+                            "Are the red car and the blue bus speeding up at the start?": "compares nothing"})
+    cut = parser.analyse_batch(["After the video cuts off, will the yellow suv hit anything?"])[0]
+    assert cut.program and cut.program[0] == "futureEvents"   # the video cuts off; no vehicle cuts another off
 
 
 def test_a_hedge_is_a_preamble_but_a_preamble_that_says_when_stays():

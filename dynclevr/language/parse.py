@@ -67,9 +67,9 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, corefer,
-                                          delexicalise, description_as_said, is_description, phrases_as_said,
-                                          placeholders)
+from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, coordinated,
+                                          corefer, delexicalise, description_as_said, is_description,
+                                          phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
 from dynclevr.questions.generate import templates
@@ -425,7 +425,8 @@ class QuestionParser:
             return Parse(None, "the question matches no known question family", p)
         if p < self.params.min_confidence:
             return Parse(None, f"not a question the parser knows how to read (confidence {p:.2f})", p)
-        reverse = reversed_reading(words, abstract) or named_attribute(words, abstract)
+        reverse = reversed_reading(words, abstract) or named_attribute(words, abstract) or \
+            compared_unsaid(words, abstract, refs)
         if reverse:
             return Parse(None, reverse, p)
         abstract = condition_subject_first(words, abstract)
@@ -1293,8 +1294,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
                 "partner's question asks the first)")
     relative = next((w for k, w in enumerate(said) if w in RELATIVE_MOTION | PASSING and
                      said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None) or \
-        next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in ("cut", "cuts", "cutting") and b in ("off", "in")),
-             None)   # 'does it cut off the bus?'
+        next((f"{a} {b}" for k, (a, b) in enumerate(zip(said, said[1:])) if a in ("cut", "cuts", "cutting")
+              and b in ("off", "in") and said[k - 1:k] not in ([w] for w in FILM_WORDS)),
+             None)   # 'does it cut off the bus?', not 'after the video cuts off'
     if relative:
         return (f"the question asks how a vehicle moves relative to another ('{relative}'), which no question here "
                 "asks: ask whether it is faster, or whether they collide")
@@ -1470,6 +1472,28 @@ def named_attribute(words: list[str], abstract: list[str]) -> str:
                     f"{w} of the object that collides with it, or that is static, slow, fast, accelerating or "
                     "floating)")
     return ""
+
+
+SPEED_COMPARISONS = ("faster_velocity", "slower_velocity")
+# the words that say a comparison of speed, the grammar's phrasings of FASTER and SLOWER among them
+COMPARING = COMPARISONS | {"than", "more", "less", "higher", "lower", "greater", "swifter", "compared", "compare"}
+
+
+def compared_unsaid(words: list[str], abstract: list[str], refs: list) -> str:
+    """Why a speed comparison is not what the question asks, or '': the two vehicles are said side by side, each
+    once, and nothing compares them ('Is the red car or the blue bus moving?', 'Are the car and the bus moving?').
+    That asks about each of them; the decoder read it as whether the first is faster. ('Which is faster, X or Y?'
+    compares, and is the grammar's yes/no question.)"""
+    pair = sorted(placeholders(abstract))
+    if operation(abstract[-1]) not in SPEED_COMPARISONS or len(pair) != 2 or \
+            COMPARING.intersection(words) or any(words.count(f"<obj{k}>") != 1 for k in pair):
+        return ""
+    a, b = (k - 1 for k in pair)
+    if (a, b) not in coordinated(words):
+        return ""
+    x, y = (" ".join(refs[k]).replace("_", " ") for k in (a, b))
+    return (f"the question names the {x} and the {y} side by side and compares nothing, which no question here asks: "
+            f"ask about one of them, or whether the {x} is faster than the {y}")
 
 
 # Words of a direction or a place: only the direction queries ask about them (no question asks whether a vehicle

@@ -197,7 +197,7 @@ def _generalises(short: Ref, full: Ref) -> bool:
 _JOINING = {",", "and", "or", "nor", "the", "a", "an", "both", "either", "neither"}
 
 
-def _coordinated(words: list[str]) -> set[tuple[int, int]]:
+def coordinated(words: list[str]) -> set[tuple[int, int]]:
     """Pairs of references (0-based) in one list joined by 'and', 'or' or 'nor' ('A , B and C')."""
     pairs, group, joined, between = set(), [], False, []
     for w in words + ["."]:
@@ -224,7 +224,7 @@ def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
     mention, as training numbers them. Parsing only: the training questions' random objects need not be unique, so
     training scores them without it (`QuestionParser.corefer`). Mentions joined by 'and' or 'or' ('the bus and the
     school bus') are told apart by the question itself, so neither is read as the other."""
-    apart = _coordinated(words)
+    apart = coordinated(words)
     fuller = {k: [j for j, r in enumerate(refs) if r != ref and _generalises(ref, r) and (k, j) not in apart]
               for k, ref in enumerate(refs)}
     root = list(range(len(refs)))
