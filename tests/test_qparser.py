@@ -28,7 +28,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
-                                     impact_like, inserted_time_last,
+                                     impact_like, imperative_as_stated, inserted_time_last,
                                      impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
                                      noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
@@ -470,7 +470,10 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
              "Does the car end up hitting the bus?": "does the car hit the bus?",
              "Has the car hit anything by the end of the clip?": "has the car hit anything during the video?",
              "Picture the car moving slowly. Would it hit the bus?": "imagine the car moving slowly. would it hit the "
-                                                                     "bus?"}
+                                                                     "bus?",
+             "Is the quick car gathering speed?": "is the fast car accelerating?",
+             "Which colour is the slower-moving car, and the non-moving one?": "which colour is the slow-moving car, "
+                                                                               "and the stationary one?"}
     for text, said in cases.items():
         words, read_as = idioms_as_said(tokenize(text))
         assert words == tokenize(said), text
@@ -479,6 +482,13 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
                  "Is the bus going out of view?", "Is the gas truck fast?", "How fast is the car when it enters the "
                  "picture?", "Does the car stop at the end?"):
         assert idioms_as_said(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_request_closed_by_a_question_mark_reads_as_the_grammar_closes_it():
+    assert imperative_as_stated(tokenize("Describe the speed of the bus?")) == (
+        tokenize("describe the speed of the bus."), (("?", "."),))
+    for text in ("Is the bus fast?", "Describe the speed of the bus.", "What is the speed of the bus?"):
+        assert imperative_as_stated(tokenize(text)) == (tokenize(text), ()), text
 
 
 def test_a_speed_class_the_question_never_says_is_refused():

@@ -271,6 +271,7 @@ class QuestionParser:
         words, framing = framing_dropped(words)
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
+        words, stated = imperative_as_stated(words)
         words, negative = negative_question_as_asked(words)
         words, asked = noun_phrase_as_question(words)
         words, aloft = height_as_aloft(words)
@@ -281,7 +282,7 @@ class QuestionParser:
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
         request = (named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended
-                   + request + negative + asked + aloft + heading + subject + first + more + tail + offered)
+                   + request + stated + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -723,6 +724,18 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
+IMPERATIVES = (["tell", "me"], ["describe"], ["give", "me"], ["state"], ["name"], ["say"])
+
+
+def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A request closed by a question mark ('Describe the speed of the bus at the start?') as the grammar closes
+    one, with a full stop: the question mark made the decoder read it as yes or no. With the words read so, or the
+    words as they are and ()."""
+    if words[-1:] != ["?"] or not any(words[:len(i)] == i for i in IMPERATIVES):
+        return words, ()
+    return [*words[:-1], "."], (("?", "."),)
+
+
 # A yes/no question asked with its auxiliary negated ('Isn't the red car fast?', 'Doesn't it hit the bus?') asks
 # the same as without: English answers it yes where the car is fast. So does a statement with a tag ('The red car is
 # fast, isn't it?', '..., right?'). Only a negation inside the clause ('Is the red car not moving?') denies.
@@ -858,6 +871,17 @@ IDIOMS = tuple(sorted({
     # within the video, not after it ('has it hit anything by the end of the video?')
     **{("by", "the", "end", "of", "the", film): ("during", "the", "video") for film in ("video", "clip", "footage",
                                                                                        "film", "recording", "movie")},
+    # 'quick' is 'fast' ('the quick car', 'is it quick' were read as nothing); 'non-moving' is 'stationary'
+    ("quick",): ("fast",),
+    **{("non", *dash, "moving"): ("stationary",) for dash in ((), ("-",))},
+    **{(gather, "speed"): (accelerate,) for gather, accelerate in (("gathering", "accelerating"), ("gathers",
+                                                                                                 "accelerates"),
+                                                                   ("gathered", "accelerated"),
+                                                                   ("gather", "accelerate"))},
+    # a comparative said as a class ('the slower-moving vehicle'), as the grammar says the class
+    **{(comparative, *dash, "moving"): said for comparative, said in (("slower", ("slow", "-", "moving")),
+                                                                     ("faster", ("quickly", "moving")))
+       for dash in ((), ("-",))},
     **{("rear", "-", end): (hit,) for end, hit in (("end", "hit"), ("ends", "hits"), ("ended", "hit"),
                                                    ("ending", "hitting"))},
     **{("t", "-", bone): (hit,) for bone, hit in (("bone", "hit"), ("bones", "hits"), ("boned", "hit"),
