@@ -42,7 +42,7 @@ from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstrac
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped
+from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped, slips
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -1386,6 +1386,10 @@ def test_a_slip_of_the_fingers_is_read_as_the_one_word_it_slipped_from():
         f"{red} start is_moving_velocity[slow]".split()
     assert parser.parse("What is the oclor of the thing that the red sedna hits?") == \
         f"Events {red} get_all_col_partners unique query_attributes[color]".split()
+    # 'fastr' slips from 'fast' and 'faster', 'fater' from 'after' and 'faster': before 'than', the comparative
+    assert slips("fastr", words) == ["fast", "faster"]
+    assert parser.parse("Is the red sedan fater than the bus at the start?") == \
+        f"{red} Objects filter_attributes[bus] unique start faster_velocity".split()
 
 
 def test_eval_types_each_question_with_one_slip_deterministically():

@@ -71,7 +71,7 @@ from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue
                                           corefer, delexicalise, description_as_said, is_description,
                                           phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped
+from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips
 from dynclevr.questions.generate import templates
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
@@ -301,6 +301,9 @@ class QuestionParser:
                  or (w != words[0] and OBJECT_LEXICON.closest(w)) or (len(w) >= TYPO_LETTERS and self.words.closest(w))
                  or w
                  for w in words if w not in self.known}
+        # before 'than' a slip is of a comparative, where it is of one and of other words ('fater': 'after', 'faster')
+        fixed.update({w: hits[0] for w, after in zip(words, words[1:]) if w in fixed and after == "than"
+                      and len(hits := [h for h in slips(w, self.readable, SPELLINGS) if h in COMPARISONS]) == 1})
         read_as += tuple((w, k) for w, k in fixed.items() if k != w and k not in OBJECT_WORDS)
         words = [k for w in words for part in fixed.get(w, w).split() for k in (self._stand_in(part) if w in fixed
                                                                                else [part])]
@@ -354,7 +357,8 @@ class QuestionParser:
         if alike:
             return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or said[:1] == ["explain"]:
+        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or said[:1] == ["explain"] or \
+                any(a == "what" and b in CAUSING for a, b in zip(said, said[1:])):
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
@@ -1405,8 +1409,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
                 "it is moving)")
-    if not asks_impact(said) and (_video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said))
-                                                          for e in END_TIMES)):
+    ended = _video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said)) for e in END_TIMES)
+    if ended and not asks_impact(said) and not asks_impact(words):   # 'colide' as read, typos fixed
         return ("the question asks about the video's end, which no question here asks (they ask about the start, "
                 "an object's coming into view, a collision, and collisions after the video)")
     return ""
@@ -1819,6 +1823,7 @@ def comparison_imagined(words: list[str], program: list[str]) -> str:
 
 # a cause asked ('did it hit the bus because it was fast?' was read as whether it was fast)
 CAUSES = {"because", "due", "reason", "reasons"}
+CAUSING = {"made", "makes", "caused", "causes", "cause", "led", "leads", "lead"}   # 'what made it turn?'
 PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
 # A vehicle ranked among all ('the fastest', 'moves the most', 'is the wagon the first vehicle to collide?'): no
 # program compares more than two; 'the first vehicle it hits' is a partner's question, and stays

@@ -86,14 +86,12 @@ _LETTERS = "abcdefghijklmnopqrstuvwxyz"
 SLIP_LETTERS = 30   # longer than any word read; bounds the candidates a pasted string of letters would make
 
 
-def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
-    """The one word of `words` that `word` (4+ letters) is a slip of the fingers away from: two neighbouring letters
+def slips(word: str, words: set[str], spellings: dict[str, str] | None = None) -> list[str]:
+    """The words of `words` that `word` (4+ letters) is a slip of the fingers away from: two neighbouring letters
     swapped ('slolwy'), a key next to the right one hit instead ('shaoe') or as well ('sopeed'), a letter left out
-    ('oject') or doubled ('speeed'); None when there is none or more than one; `spellings` unifies a variant first
-    ('cloour' -> 'colour' -> 'color'). Slips are rarer between real words than any one edit, so short words are fixed
-    too ('oclor'), where `Vocab.closest` would make 'black' 'back'."""
+    ('oject') or doubled ('speeed'); `spellings` unifies a variant first ('cloour' -> 'colour' -> 'color')."""
     if not 4 <= len(word) <= SLIP_LETTERS:
-        return None
+        return []
     n = len(word)
     swaps = {word[:k] + word[k + 1] + word[k] + word[k + 2:] for k in range(n - 1)}
     wrong = {word[:k] + c + word[k + 1:] for k in range(n) for c in NEIGHBOURS.get(word[k], ())}
@@ -102,7 +100,14 @@ def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None)
                             word[k - 1:k], word[k + 1:k + 2]} - {""}}
     left_out = {word[:k] + c + word[k:] for k in range(n + 1) for c in _LETTERS}
     spellings = spellings or {}
-    hits = sorted({spellings.get(t, t) for t in (swaps | wrong | extra | left_out) - {word}} & words)
+    return sorted({spellings.get(t, t) for t in (swaps | wrong | extra | left_out) - {word}} & words)
+
+
+def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
+    """The one word of `words` that `word` is a slip of the fingers away from (`slips`); None when there is none or
+    more than one. Slips are rarer between real words than any one edit, so short words are fixed too ('oclor'),
+    where `Vocab.closest` would make 'black' 'back'."""
+    hits = slips(word, words, spellings)
     return hits[0] if len(hits) == 1 else None
 
 
