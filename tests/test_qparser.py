@@ -33,6 +33,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      noun_phrase_as_question, otherwise_compared,
                                      program_shape, properties_joined, questions_joined, premised, quantified, ranking,
                                      several_asked, request_as_imperative, reversed_as_said, reversed_reading,
+                                     shorthand_as_said,
                                      speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
                                      synonyms, tail_as_question, time_clause_last, time_unasked, times_joined,
                                      video_end_as_said,
@@ -423,6 +424,9 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
         assert read_as[0][1] == "tell me" and tokenize(text)[:len(tokenize(read_as[0][0]))] == tokenize(read_as[0][0])
     assert request_as_imperative(tokenize("I wonder whether the red sedan hits the bus."))[0] == tokenize(
         "tell me whether the red sedan hits the bus.")
+    assert request_as_imperative(tokenize("I would be most grateful to know whether the bus hits the car."))[0] == \
+        tokenize("tell me whether the bus hits the car.")
+    assert tokenize("can u tell me") == tokenize("can you tell me")
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
                  "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
@@ -482,6 +486,24 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
                  "Is the bus going out of view?", "Is the gas truck fast?", "How fast is the car when it enters the "
                  "picture?", "Does the car stop at the end?"):
         assert idioms_as_said(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_a_notes_shorthand_reads_as_the_grammar_says_it():
+    """An answer's form after the question, 'w/', '+' and choices split by slashes, as the grammar says them."""
+    cases = {"green wagon slow at collision w/ red road bike? y/n": "green wagon slow at collision with red road bike?",
+             "does the bus hit anything (yes/no)?": "does the bus hit anything?",
+             "bus + car collide after end?": "bus and car collide after end?",
+             "speed of biplane at start (static/slow/fast)": "speed of biplane at start: static, slow or fast"}
+    for text, said in cases.items():
+        assert shorthand_as_said(tokenize(text))[0] == tokenize(said), text
+    for text in ("Is the bus slow or fast?", "Does the bus hit the car?"):
+        assert shorthand_as_said(tokenize(text)) == (tokenize(text), ()), text
+    parser = QuestionParser.load()
+    speed, cause, end = parser.analyse_batch(["speed of biplane at start (static/slow/fast)",
+                                              "What made the green bus change direction?",
+                                              "Is the dirtbike stopped when video is finish?"])
+    assert speed.program == "Objects filter_attributes[biplane] unique start query_moving_velocity".split()
+    assert "why" in cause.reason and "video's end" in end.reason
 
 
 def test_a_request_closed_by_a_question_mark_reads_as_the_grammar_closes_it():
@@ -953,6 +975,8 @@ def test_a_hedge_is_a_preamble_but_a_preamble_that_says_when_stays():
         tokenize("is the bus fast?")
     assert framing_dropped(tokenize("thinking about the moment they collide, is the bus faster?"))[1] == ()
     assert framing_dropped(tokenize("if the bus had been parked, would it hit the truck?"))[1] == ()
+    assert framing_dropped(tokenize("if it isn't too much trouble, could you tell me whether the bus is fast?"))[0] == \
+        tokenize("could you tell me whether the bus is fast?")
     parser = QuestionParser.load()
     guess, when = parser.analyse_batch([
         "If you had to guess, do the blue bus and the green truck collide at any point in the video?",

@@ -259,6 +259,7 @@ class QuestionParser:
             return [], "empty question", (), []
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
+        words, shorthand = shorthand_as_said(words)
         words, named = catalogue_names(words)
         words, labelled = asides_dropped(words)
         words, inserted = inserted_time_last(words)
@@ -281,7 +282,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended
+        request = (shorthand + named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended
                    + request + stated + negative + asked + aloft + heading + subject + first + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
@@ -493,6 +494,46 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 
+# A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' for 'and',
+# choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
+ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["yes", "or", "no"], ["true", "/", "false"])
+
+
+def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
+    -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With the words read so, or the words as they are
+    and ()."""
+    out, read = list(words), []
+    end = len(out) - (out[-1:] in (["?"], ["."]))
+    for form in ANSWER_FORMS:
+        for bracketed in (["(", *form, ")"], form):
+            if out[end - len(bracketed):end] == bracketed:
+                read.append((" ".join(bracketed), "nothing, an answer's form"))
+                out = out[:end - len(bracketed)] + out[end:]
+                end -= len(bracketed)
+    k = 0
+    while k < len(out):
+        if out[k:k + 2] == ["w", "/"]:
+            out[k:k + 2] = ["with"]
+            read.append(("w /", "with"))
+        elif out[k] in ("+", "&") and 0 < k < len(out) - 1 and out[k - 1].isalnum() and out[k + 1].isalpha():
+            read.append((out[k], "and"))
+            out[k] = "and"
+        elif out[k] == "/" and 0 < k < len(out) - 1 and out[k - 1].isalpha() and out[k + 1].isalpha():
+            last = not (out[k + 2:k + 3] == ["/"])
+            out[k] = "or" if last else ","
+            read.append(("/", out[k]))
+        k += 1
+    if "(" in out and ")" in out[out.index("("):] and any(w == "/" for w, _ in read):
+        a = out.index("(")
+        b = out.index(")", a)
+        if out[b + 1:] in ([], ["?"], ["."]):
+            out = [*out[:a], ":", *out[a + 1:b], *out[b + 1:]]
+    if not read:
+        return words, ()
+    return out, tuple(dict.fromkeys(read))
+
+
 # A label the question is put under ('Q1:', 'Question 3:', 'Quick question:'), and an aside in brackets that only
 # says again what the object is ('the red sedan (the car)'): they ask nothing ('quick' read as a speed, and each
 # bracket is an unknown word).
@@ -612,6 +653,7 @@ def floating_plane_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[
 FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing",
            "based"}
 TIME_SAID = {"moment", "instant", "when", "while", "during"}   # a preamble saying when stays
+POLITE = {"trouble", "mind", "possible", "bother"}
 QUESTION_OPENERS = {"is", "was", "are", "were", "do", "does", "did", "will", "would", "can", "could", "has", "have",
                     "how", "what", "which", "where"}
 
@@ -627,7 +669,8 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     if k is None:
         return words, ()
     main = words[k + 1 + (words[k + 1:k + 2] == ["but"]):]
-    hedge = words[:2] in (["if", "you"], ["if", "i"])   # 'if you had to guess': no counterfactual's condition
+    # 'if you had to guess', 'if it is not too much trouble': no counterfactual's condition
+    hedge = words[:2] in (["if", "you"], ["if", "i"]) or words[:1] == ["if"] and bool(POLITE.intersection(words[:k]))
     framed = (words[0] in FRAMING or hedge or words[k + 1:k + 2] == ["but"]) and \
         not OBJECT_WORDS.intersection(words[:k])
     if not framed or (CONDITION_WORDS.intersection(words[:k]) and not hedge) or asks_impact(words[:k]) or \
@@ -712,7 +755,8 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please )?"
                      r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to )"
                      r"(?:like to |love to )?know|i (?:am |' m )?wondering|i wonder"
-                     r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know)"
+                     r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
+                     r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me))"
                      r" (?:, )?(?:please )?")
 
 
@@ -1108,7 +1152,10 @@ END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], 
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence"}
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
-                  ["has", "stopped"], ["comes", "to", "an", "end"])
+                  ["has", "stopped"], ["comes", "to", "an", "end"],
+                  # as learners say them ('when video is finish')
+                  ["is", "finish"], ["is", "end"], ["is", "ended"], ["end"], ["finish"], ["ended"], ["finished"],
+                  ["over"])
 
 
 def _video_end(words: list[str]) -> tuple[int, int] | None:
