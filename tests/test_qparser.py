@@ -493,6 +493,7 @@ def test_a_notes_shorthand_reads_as_the_grammar_says_it():
     cases = {"green wagon slow at collision w/ red road bike? y/n": "green wagon slow at collision with red road bike?",
              "does the bus hit anything (yes/no)?": "does the bus hit anything?",
              "bus + car collide after end?": "bus and car collide after end?",
+             "red car vs. blue bus: do they collide?": "red car and blue bus: do they collide?",
              "speed of biplane at start (static/slow/fast)": "speed of biplane at start: static, slow or fast"}
     for text, said in cases.items():
         assert shorthand_as_said(tokenize(text))[0] == tokenize(said), text

@@ -494,14 +494,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 
-# A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' for 'and',
+# A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' or 'vs' for 'and',
 # choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
 ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["yes", "or", "no"], ["true", "/", "false"])
 
 
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
-    -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With the words read so, or the words as they are
+    (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With the words read so, or the words as they are
     and ()."""
     out, read = list(words), []
     end = len(out) - (out[-1:] in (["?"], ["."]))
@@ -516,9 +516,10 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         if out[k:k + 2] == ["w", "/"]:
             out[k:k + 2] = ["with"]
             read.append(("w /", "with"))
-        elif out[k] in ("+", "&") and 0 < k < len(out) - 1 and out[k - 1].isalnum() and out[k + 1].isalpha():
+        elif out[k] in ("+", "&", "vs", "versus") and 0 < k < len(out) - 1 and out[k - 1].isalnum() and \
+                (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):
             read.append((out[k], "and"))
-            out[k] = "and"
+            out[k:k + 1 + (out[k + 1] == ".")] = ["and"]
         elif out[k] == "/" and 0 < k < len(out) - 1 and out[k - 1].isalpha() and out[k + 1].isalpha():
             last = not (out[k + 2:k + 3] == ["/"])
             out[k] = "or" if last else ","
