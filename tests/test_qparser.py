@@ -424,6 +424,8 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
         assert read_as[0][1] == "tell me" and tokenize(text)[:len(tokenize(read_as[0][0]))] == tokenize(read_as[0][0])
     assert request_as_imperative(tokenize("I wonder whether the red sedan hits the bus."))[0] == tokenize(
         "tell me whether the red sedan hits the bus.")
+    assert negative_question_as_asked(tokenize("the bus accelerates at the start, or nah?"))[0] == \
+        tokenize("the bus accelerates at the start?")
     assert request_as_imperative(tokenize("I would be most grateful to know whether the bus hits the car."))[0] == \
         tokenize("tell me whether the bus hits the car.")
     assert tokenize("can u tell me") == tokenize("can you tell me")
@@ -911,7 +913,8 @@ def test_a_label_an_aside_a_closing_word_and_an_inverted_condition_are_read():
     # more said between commas about a vehicle already named by colour and type is no part of the question
     assert asides_dropped(tokenize("is the red sedan, which later hits the bus, fast?"))[0] == \
         tokenize("is the red sedan fast?")
-    for kept in ("is the sedan, the red one, fast?", "when the red sedan hits the blue bus, is it fast, or slow?"):
+    for kept in ("is the sedan, the red one, fast?", "when the red sedan hits the blue bus, is it fast, or slow?",
+                 "when the red sedan hits the bus, the sedan it is going slow, yes or no?"):   # the question itself
         assert asides_dropped(tokenize(kept))[0] == tokenize(kept), kept
     # a remark that names no vehicle, motion or collision goes; one that says what is asked stays
     assert asides_dropped(tokenize("there are many vehicles here. is this red bus fast?"))[0] == \

@@ -496,7 +496,7 @@ NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 
 # A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' or 'vs' for 'and',
 # choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
-ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["yes", "or", "no"], ["true", "/", "false"])
+ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["true", "/", "false"])   # ', yes or no?': `tail_as_question`
 
 
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -508,9 +508,10 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     for form in ANSWER_FORMS:
         for bracketed in (["(", *form, ")"], form):
             if out[end - len(bracketed):end] == bracketed:
-                read.append((" ".join(bracketed), "nothing, an answer's form"))
-                out = out[:end - len(bracketed)] + out[end:]
-                end -= len(bracketed)
+                start = end - len(bracketed) - (out[end - len(bracketed) - 1:end - len(bracketed)] in ([","], [":"]))
+                read.append((" ".join(out[start:end]), "nothing, an answer's form"))
+                out = out[:start] + out[end:]
+                end = start
     k = 0
     while k < len(out):
         if out[k:k + 2] == ["w", "/"]:
@@ -585,7 +586,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     while k < len(out):
         close = next((j for j in range(k + 2, min(k + 12, len(out))) if out[j] == ","), None) \
             if out[k] == "," and out[k + 1:k + 2] and out[k + 1] in ASIDE_STARTS and _coloured_before(out, k) else None
-        if close and "?" not in out[k:close]:
+        # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
+        if close and "?" not in out[k:close] and set(out[close + 1:]) - ASKING_ONLY:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []
             continue
@@ -594,6 +596,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 
 
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally"}
+ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
 # the red car , when it hits the bus , fast ?'): the grammar says it last
 INSERTED_TIMES = {"at", "in", "during", "ever", "right", "initially", "once", "when", "while", "after", "before",
@@ -755,7 +758,7 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please )?"
                      r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to )"
-                     r"(?:like to |love to )?know|i (?:am |' m )?wondering|i wonder"
+                     r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me))"
                      r" (?:, )?(?:please )?")
@@ -791,7 +794,7 @@ def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
                   "these", "those", "either", "both", "they", "some", "all"}
 TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
-AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"])
+AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"])
 
 
 def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
