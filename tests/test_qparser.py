@@ -429,6 +429,8 @@ def test_a_question_asked_as_a_request_is_read_as_tell_me():
     assert request_as_imperative(tokenize("I would be most grateful to know whether the bus hits the car."))[0] == \
         tokenize("tell me whether the bus hits the car.")
     assert tokenize("can u tell me") == tokenize("can you tell me")
+    for text in ("Would you kindly tell me the speed of the bus?", "I should like to know the speed of the bus?"):
+        assert request_as_imperative(tokenize(text))[0] == tokenize("tell me the speed of the bus?"), text
     for text in ("Tell me the speed of the red sedan at the start.", "Would you say the red sedan is fast at first?",
                  "Do you expect the red sedan to hit the bus?", "Is the red sedan, could you tell me, fast?"):
         assert request_as_imperative(tokenize(text)) == (tokenize(text), ()), text
@@ -478,6 +480,7 @@ def test_idioms_of_speed_time_and_the_engine_read_as_the_grammar_says_them():
              "Picture the car moving slowly. Would it hit the bus?": "imagine the car moving slowly. would it hit the "
                                                                      "bus?",
              "Is the quick car gathering speed?": "is the fast car accelerating?",
+             "How much fast is the car?": "how fast is the car?",
              "Which colour is the slower-moving car, and the non-moving one?": "which colour is the slow-moving car, "
                                                                                "and the stationary one?"}
     for text, said in cases.items():
@@ -502,11 +505,13 @@ def test_a_notes_shorthand_reads_as_the_grammar_says_it():
     for text in ("Is the bus slow or fast?", "Does the bus hit the car?"):
         assert shorthand_as_said(tokenize(text)) == (tokenize(text), ()), text
     parser = QuestionParser.load()
-    speed, cause, end = parser.analyse_batch(["speed of biplane at start (static/slow/fast)",
-                                              "What made the green bus change direction?",
-                                              "Is the dirtbike stopped when video is finish?"])
+    speed, cause, end, wrap, over = parser.analyse_batch([
+        "speed of biplane at start (static/slow/fast)", "What made the green bus change direction?",
+        "Is the dirtbike stopped when video is finish?", "Which way is the scooter heading as the clip wraps up?",
+        "Once the clip's over, are the gray truck and the brown airliner headed for a collision?"])
     assert speed.program == "Objects filter_attributes[biplane] unique start query_moving_velocity".split()
-    assert "why" in cause.reason and "video's end" in end.reason
+    assert "why" in cause.reason and "video's end" in end.reason and "video's end" in wrap.reason
+    assert over.program[0] == "futureEvents"
 
 
 def test_a_request_closed_by_a_question_mark_reads_as_the_grammar_closes_it():
@@ -910,6 +915,8 @@ def test_a_label_an_aside_a_closing_word_and_an_inverted_condition_are_read():
     assert asides_dropped(tokenize("is the bus (the blue one) fast?"))[0] == tokenize("is the bus (the blue one) fast?")
     assert asides_dropped(tokenize("the bus is parked. is it red?"))[0] == tokenize("the bus is parked. is it red?")
     assert interjections_dropped(tokenize("does it hit anything lol?"))[0] == tokenize("does it hit anything")
+    # a speaker's fillers within the question, with their commas
+    assert interjections_dropped(tokenize("is the um green sedan, uh, fast?"))[0] == tokenize("is the green sedan fast?")
     # more said between commas about a vehicle already named by colour and type is no part of the question
     assert asides_dropped(tokenize("is the red sedan, which later hits the bus, fast?"))[0] == \
         tokenize("is the red sedan fast?")

@@ -282,8 +282,9 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + labelled + inserted + opened + idioms + described + typed + afloat + end + framing + attended
-                   + request + stated + negative + asked + aloft + heading + subject + first + more + tail + offered)
+        request = (shorthand + named + labelled + inserted + opened + idioms + described + typed + afloat + end
+                   + framing + attended + request + stated + negative + asked + aloft + heading + subject + first
+                   + more + tail + offered)
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -467,6 +468,7 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
                  "hey", "anyway", "anyways"}
 COMMA_INTERJECTIONS = {"right", "now", "like"}
+FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
@@ -487,6 +489,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
                        and end - 1 > k and words[end - 2] in CLOSING_INTERJECTIONS):
         end -= 1
     closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
+    # a speaker's fillers within the question ('the um green sedan'), with the commas around them
+    within = [j for j in range(k, end) if words[j] in FILLERS]
+    if within:
+        fillers = set(within) | {j + 1 for j in within if words[j + 1:j + 2] == [","]} | {
+            j - 1 for j in within if words[j - 1] == "," and words[j + 1:j + 2] in ([","], ["?"], ["."], [])}
+        closing = ((" ".join(words[j] for j in within), "nothing, a filler"), *closing)
+        kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
+        words, end = kept + words[end:], len(kept)
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"}:
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
@@ -501,8 +511,8 @@ ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["true", "/", "false"])   #
 
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
-    (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With the words read so, or the words as they are
-    and ()."""
+    (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With
+    the words read so, or the words as they are and ()."""
     out, read = list(words), []
     end = len(out) - (out[-1:] in (["?"], ["."]))
     for form in ANSWER_FORMS:
@@ -756,8 +766,8 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
 # 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
 # 'Tell me ...'.
-REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please )?"
-                     r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to )"
+REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please |kindly )?"
+                     r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to |should )"
                      r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me))"
@@ -923,6 +933,8 @@ IDIOMS = tuple(sorted({
     # within the video, not after it ('has it hit anything by the end of the video?')
     **{("by", "the", "end", "of", "the", film): ("during", "the", "video") for film in ("video", "clip", "footage",
                                                                                        "film", "recording", "movie")},
+    # a learner's 'how much fast' asks how fast (not how many)
+    **{("how", "much", pace): ("how", pace) for pace in ("fast", "quickly", "quick", "speedy", "rapidly")},
     # 'quick' is 'fast' ('the quick car', 'is it quick' were read as nothing); 'non-moving' is 'stationary'
     ("quick",): ("fast",),
     **{("non", *dash, "moving"): ("stationary",) for dash in ((), ("-",))},
@@ -1152,14 +1164,15 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 # The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
-END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"])
+END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"])
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence"}
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
                   ["has", "stopped"], ["comes", "to", "an", "end"],
                   # as learners say them ('when video is finish')
                   ["is", "finish"], ["is", "end"], ["is", "ended"], ["end"], ["finish"], ["ended"], ["finished"],
-                  ["over"])
+                  ["over"], ["wraps", "up"], ["winds", "down"],
+                  *(["'", "s", e] for e in ("over", "done", "finished", "ended", "through")))
 
 
 def _video_end(words: list[str]) -> tuple[int, int] | None:
