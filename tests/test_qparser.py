@@ -512,6 +512,19 @@ def test_a_notes_shorthand_reads_as_the_grammar_says_it():
     assert speed.program == "Objects filter_attributes[biplane] unique start query_moving_velocity".split()
     assert "why" in cause.reason and "video's end" in end.reason and "video's end" in wrap.reason
     assert over.program[0] == "futureEvents"
+    # a label's noun phrase; a heading before a colon that says nothing; a request is never yes or no; a unit
+    label, heading, identify, unit, very = parser.analyse_batch([
+        "blue scooter speed at the start?", "Cycling coach here: is the red sedan fast at the start?",
+        "identify the colour of the aircraft floating aloft at the start",
+        "What is the speed in km/h of the green scooter?", "How fast is the red sedan at the very end of the video?"])
+    assert label.program == "Objects filter_attributes[blue] filter_attributes[scooter] unique start " \
+        "query_moving_velocity".split()
+    assert heading.program == f"{'Objects filter_attributes[red] filter_attributes[sedan] unique'} start " \
+        "is_moving_velocity[fast]".split()
+    assert "asks for something" in identify.reason and "in km/h" in unit.reason and "video's end" in very.reason
+    # a heading that says when stays
+    assert asides_dropped(tokenize("after the video ends: do they collide?"))[0] == \
+        tokenize("after the video ends: do they collide?")
 
 
 def test_a_request_closed_by_a_question_mark_reads_as_the_grammar_closes_it():

@@ -339,7 +339,7 @@ class QuestionParser:
                         "whether one is faster (or slower) than the other"), read_as, said
         measured = speed_measured(said)
         if measured:
-            return [], (f"the question gives a speed as a number ('{measured}'), which no question here asks: ask "
+            return [], (f"the question measures a speed in numbers ('{measured}'), which no question here asks: ask "
                         "whether the vehicle is static, slow or fast"), read_as, said
         looks = next((f"{a} {b}" for a, b in zip(said, said[1:]) if a in LOOKS and b in OBJECT_WORDS), None)
         if looks:
@@ -531,7 +531,7 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
                 (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):
             read.append((out[k], "and"))
             out[k:k + 1 + (out[k + 1] == ".")] = ["and"]
-        elif out[k] == "/" and 0 < k < len(out) - 1 and out[k - 1].isalpha() and out[k + 1].isalpha():
+        elif out[k] == "/" and 0 < k < len(out) - 1 and {out[k - 1], out[k + 1]} <= SLASHED:
             last = not (out[k + 2:k + 3] == ["/"])
             out[k] = "or" if last else ","
             read.append(("/", out[k]))
@@ -561,15 +561,18 @@ def _label(word: str) -> bool:
 
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
-    how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence
-    that names no vehicle, motion or collision and imagines nothing. With the words read as nothing, or the words as
-    they are and ()."""
+    how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
+    or a heading before a colon ('cycling coach here :'), that names no vehicle, motion or collision and imagines
+    nothing; a heading that says a time stays. With the words read as nothing, or the words as they are and ()."""
     read = []
     while True:
-        end = next((k for k, w in enumerate(words) if w in (".", "!")), None)
+        end = next((k for k, w in enumerate(words) if w in (".", "!", ":")), None)
         if end is None or end + 1 == len(words) or set(words[:end]) & (
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
                 | FLOATING_WORDS | STATIC_SAID) or asks_impact(words[:end]):   # one that says what is asked stays
+            break
+        # and so does a heading that says when or how to answer ('at the start :', 'true or false :')
+        if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS):
             break
         read.append((" ".join(words[:end + 1]), "nothing, a remark"))
         words = words[end + 1:]
@@ -605,6 +608,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return out, tuple(read)
 
 
+HEADING_KEPT = {"end", "ends", "finish", "after", "before", "once", "when", "while", "later", "future", "beyond",
+                "first", "last", "moment", "instant", "frame", "frames", "time", "true", "false", "yes", "no"}
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally"}
 ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
@@ -786,7 +791,9 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
-IMPERATIVES = (["tell", "me"], ["describe"], ["give", "me"], ["state"], ["name"], ["say"])
+IMPERATIVES = (["tell", "me"], ["describe"], ["give", "me"], ["state"], ["name"])   # not "say": "say it had been ..."
+# requests for a property or a vehicle, never for yes or no ('identify the colour of the plane that floats')
+ASKING_FOR = (*IMPERATIVES, ["identify"], ["determine"], ["report"], ["find"], ["give"], ["list"])
 
 
 def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -836,9 +843,9 @@ QUERY_NOUNS = MOTION_NOUNS | ATTRIBUTE_NOUNS
 
 def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
-    thing that floats?'), or asked for by 'tell me' where the grammar's 'tell me' never does ('tell me the speed of
-    the red car', 'tell me the red car's direction'; it says 'tell me how fast ...'), read as 'what is ...'; with
-    the words read so, or the words as they are and ()."""
+    thing that floats?', 'blue scooter speed at the start?'), or asked for by 'tell me' where the grammar's 'tell me'
+    never does ('tell me the speed of the red car', 'tell me the red car's direction'; it says 'tell me how fast
+    ...'), read as 'what is ...'; with the words read so, or the words as they are and ()."""
     told = words[:2] == ["tell", "me"]
     k = 2 * told + (words[2 * told:2 * told + 1] == ["the"])
     nouns = MOTION_NOUNS if told else QUERY_NOUNS
@@ -848,6 +855,13 @@ def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[st
         end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
         if end > k and words[end:end + 2] == ["'", "s"] and words[end + 2:end + 3] and words[end + 2] in nouns:
             return ["what", "is"] + words[2:], (("tell me", "what is"),)
+    # a label's 'blue scooter speed at the start?' (not 'the bus speed up ...', a learner's verb)
+    end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
+    if not told and end > k and words[end:end + 1] and words[end] in MOTION_NOUNS and \
+            words[end + 1:end + 2] not in (["up"], ["down"], ["of"]):
+        said = " ".join(words[:end + 1])
+        return ["what", "is", "the", words[end], "of", "the", *words[k:end], *words[end + 1:]], \
+            ((said, f"what is the {words[end]} of the {' '.join(words[k:end])}"),)
     return words, ()
 
 
@@ -1114,6 +1128,8 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
                      ("forward",): "front", ("forwards",): "front", ("backward",): "back", ("backwards",): "back",
                      ("away",): "back", **{(t, *v): "front" for t in ("towards", "toward") for v in VIEWER},
                      **{("away", "from", *v): "back" for v in VIEWER}}
+# the words a note offers split by slashes ('static/slow/fast', 'left/right', 'red/blue')
+SLASHED = {w for choices in (SPEED_CHOICES, DIRECTION_CHOICES) for said in choices for w in said} | set(COLOR_NAMES)
 OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
           (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
 # 'to the left or right of the bus' says where it is, not where it goes
@@ -1850,8 +1866,11 @@ SPEED_NUMBER = re.compile(r"^\d+(?:\.\d+)?(?:mph|kph|kmh|mps|m|km)$")   # a numb
 
 
 def speed_measured(words: list[str]) -> str:
-    """The speed a question says as a number ('5 m / s', '20mph'), or ''."""
+    """The speed a question says as a number ('5 m / s', '20mph') or asks in a unit ('in km / h'), or ''."""
     for k, w in enumerate(words):
+        unit = next((u for u in SPEED_UNITS if words[k + 1:k + 1 + len(u)] == u), None) if w == "in" else None
+        if unit:
+            return " ".join(["in", *unit]).replace(" / ", "/")
         number = w.isdigit() or w in NUMBERS or w in ("one", "six", "seven", "eight", "nine", "ten", "twenty")
         unit = next((u for u in SPEED_UNITS if words[k + 1:k + 1 + len(u)] == u), None) if number else None
         if unit:
@@ -2365,6 +2384,8 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     if OPS[operation(program[-1])].output is not bool:
         return ""
     head = _head(words)
+    if any(head[:len(i)] == i for i in ASKING_FOR) and not {"whether", "if"} & set(head):
+        return f"the question asks for something ('{head[0]}'), but its nearest reading asks yes or no"
     if head[:1] and head[0] in WHO and not OBJECT_WORDS.intersection(words[words.index("or"):] if "or" in words
                                                                     else []):   # not 'who is faster: X or Y?'
         return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
@@ -2587,7 +2608,8 @@ IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik"
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
-END_TIMES = [[p, "the", e] for p in ("at", "by", "towards", "toward", "near") for e in ("end", "finish", "close")] + \
+END_TIMES = [[p, "the", *very, e] for p in ("at", "by", "towards", "toward", "near") for very in ((), ("very",))
+             for e in ("end", "finish", "close")] + \
     [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
