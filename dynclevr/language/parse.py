@@ -952,10 +952,9 @@ IDIOMS = tuple(sorted({
     # 'quick' is 'fast' ('the quick car', 'is it quick' were read as nothing); 'non-moving' is 'stationary'
     ("quick",): ("fast",),
     **{("non", *dash, "moving"): ("stationary",) for dash in ((), ("-",))},
-    **{(gather, "speed"): (accelerate,) for gather, accelerate in (("gathering", "accelerating"), ("gathers",
-                                                                                                 "accelerates"),
-                                                                   ("gathered", "accelerated"),
-                                                                   ("gather", "accelerate"))},
+    **{(gather, "speed"): (accelerate,) for gather, accelerate in (
+        ("gathering", "accelerating"), ("gathers", "accelerates"), ("gathered", "accelerated"),
+        ("gather", "accelerate"))},
     # a comparative said as a class ('the slower-moving vehicle'), as the grammar says the class
     **{(comparative, *dash, "moving"): said for comparative, said in (("slower", ("slow", "-", "moving")),
                                                                      ("faster", ("quickly", "moving")))
