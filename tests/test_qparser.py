@@ -504,12 +504,16 @@ def test_a_notes_shorthand_reads_as_the_grammar_says_it():
         assert shorthand_as_said(tokenize(text))[0] == tokenize(said), text
     for text in ("Is the bus slow or fast?", "Does the bus hit the car?"):
         assert shorthand_as_said(tokenize(text)) == (tokenize(text), ()), text
+    # 'km/h' is a unit, not a choice; an answer's form alone asks nothing (and never raises)
+    assert shorthand_as_said(tokenize("in km/h"))[0] == tokenize("in km/h")
+    assert shorthand_as_said(tokenize("y/n"))[0] == []
     parser = QuestionParser.load()
     speed, cause, end, wrap, over = parser.analyse_batch([
         "speed of biplane at start (static/slow/fast)", "What made the green bus change direction?",
         "Is the dirtbike stopped when video is finish?", "Which way is the scooter heading as the clip wraps up?",
         "Once the clip's over, are the gray truck and the brown airliner headed for a collision?"])
     assert speed.program == "Objects filter_attributes[biplane] unique start query_moving_velocity".split()
+    assert "asks nothing" in parser.analyse_batch(["y/n"])[0].reason
     assert "why" in cause.reason and "video's end" in end.reason and "video's end" in wrap.reason
     assert over.program[0] == "futureEvents"
     # a label's noun phrase; a heading before a colon that says nothing; a request is never yes or no; a unit

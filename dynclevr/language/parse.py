@@ -285,6 +285,8 @@ class QuestionParser:
         request = (shorthand + named + labelled + inserted + opened + idioms + described + typed + afloat + end
                    + framing + attended + request + stated + negative + asked + aloft + heading + subject + first
                    + more + tail + offered)
+        if not words:   # 'y/n' alone: an answer's form, and nothing asked
+            return [], "the question asks nothing once its asides are read ('" + text.strip() + "')", request, words
         reverse = reversed_as_said(words)
         if reverse:
             return [], reverse, request, words
@@ -1127,8 +1129,8 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
                      ("forward",): "front", ("forwards",): "front", ("backward",): "back", ("backwards",): "back",
                      ("away",): "back", **{(t, *v): "front" for t in ("towards", "toward") for v in VIEWER},
                      **{("away", "from", *v): "back" for v in VIEWER}}
-# the words a note offers split by slashes ('static/slow/fast', 'left/right', 'red/blue')
-SLASHED = {w for choices in (SPEED_CHOICES, DIRECTION_CHOICES) for said in choices for w in said} | set(COLOR_NAMES)
+# the words a note offers split by slashes ('static/slow/fast', 'left/right')
+SLASHED = {w for choices in (SPEED_CHOICES, DIRECTION_CHOICES) for said in choices for w in said}
 OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
           (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
 # 'to the left or right of the bus' says where it is, not where it goes
