@@ -23,6 +23,7 @@ from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_s
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
+                                     corrections_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -1630,3 +1631,58 @@ def test_a_type_checked_two_attributes_a_motions_onset_and_a_partner_at_the_star
     for text in ("Does the purple bus crash into anything after it starts moving?",
                  "At the start of the clip, which color is the stopped thing?"):
         assert parser.parse(text) is not None, text
+
+
+def test_a_speakers_correction_of_a_vehicles_name_keeps_the_name_said_last():
+    """'the red no the blue sedan', 'the gray jet no sorry the gray biplane': the name after the correction stands."""
+    cases = {"does the red no the blue sedan hit anything": "does the blue sedan hit anything",
+             "is the gray jet no sorry the gray biplane fast": "is the gray biplane fast",
+             "does it hit the bus , I mean , the red truck ?": "does it hit the red truck ?",
+             "would it run into the blue mountain bike no the blue road bike": "would it run into the blue road bike"}
+    for text, said in cases.items():
+        assert corrections_dropped(tokenize(text))[0] == tokenize(said), text
+    # no correction: an answer's form, an alternative, a 'no' that negates
+    for text in ("is the red car fast , yes or no ?", "is the red car or the blue bus faster ?",
+                 "does the red car hit no other vehicle ?", "is the red car fast ? no ?"):
+        assert corrections_dropped(tokenize(text)) == (tokenize(text), ()), text
+
+
+def test_spoken_questions_their_fillers_tags_and_slang_read_as_the_grammar_says_them():
+    """A voice assistant's transcripts, learners' tags, enthusiasts' slang and formal certainty, each read into its
+    family; questions that ask what no family asks stay unparsed."""
+    parser = QuestionParser.load()
+    school = "Objects filter_attributes[purple] filter_attributes[school_bus] unique"
+    dirt = "Objects filter_attributes[purple] filter_attributes[dirtbike] unique"
+    scooter = "Objects filter_attributes[purple] filter_attributes[scooter] unique"
+    bus, bike = ("Objects filter_attributes[purple] filter_attributes[school_bus] unique",
+                 "Objects filter_attributes[gray] filter_attributes[tandem_bike] unique")
+    cases = {
+        "hey assistant does the red school bus no wait the purple school bus collide with anything":
+            f"Events {school} filter_collision exist",
+        "so like the purple dirt bike at the very beginning is it going fast or slow or not moving at all":
+            f"{dirt} start query_moving_velocity",
+        "At the start of video itself, purple scooter is not moving, isn't it?": f"{scooter} start is_static",
+        "Is the purple dirt bike at the beginning slower than the purple scooter, or?":
+            f"{dirt} {scooter} start slower_velocity",
+        "Grandma wants to know, is that purple scooter just parked there when the video begins?":
+            f"{scooter} start is_static",
+        "is the purple scooter hauling at the start?": f"{scooter} start is_moving_velocity[fast]",
+        "Determine the speed at which the purple scooter enters the field of view.":
+            f"{scooter} {scooter} come_in_frame query_moving_velocity",
+        "How fast is the purple scooter moving when it comes first into the picture?":
+            f"{scooter} {scooter} come_in_frame query_moving_velocity",
+        "The scooter purple, how fast it is moving at the start of the video?":
+            f"{scooter} start query_moving_velocity",
+        "Can it be established that a collision occurred between the purple school bus and the gray tandem bike?":
+            f"Events {bus} filter_collision {bike} filter_collision exist",
+        "Picture this: the purple scooter is going fast at the start. Does it collide with the purple school bus "
+        "then?": f"{scooter} Counterfactual_moving_fast {scooter} filter_collision {school} filter_collision exist",
+    }
+    texts = list(cases)
+    for text, parse in zip(texts, parser.analyse_batch(texts)):
+        assert parse.program is not None and " ".join(parse.program) == cases[text], (text, parse.reason)
+    refused = ["At what time, in seconds, does the purple scooter collide with the purple school bus?",
+               "Who's driving the purple school bus?", "In which direction does purple scooter move at end of video?",
+               "Which vehicle was at fault in the collision between the purple scooter and the purple school bus?"]
+    for text, parse in zip(refused, parser.analyse_batch(refused)):
+        assert parse.program is None, (text, parse.program)

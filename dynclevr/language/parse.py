@@ -261,6 +261,8 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, shorthand = shorthand_as_said(words)
         words, named = catalogue_names(words)
+        words, corrected = corrections_dropped(words)
+        words, owned = owners_dropped(words)
         words, labelled = asides_dropped(words)
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
@@ -282,7 +284,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + labelled + inserted + opened + idioms + described + typed + afloat + end
+        request = (shorthand + named + corrected + owned + labelled + inserted + opened + idioms + described + typed + afloat + end
                    + framing + attended + request + stated + negative + asked + aloft + heading + subject + first
                    + more + tail + offered)
         if not words:   # 'y/n' alone: an answer's form, and nothing asked
@@ -468,8 +470,11 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 # decoder looks past one such unknown word, not a run of them with their commas. 'right', 'now' and 'like' only with
 # a comma after them: 'Right at the start, is ...' opens with a time.
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
-                 "hey", "anyway", "anyways"}
+                 "hey", "anyway", "anyways", "yo", "hi", "hello"}
 COMMA_INTERJECTIONS = {"right", "now", "like"}
+# whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
+VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer", "bot",
+             "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
@@ -481,8 +486,10 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
     k = 0
+    # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
     while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS
-                              and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS):
+                              and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
+                              or k and words[k - 1] in INTERJECTIONS and words[k] in VOCATIVES | {"like"}):
         k += 1
         while k < len(words) and words[k] in INTERJECTION_ENDS:
             k += 1
@@ -505,6 +512,70 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
+
+# A speaker correcting a vehicle's name as they say it ('the red no the blue sedan', 'the gray jet no sorry the gray
+# biplane', 'the bus I mean the truck'): the words after the correction stand for the ones before it.
+CORRECTING = {"no", "wait", "sorry", "mean", "rather", "oops", "correction", "scratch", "actually"}
+CORRECTION_WORDS = CORRECTING | {"i", "or", "that", ","} | FILLERS   # 'uh wait no', 'I mean', 'or rather'
+
+
+OWNERS = {"my", "our", "your"}
+TOYS = {"toy", "toys", "model", "little"}
+
+
+def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
+    ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
+    words read so, or the words as they are and ()."""
+    named = OBJECT_WORDS | NOUNS_SAID
+    out, read, k = [], [], 0
+    while k < len(words):
+        j = k + (words[k] in OWNERS)
+        while words[j:j + 1] and words[j] in TOYS:
+            j += 1
+        if j > k and words[j:j + 1] and words[j] in named and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])):
+            said = ["the"] if words[k] in OWNERS else []
+            read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
+            out += said
+            k = j
+            while words[k:k + 1] and words[k] in named:
+                out.append(words[k])
+                k += 1
+            if words[k:k + 1] and words[k] in TOYS - {"little"}:
+                read.append((words[k], "nothing"))
+                k += 1
+            continue
+        out.append(words[k])
+        k += 1
+    return out, tuple(read)
+
+
+def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'does the red no the blue sedan hit ...' -> 'does the blue sedan hit ...': a vehicle's name said, corrected
+    ('no', 'sorry', 'I mean', 'uh', commas around them) and said again from its article. With the correction read
+    so, or the words as they are and ()."""
+    named = OBJECT_WORDS | NOUNS_SAID
+    for k in range(1, len(words)):
+        if words[k - 1] not in named:
+            continue
+        j = k
+        while words[j:j + 1] and words[j] in CORRECTION_WORDS:
+            j += 1
+        marker = [w for w in words[k:j] if w != ","]
+        # a word that corrects, or a speaker's filler alone ('the blue uh the purple bus'); 'or' and 'that' only in
+        # 'or rather' and 'scratch that' ('the red car or the blue bus' offers two)
+        if not marker or not (CORRECTING.intersection(marker) or set(marker) <= FILLERS) or \
+                "or" in marker and "rather" not in marker or "that" in marker and "scratch" not in marker:
+            continue
+        if not (words[j:j + 1] and words[j] in ("the", "a", "an", "that") and words[j + 1:j + 2]
+                and words[j + 1] in named):
+            continue
+        start = k - 1
+        while start > 0 and words[start - 1] in named:
+            start -= 1
+        start -= start > 0 and words[start - 1] in ("the", "a", "an", "that", "this")
+        return words[:start] + words[j:], ((" ".join(words[start:j]), "nothing, a correction"),)
+    return words, ()
 
 # A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' or 'vs' for 'and',
 # choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
@@ -777,19 +848,30 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|cou
                      r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to |should )"
                      r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
-                     r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me))"
+                     r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
+                     r"|(?:my )?[a-z]+ (?:wants|wanted|would like|' d like|needs) to know)"
                      r" (?:, )?(?:please )?")
+# whether a statement holds, asked formally ('Can it be established that ...'): the grammar's 'is it true that'
+CERTAINTY = re.compile(r"^(?:can|could) (?:it|one|we|you) (?:be )?(?:established|shown|confirmed|verified|determined|"
+                       r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
+                       r"demonstrate) (?:that|whether|if) ")
 
 
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question that opens with a request for it, the request read as the grammar's 'tell me': 'can you tell me
     the speed of the red car at the start ?' -> 'tell me the speed of ...'; with the words read so (`Parse.read_as`),
     or the words as they are and ()."""
+    m = CERTAINTY.match(" ".join(words) + " ")
+    if m:
+        rest = " ".join(words)[m.end():].split()
+        return ["is", "it", "true", "that"] + rest, ((" ".join(words[:len(words) - len(rest)]), "is it true that"),)
     m = REQUEST.match(" ".join(words) + " ")
     if not m:
         return words, ()
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
+    if rest[:1] and rest[0] in YES_NO_OPENERS:   # 'I'd like to know, is the bus fast?': the question itself
+        return rest, ((said, "nothing, a request"),)
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
 
@@ -827,13 +909,18 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
             return words[:k + 1] + words[k + 2:], ((f"{words[k]} not", words[k]),)
     end = words[-1:] if words[-1:] in (["?"], ["."]) else []
     body = words[:len(words) - len(end)]
+    if body[-2:] == [",", "or"]:   # 'is it slower than the bus , or ?' (a learner's tag)
+        return body[:-2] + ["?"], ((", or", "?"),)
     negative = [[w, "not", p] for w in sorted(YES_NO_OPENERS) for p in sorted(TAG_PRONOUNS)]
     for tag in negative + list(AGREEING_TAGS):
         n = len(tag) + 1
         statement = body[:-n]
         # 'is it going left , right ?' offers a choice: only a statement takes an agreeing tag
         asked = tag[1:2] != ["not"] and statement[:1] and statement[0] in YES_NO_OPENERS | ASKING | {"how"}
-        if len(body) > n and body[-n:] == [","] + tag and not asked and not NEGATIONS.intersection(statement):
+        # a statement's own negation only as 'not moving', which reads as static ('it is not moving , is not it ?')
+        denied = any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
+                     for k, w in enumerate(statement))
+        if len(body) > n and body[-n:] == [","] + tag and not asked and not denied:
             return statement + ["?"], ((" ".join(body[-n:]), "?"),)
     return words, ()
 
@@ -920,7 +1007,8 @@ STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
 IDIOMS = tuple(sorted({
     **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
                            ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
-                           ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("when", "things", "kick", "off"),
+                           ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("outta", "the", "gate"),
+                           ("outta", "the", "gates"), ("outta", "the", "blocks"), ("when", "things", "kick", "off"),
                            ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
                            ("when", "everything", "kicks", "off"), ("from", "the", "off"))},
     **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
@@ -928,8 +1016,42 @@ IDIOMS = tuple(sorted({
                               ("like", "a", "rocket"), ("like", "the", "wind"),
                               ("like", "a", "bat", "out", "of", "hell"))},
     **{(verb + ending, "along"): (moving, "fast") for verb in ("tear", "belt", "bomb", "barrel", "bowl", "motor",
-                                                                 "pelt", "streak", "rocket", "haul")
+                                                                 "pelt", "streak", "rocket", "haul", "scream", "zoom",
+                                                                 "whizz", "whiz", "race")
        for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
+    ("hauling",): ("moving", "fast"),
+    **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
+    ("bombing", "it"): ("moving", "fast"),
+    ("budging",): ("moving",),
+    **{(punch, *gas): (accelerate,) for punch, accelerate in (("punching", "accelerating"), ("punches", "accelerates"),
+                                                              ("punched", "accelerated"), ("punch", "accelerate"))
+       for gas in (("the", "gas"), ("it",))},
+    # a vehicle as its rider calls it ('what kinda ride is ...', 'the ride that's ...')
+    **{(*before, "ride"): (*said, "vehicle") for before, said in ((("the",), ("the",)), (("kind", "of"), ("kind", "of")),
+                                                                  (("sort", "of"), ("sort", "of")),
+                                                                  (("type", "of"), ("type", "of")),
+                                                                  (("kinda",), ("kind", "of")),
+                                                                  (("sorta",), ("sort", "of")))},
+    **{(verb, "along"): (moving, "slowly") for forms in (("poking", "pokes", "poked"), ("inching", "inches", "inched"),
+                                                          ("puttering", "putters", "puttered"),
+                                                          ("pottering", "potters", "pottered"),
+                                                          ("trundling", "trundles", "trundled"),
+                                                          ("plodding", "plods", "plodded"))
+       for verb, moving in zip(forms, ("moving", "moves", "moved"))},
+    # coming into view said of the picture's edge ('enters the field of view', 'comes first into the picture')
+    **{(enter, *seen): (come, "into", "view") for enter, come in (("enters", "comes"), ("entered", "came"),
+                                                                  ("enter", "come"), ("entering", "coming"))
+       for seen in (("the", "field", "of", "view"), ("the", "camera", "'", "s", "field", "of", "view"),
+                    ("first", "in", "the", "view"), ("first", "into", "the", "view"), ("first", "into", "view"))},
+    **{(come, "first", "into"): ("first", come, "into") for come in ("comes", "came", "come", "coming")},
+    **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
+                                                                              ("make", "come"), ("making", "coming"))
+       for its in ("its", "an", "his", "her") for grand in ((), ("grand",), ("big",))},
+    # a small collision by its everyday name
+    **{("fender", *dash, bender): (crash,) for bender, crash in (("bender", "collision"), ("benders", "collisions"))
+       for dash in ((), ("-",))},
+    **{(clip, the): (hit, the) for clip, hit in (("clips", "hits"), ("clipped", "hit"), ("clipping", "hitting"))
+       for the in ("the", "a", "an", "into")},
     **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"), ("flying", "moving"),
                                                              ("flies", "moves"), ("flew", "moved"),
                                                              ("haring", "moving"), ("careering", "moving"),
@@ -999,15 +1121,22 @@ IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # sa
 
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
+    read = ()
+    if words[:1] and words[0] in IMAGINING | {"imagine", "suppose"} and words[1:3] in (["this", ":"], ["this", ","],
+                                                                                   ["that", ":"], ["this", "-"]):
+        read, words = ((" ".join(words[:3]), "imagine"),), ["imagine", *words[3:]]   # 'Picture this: the bus ...'
     if words[:1] and words[0] in IMAGINING:
-        out, read = phrases_as_said(words[1:], IDIOMS)
-        return ["imagine", *out], ((words[0], "imagine"), *read)
-    out, read = phrases_as_said(words, IDIOMS)
-    # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past is the grammar's
-    # 'had been' (it was read as whether the bus is parked at the collision)
+        out, more = phrases_as_said(words[1:], IDIOMS)
+        return ["imagine", *out], (*read, (words[0], "imagine"), *more)
+    out, more = phrases_as_said(words, IDIOMS)
+    read += more
+    # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past (or, a sentence
+    # of its own, in the present) is the grammar's 'had been' (it was read as whether the bus is parked at the
+    # collision)
     if out[:1] and out[0] in ("imagine", "suppose", "supposing"):
         end = next((k for k, w in enumerate(out) if w in (".", ",", ";", ":", "-", "?")), len(out))
-        k = next((k for k in range(1, end) if out[k] in ("was", "were")), None)
+        now = ("is", "are") if out[end:end + 1] in ([":"], ["."], [";"]) else ()
+        k = next((k for k in range(1, end) if out[k] in ("was", "were", *now)), None)
         if k is not None:
             read += ((out[k], "had been"),)
             out[k:k + 1] = ["had", "been"]
@@ -1121,6 +1250,8 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 # What a question offers to choose from ('is it fast or slow?', 'is it going left or right?'), each by the words that
 # say it; the grammar's list of the choices asks which one
 SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "parked", "motionless", "stopped")},
+                 **{("not", *m, *a): "static" for m in (("moving",), ("going",), ("travelling",), ("traveling",),
+                                                          ("in", "motion")) for a in ((), ("at", "all"))},
                  ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
                  ("rapidly",): "fast"}
 VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
@@ -1156,9 +1287,13 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     which one, as the grammar's lists of them do (the decoder read 'fast or slow' as 'is it fast?', 'left or right'
     as the speed). Two choices at least, of speeds one slow or fast. With the words read so, or the words as they
     are and ()."""
-    if not words or words[0] not in AUXILIARIES:
+    # asked as yes or no: an auxiliary first, or before its subject after the vehicle or a clause said first ('the
+    # red car at the start , is it fast or slow')
+    asking = [m for m, w in enumerate(words) if w in AUXILIARIES and (m == 0 or words[m + 1:m + 2] and (
+        words[m + 1] in SUBJECT_STARTS or words[m + 1] in OBJECT_WORDS))]
+    if not asking:
         return words, ()
-    for i in range(len(words)):
+    for i in range(asking[0] + 1, len(words)):
         for choices, listed, needed in OFFERS:
             first = _choice(words, i, choices)
             if not first or choices is DIRECTION_CHOICES and words[i - 1:i] and words[i - 1] in PLACE_BEFORE:
@@ -1325,7 +1460,9 @@ TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "
 
 def _head(words: list[str]) -> list[str]:
     """The question's words after a clause of time said first ('at the start , what ...'), else all of them."""
-    return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words else words
+    # 'at what time , in seconds , does ...' asks at its first words
+    return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
+        words[1:2] and words[1] in ASKING) else words
 
 
 def _asked(words: list[str]) -> tuple[str | None, str]:
@@ -1453,6 +1590,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     kind = next((why.format(w) for words_of_kind, why in NO_FAMILY_WORDS for w in said if w in words_of_kind), None)
     if kind:
         return kind
+    # 'who is driving the bus?' asks a person ('who is driving faster?' compares vehicles)
+    driving = next((said[j] for k, w in enumerate(said) if w == "who" for j in range(k + 1, min(k + 4, len(said)))
+                    if said[j] in DRIVING and set(said[k + 1:j]) <= COPULAS and said[j + 1:j + 2]
+                    and said[j + 1] in DEFINITE | {"it", "them"}), None)
+    if driving:
+        return (f"the question asks about a person ('who ... {driving}'), and the videos show only vehicles (questions "
+                "ask how they move and what they hit)")
     opinion = next((w for k, w in enumerate(said) if w in OPINION
                     and said[k - 2:k] not in (["in", "your"], ["in", "my"])), None)   # 'in your opinion': a hedge
     if opinion:
@@ -1675,6 +1819,9 @@ LANES = {"lane", "lanes"}   # 'does it change lanes?': a turn
 # no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
 PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
           "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
+DRIVING = {"driving", "drives", "drove", "driven", "riding", "rides", "rode", "ridden", "piloting", "pilots",
+           "piloted", "flying", "flies", "flew", "steering", "steers", "steered", "operating", "operates", "controlling",
+           "controls", "in", "inside", "on", "aboard"}
 # a change of height ('does the plane lose height?' was read as a collision)
 HEIGHT_CHANGES = {"lose", "loses", "losing", "lost", "gain", "gains", "gaining", "gained"}
 HEIGHT_NOUNS = {"height", "altitude", "elevation"}
@@ -1689,6 +1836,8 @@ TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted",
 ARRANGEMENT = {"queue", "queues", "queued", "queueing", "queuing", "convoy", "convoys", "formation", "traffic", "jam",
                "lined"}
 STALLING = {"stall", "stalls", "stalled", "stalling"}
+# who caused a collision ('which vehicle was at fault in the collision ...' was read as whether they collide)
+FAULT = {"fault", "faults", "blame", "blamed", "blameworthy", "liable", "liability", "guilty", "culpable"}
 # an opinion of a vehicle ('would you recommend the bus?' was read as whether it collides), how the video was made
 # ('what physics engine made this video?' as the accelerating vehicle's colour), a physical quantity ('is gravity
 # acting on the jet?' as a collision)
@@ -1710,6 +1859,7 @@ NO_FAMILY_WORDS = (
     (QUANTITIES, "the question asks about a physical quantity ('{}'), which no question here asks (they ask speed "
                  "classes, directions, colours, types and collisions)"),
     (STALLING, "the question asks whether a vehicle stalls ('{}'), which no question here asks"),
+    (FAULT, "the question asks who is to blame ('{}'), which no question here asks (they ask who collides)"),
 )
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
@@ -2609,8 +2759,8 @@ IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik"
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
-END_TIMES = [[p, "the", *very, e] for p in ("at", "by", "towards", "toward", "near") for very in ((), ("very",))
-             for e in ("end", "finish", "close")] + \
+END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
+             for very in ((), ("very",)) for e in ("end", "finish", "close")] + \
     [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}

@@ -103,6 +103,10 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 COLOUR_CLAUSES = (("that", "is"), ("which", "is"), ("that", "was"), ("which", "was"), ("that", "'", "s"),
                   ("painted",), ("coloured",), ("colored",), ("in",), (",", "the"), (",", "a"), ("(", "the"))
 COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured', 'yellow painted', 'red colour'
+# ... or straight after it, as Romance languages put it ('the sedan red, how fast ...', 'the bus yellow is moving?'),
+# where a comma or a verb follows ('is the bus red?' asks a colour)
+AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", "moves", "moved", "moving", "goes",
+                "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it"}
 
 
 def _noun_at(words: list[str], i: int) -> int:
@@ -121,6 +125,12 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     out, read, i = [], [], 0
     while i < len(words):
         n = _noun_at(words, i) if not out or out[-1] not in COLOR_NAMES else 0
+        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and words[i + n + 1:i + n + 2] and \
+                words[i + n + 1] in AFTER_COLOUR and out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"]):
+            out += [words[i + n], *words[i:i + n]]
+            read.append((" ".join(words[i:i + n + 1]), " ".join([words[i + n], *words[i:i + n]])))
+            i += n + 1
+            continue
         clause = next((c for c in COLOUR_CLAUSES if n and tuple(words[i + n:i + n + len(c)]) == c), None)
         if clause:
             j = i + n + len(clause)
