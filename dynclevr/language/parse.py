@@ -55,6 +55,7 @@ import io
 import json
 import pickle
 import re
+import unicodedata
 from dataclasses import dataclass, replace
 from difflib import SequenceMatcher
 from pathlib import Path
@@ -418,6 +419,13 @@ class QuestionParser:
                     return f"the question compares the {named} by '{after}', which no question here asks about"
                 if all(v in COLOR_NAMES for v in ref):
                     return f"the question names the {named} {after}: no vehicle here is called '{after}'"
+            # 'the green articulated omnibus': a sub-type's first word, then a noun the catalogue lacks
+            j = k + 1
+            while j < len(words) and words[j] in OBJECT_WORDS:
+                j += 1
+            if j > k + 1 and j < len(words) and words[j] not in self.known and all(v in COLOR_NAMES for v in ref):
+                said = " ".join(words[k + 1:j + 1])
+                return f"the question names the {named} {said}: no vehicle here is called '{said}'"
             if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
                 return f"the question names the {before} {named}: no object here is '{before}'"
         return ""
@@ -469,8 +477,9 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 # Words a speaker opens with that ask nothing ('So, um, does ...', 'Hmm... is it ...', 'Okay, right, what ...'). The
 # decoder looks past one such unknown word, not a run of them with their commas. 'right', 'now' and 'like' only with
 # a comma after them: 'Right at the start, is ...' opens with a time.
+CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
-                 "hey", "anyway", "anyways", "yo", "hi", "hello"}
+                 "hey", "anyway", "anyways", "yo", "hi", "hello"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer", "bot",
@@ -479,7 +488,7 @@ FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
-                         "thanks", "cheers", "tho"}
+                         "thanks", "cheers", "tho"} | CHAT
 
 
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -582,12 +591,31 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["true", "/", "false"])   # ', yes or no?': `tail_as_question`
 
 
+def _decoration(word: str) -> bool:
+    """An emoji or a mark that only decorates ('"red sedan"', '*slow*', '#crash', '🚗')."""
+    return word in ('"', "*", "#", "~", "`", "_") or len(word) == 1 and unicodedata.category(word) in (
+        "So", "Sk", "Mn", "Me", "Cf", "Co", "Cs")
+
+
+def _complete(words: list[str], k: int) -> bool:
+    """Whether a vehicle's name that begins with the colour at k goes on with a sub-type or category."""
+    return words[k + 1:k + 2] != [] and words[k + 1] in OBJECT_WORDS | NOUNS_SAID and words[k + 1] not in COLOR_NAMES
+
+
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
     (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With
     the words read so, or the words as they are and ()."""
-    out, read = list(words), []
+    # a chat's decorations: emoji, quotes and asterisks around words, a hashtag's '#', '!' beside '?', '??'
+    out = [w for w in words if not _decoration(w)]
+    out = [w for k, w in enumerate(out) if not (w in ("!", "?") and "?" in out[k + 1:k + 2] + out[k - 1:k] and
+                                                 (w == "!" or out[k + 1:k + 2] == ["?"]))]
+    read = [(" ".join(w for w in words if _decoration(w) or w == "!") or "?", "nothing, a decoration")] \
+        if len(out) < len(words) else []
     end = len(out) - (out[-1:] in (["?"], ["."]))
+    while end > 0 and out[end - 1] in CLOSING_INTERJECTIONS and any(   # 'yes/no pls'
+            out[end - 1 - len(form):end - 1] == form for form in ANSWER_FORMS):
+        end -= 1
     for form in ANSWER_FORMS:
         for bracketed in (["(", *form, ")"], form):
             if out[end - len(bracketed):end] == bracketed:
@@ -609,6 +637,15 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             out[k] = "or" if last else ","
             read.append(("/", out[k]))
         k += 1
+    # a search box's two vehicles side by side ('blue bus green truck collide'), where a collision is asked
+    if asks_impact(out):
+        k = 1
+        while k < len(out) - 1:
+            if out[k] in COLOR_NAMES and _complete(out, k) and out[k - 1] in OBJECT_WORDS | NOUNS_SAID and \
+                    out[k - 1] not in COLOR_NAMES:
+                out.insert(k, "and")
+                read.append((f"{out[k - 1]} {out[k + 1]}", f"{out[k - 1]} and {out[k + 1]}"))
+            k += 1
     if "(" in out and ")" in out[out.index("("):] and any(w == "/" for w, _ in read):
         a = out.index("(")
         b = out.index(")", a)
@@ -870,7 +907,9 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         return words, ()
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
-    if rest[:1] and rest[0] in YES_NO_OPENERS:   # 'I'd like to know, is the bus fast?': the question itself
+    # 'I'd like to know, is the bus fast?', '... , at the start, is it fast?': the question itself
+    asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else 0
+    if rest[asked:asked + 1] and rest[asked] in YES_NO_OPENERS:
         return rest, ((said, "nothing, a request"),)
     return ["tell", "me"] + rest, ((said, "tell me"),)
 
@@ -944,6 +983,15 @@ def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[st
         end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
         if end > k and words[end:end + 2] == ["'", "s"] and words[end + 2:end + 3] and words[end + 2] in nouns:
             return ["what", "is"] + words[2:], (("tell me", "what is"),)
+    # a note's 'speed at start , purple chopper ?': the noun and its time, then the vehicle alone
+    cut = next((i for i in range(k + 2, len(words)) if words[i] in (",", ":", "-")), None)
+    if not told and words[k:k + 1] and words[k] in MOTION_NOUNS and cut is not None:
+        j = cut + 1 + (words[cut + 1:cut + 2] == ["the"])
+        end = next((i for i in range(j, len(words)) if words[i] not in OBJECT_WORDS), len(words))
+        if end > j and words[end:] in ([], ["?"], ["."]):
+            return ["what", "is", "the", words[k], "of", "the", *words[j:end], *words[k + 1:cut], "?"], \
+                ((" ".join(words[k:end]), f"what is the {words[k]} of the {' '.join(words[j:end])} "
+                  + " ".join(words[k + 1:cut])),)
     # a label's 'blue scooter speed at the start?' (not 'the bus speed up ...', a learner's verb)
     end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
     if not told and end > k and words[end:end + 1] and words[end] in MOTION_NOUNS and \
@@ -1020,6 +1068,15 @@ IDIOMS = tuple(sorted({
                                                                  "whizz", "whiz", "race")
        for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
     ("hauling",): ("moving", "fast"),
+    ("at", "a", "fast", "clip"): ("fast",),
+    **{p: ("at", "high", "speed") for p in (("at", "a", "great", "speed"), ("at", "great", "speed"))},
+    **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
+    ("manner", "of", "vehicle"): ("kind", "of", "vehicle"),
+    # a category by an older name of two words (one word: synonyms.txt)
+    ("motor", "car"): ("car",), ("motor", "cycle"): ("motorbike",), ("push", "bike"): ("bicycle",),
+    ("flying", "machine"): ("aeroplane",),
+    # on a screen is in view ('when it first shows up on screen')
+    **{("on", *the, "screen"): ("in", "view") for the in ((), ("the",))},
     **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
     ("bombing", "it"): ("moving", "fast"),
     ("budging",): ("moving",),
@@ -1590,6 +1647,12 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     kind = next((why.format(w) for words_of_kind, why in NO_FAMILY_WORDS for w in said if w in words_of_kind), None)
     if kind:
         return kind
+    other = next((k for k, w in enumerate(said) if w in OTHER_VEHICLES), None)
+    if other is not None:
+        start = other
+        while start and said[start - 1] in COLOR_NAMES:
+            start -= 1
+        return f"the question names the {' '.join(said[start:other + 1])}: no vehicle here is called '{said[other]}'"
     # 'who is driving the bus?' asks a person ('who is driving faster?' compares vehicles)
     driving = next((said[j] for k, w in enumerate(said) if w == "who" for j in range(k + 1, min(k + 4, len(said)))
                     if said[j] in DRIVING and set(said[k + 1:j]) <= COPULAS and said[j + 1:j + 2]
@@ -1836,6 +1899,15 @@ TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted",
 ARRANGEMENT = {"queue", "queues", "queued", "queueing", "queuing", "convoy", "convoys", "formation", "traffic", "jam",
                "lined"}
 STALLING = {"stall", "stalls", "stalled", "stalling"}
+# what a vehicle has that no question asks ('what's the license plate on the truck' was read as its speed), and
+# vehicles no video shows ('what colour is the boat floating ...' as the floating vehicle's colour)
+FITTINGS = {"license", "licence", "plate", "plates", "registration", "brand", "logo", "logos", "wheel", "wheels",
+            "tire", "tires", "tyre", "tyres", "window", "windows", "door", "doors", "headlight", "headlights", "price",
+            "owner", "horsepower", "fuel", "mileage", "seat", "seats", "propeller", "propellers", "wing", "wings"}
+OTHER_VEHICLES = {"boat", "boats", "ship", "ships", "train", "trains", "tram", "trams", "tractor", "tractors",
+                  "helicopter", "helicopters", "drone", "drones", "balloon", "balloons", "rocket", "rockets",
+                  "skateboard", "skateboards", "submarine", "yacht", "canoe", "kayak", "horse", "horses", "cart",
+                  "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine"}
 # who caused a collision ('which vehicle was at fault in the collision ...' was read as whether they collide)
 FAULT = {"fault", "faults", "blame", "blamed", "blameworthy", "liable", "liability", "guilty", "culpable"}
 # an opinion of a vehicle ('would you recommend the bus?' was read as whether it collides), how the video was made
@@ -1860,6 +1932,8 @@ NO_FAMILY_WORDS = (
                  "classes, directions, colours, types and collisions)"),
     (STALLING, "the question asks whether a vehicle stalls ('{}'), which no question here asks"),
     (FAULT, "the question asks who is to blame ('{}'), which no question here asks (they ask who collides)"),
+    (FITTINGS, "the question asks about a vehicle's '{}', which no question here asks (they ask how it moves, its "
+               "colour and its type)"),
 )
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
@@ -2590,6 +2664,10 @@ def what_happens(words: list[str], program: list[str]) -> str:
 HAPPENING = {"if", "happen", "happens", "happened", "happening", "next"}   # 'what would happen if ...: would ...?'
 CLAUSE_ENDS = {",", ":", ";", ".", "?", "-"}
 FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["from", "now"])
+FUTURE_CUES = {"will", "would", "going", "gonna", "later", "after", "future", "next", "predict", "predicted",
+               "expect", "expected", "eventually", "soon", "continue", "continues", "continued", "kept", "keeps", "ll",
+               "shall", "beyond", "afterwards", "afterward", "then", "upcoming", "remaining", "rest", "follow",
+               "follows", "following", "anticipate", "ends", "end", "over", "finished", "done"}
 
 
 def _future_said(words: list[str]) -> str:
@@ -2612,6 +2690,13 @@ def future_unread(words: list[str], program: list[str]) -> str:
     if any(t.startswith("Counterfactual") for t in program) and _future_said(words):
         return (f"the question imagines the time after the video ('{_future_said(words)}'), which no question here "
                 "does: a counterfactual asks about the video's own time")
+    # 'the green sedan , it collide with something in the video ?': a learner's bare verb, within the video
+    within = next((" ".join(words[k:k + 2 + (words[k + 1] == "the")]) for k in range(len(words) - 2)
+                   if words[k] in ("in", "during", "throughout") and
+                   words[k + 1 + (words[k + 1] == "the")] in FILM_WORDS), None)
+    if "futureEvents" in program and within and not FUTURE_CUES.intersection(words):
+        return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
+                "it collides in the video")
     if "Events" not in program or "futureEvents" in program:
         return ""
     said = _future_said(words)
@@ -2761,6 +2846,7 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
              for very in ((), ("very",)) for e in ("end", "finish", "close")] + \
+    [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
     [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}

@@ -32,6 +32,9 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
                   "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
                   "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
+                  # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
+                  "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
+                  "school omnibus": "school bus",
                   **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a

@@ -9,7 +9,8 @@ _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 # One spelling per word, so that the vocabulary (built from generated questions) covers common variants.
 SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
              "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes",
-             "u": "you", "ur": "your", "thru": "through"}   # and a phone's ('can u tell me')
+             "u": "you", "ur": "your", "thru": "through",   # and a phone's ('can u tell me')
+             "vid": "video", "spd": "speed", "dir": "direction", "@": "at"}   # and a note's ('spd @ start')
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 # Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
