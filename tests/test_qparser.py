@@ -1684,11 +1684,12 @@ def test_spoken_questions_their_fillers_tags_and_slang_read_as_the_grammar_says_
     cases.update({
         'yo how fast is the "purple scooter" going right at the start?? \U0001F697\U0001F4A8':
             f"{scooter} start query_moving_velocity",
-        "tbh idk, is the purple scooter moving *slow* at the start of the vid?": f"{scooter} start is_moving_velocity[slow]",
+        "tbh idk, is the purple scooter moving *slow* at the start of the vid?":
+            f"{scooter} start is_moving_velocity[slow]",
         "the purple scooter - is it accelerating when the vid starts?? yes/no pls": f"{scooter} start is_accelerating",
         "spd @ start, purple scooter?": f"{scooter} start query_moving_velocity",
-        "purple scooter purple school bus collide in video": f"Events {scooter} filter_collision {school} filter_collision "
-                                                           "exist",
+        "purple scooter purple school bus collide in video":
+            f"Events {scooter} filter_collision {school} filter_collision exist",
         "Does the purple velocipede collide with the purple motor car?":
             "Events Objects filter_attributes[purple] filter_attributes[bicycle] unique filter_collision "
             "Objects filter_attributes[purple] filter_attributes[car] unique filter_collision exist",
@@ -1701,8 +1702,9 @@ def test_spoken_questions_their_fillers_tags_and_slang_read_as_the_grammar_says_
     for text, parse in zip(texts, parser.analyse_batch(texts)):
         assert parse.program is not None and " ".join(parse.program) == cases[text], (text, parse.reason)
     refused = ["At what time, in seconds, does the purple scooter collide with the purple school bus?",
-               "Is the green articulated charabanc accelerating at the start?", "what's the license plate on the purple "
-               "school bus lol", "what colour is the boat floating on the water", "purple scooter speed end of video",
+               "Is the green articulated charabanc accelerating at the start?",
+               "what's the license plate on the purple school bus lol", "what colour is the boat floating on the water",
+               "purple scooter speed end of video",
                "The purple scooter, it collide with something in the video?",
                "Who's driving the purple school bus?", "In which direction does purple scooter move at end of video?",
                "Which vehicle was at fault in the collision between the purple scooter and the purple school bus?"]

@@ -285,9 +285,9 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + corrected + owned + labelled + inserted + opened + idioms + described + typed + afloat + end
-                   + framing + attended + request + stated + negative + asked + aloft + heading + subject + first
-                   + more + tail + offered)
+        request = (shorthand + named + corrected + owned + labelled + inserted + opened + idioms + described + typed
+                   + afloat + end + framing + attended + request + stated + negative + asked + aloft + heading + subject
+                   + first + more + tail + offered)
         if not words:   # 'y/n' alone: an answer's form, and nothing asked
             return [], "the question asks nothing once its asides are read ('" + text.strip() + "')", request, words
         reverse = reversed_as_said(words)
@@ -482,8 +482,8 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  "hey", "anyway", "anyways", "yo", "hi", "hello"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
-VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer", "bot",
-             "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all"}
+VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
+             "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
@@ -1084,11 +1084,9 @@ IDIOMS = tuple(sorted({
                                                               ("punched", "accelerated"), ("punch", "accelerate"))
        for gas in (("the", "gas"), ("it",))},
     # a vehicle as its rider calls it ('what kinda ride is ...', 'the ride that's ...')
-    **{(*before, "ride"): (*said, "vehicle") for before, said in ((("the",), ("the",)), (("kind", "of"), ("kind", "of")),
-                                                                  (("sort", "of"), ("sort", "of")),
-                                                                  (("type", "of"), ("type", "of")),
-                                                                  (("kinda",), ("kind", "of")),
-                                                                  (("sorta",), ("sort", "of")))},
+    **{(*before, "ride"): (*said, "vehicle") for before, said in (
+        (("the",), ("the",)), (("kind", "of"), ("kind", "of")), (("sort", "of"), ("sort", "of")),
+        (("type", "of"), ("type", "of")), (("kinda",), ("kind", "of")), (("sorta",), ("sort", "of")))},
     **{(verb, "along"): (moving, "slowly") for forms in (("poking", "pokes", "poked"), ("inching", "inches", "inched"),
                                                           ("puttering", "putters", "puttered"),
                                                           ("pottering", "potters", "pottered"),
@@ -1883,8 +1881,8 @@ LANES = {"lane", "lanes"}   # 'does it change lanes?': a turn
 PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
           "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
 DRIVING = {"driving", "drives", "drove", "driven", "riding", "rides", "rode", "ridden", "piloting", "pilots",
-           "piloted", "flying", "flies", "flew", "steering", "steers", "steered", "operating", "operates", "controlling",
-           "controls", "in", "inside", "on", "aboard"}
+           "piloted", "flying", "flies", "flew", "steering", "steers", "steered", "operating", "operates",
+           "controlling", "controls", "in", "inside", "on", "aboard"}
 # a change of height ('does the plane lose height?' was read as a collision)
 HEIGHT_CHANGES = {"lose", "loses", "losing", "lost", "gain", "gains", "gaining", "gained"}
 HEIGHT_NOUNS = {"height", "altitude", "elevation"}
