@@ -528,6 +528,34 @@ CORRECTING = {"no", "wait", "sorry", "mean", "rather", "oops", "correction", "sc
 CORRECTION_WORDS = CORRECTING | {"i", "or", "that", ","} | FILLERS   # 'uh wait no', 'I mean', 'or rather'
 
 
+def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'does the red no the blue sedan hit ...' -> 'does the blue sedan hit ...': a vehicle's name said, corrected
+    ('no', 'sorry', 'I mean', 'uh', commas around them) and said again from its article. With the correction read
+    so, or the words as they are and ()."""
+    named = OBJECT_WORDS | NOUNS_SAID
+    for k in range(1, len(words)):
+        if words[k - 1] not in named:
+            continue
+        j = k
+        while words[j:j + 1] and words[j] in CORRECTION_WORDS:
+            j += 1
+        marker = [w for w in words[k:j] if w != ","]
+        # a word that corrects, or a speaker's filler alone ('the blue uh the purple bus'); 'or' and 'that' only in
+        # 'or rather' and 'scratch that' ('the red car or the blue bus' offers two)
+        if not marker or not (CORRECTING.intersection(marker) or set(marker) <= FILLERS) or \
+                "or" in marker and "rather" not in marker or "that" in marker and "scratch" not in marker:
+            continue
+        if not (words[j:j + 1] and words[j] in ("the", "a", "an", "that") and words[j + 1:j + 2]
+                and words[j + 1] in named):
+            continue
+        start = k - 1
+        while start > 0 and words[start - 1] in named:
+            start -= 1
+        start -= start > 0 and words[start - 1] in ("the", "a", "an", "that", "this")
+        return words[:start] + words[j:], ((" ".join(words[start:j]), "nothing, a correction"),)
+    return words, ()
+
+
 OWNERS = {"my", "our", "your"}
 TOYS = {"toy", "toys", "model", "little"}
 
@@ -558,33 +586,6 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         k += 1
     return out, tuple(read)
 
-
-def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'does the red no the blue sedan hit ...' -> 'does the blue sedan hit ...': a vehicle's name said, corrected
-    ('no', 'sorry', 'I mean', 'uh', commas around them) and said again from its article. With the correction read
-    so, or the words as they are and ()."""
-    named = OBJECT_WORDS | NOUNS_SAID
-    for k in range(1, len(words)):
-        if words[k - 1] not in named:
-            continue
-        j = k
-        while words[j:j + 1] and words[j] in CORRECTION_WORDS:
-            j += 1
-        marker = [w for w in words[k:j] if w != ","]
-        # a word that corrects, or a speaker's filler alone ('the blue uh the purple bus'); 'or' and 'that' only in
-        # 'or rather' and 'scratch that' ('the red car or the blue bus' offers two)
-        if not marker or not (CORRECTING.intersection(marker) or set(marker) <= FILLERS) or \
-                "or" in marker and "rather" not in marker or "that" in marker and "scratch" not in marker:
-            continue
-        if not (words[j:j + 1] and words[j] in ("the", "a", "an", "that") and words[j + 1:j + 2]
-                and words[j + 1] in named):
-            continue
-        start = k - 1
-        while start > 0 and words[start - 1] in named:
-            start -= 1
-        start -= start > 0 and words[start - 1] in ("the", "a", "an", "that", "this")
-        return words[:start] + words[j:], ((" ".join(words[start:j]), "nothing, a correction"),)
-    return words, ()
 
 # A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' or 'vs' for 'and',
 # choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
