@@ -70,7 +70,7 @@ from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, coordinated,
                                           corefer, delexicalise, description_as_said, is_description,
-                                          phrases_as_said, placeholders)
+                                          phrase_table, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips
 from dynclevr.questions.generate import templates
@@ -521,6 +521,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
+NAMING = OBJECT_WORDS | NOUNS_SAID   # the words of a vehicle's name
 
 # A speaker correcting a vehicle's name as they say it ('the red no the blue sedan', 'the gray jet no sorry the gray
 # biplane', 'the bus I mean the truck'): the words after the correction stand for the ones before it.
@@ -532,9 +533,8 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     """'does the red no the blue sedan hit ...' -> 'does the blue sedan hit ...': a vehicle's name said, corrected
     ('no', 'sorry', 'I mean', 'uh', commas around them) and said again from its article. With the correction read
     so, or the words as they are and ()."""
-    named = OBJECT_WORDS | NOUNS_SAID
     for k in range(1, len(words)):
-        if words[k - 1] not in named:
+        if words[k - 1] not in NAMING:
             continue
         j = k
         while words[j:j + 1] and words[j] in CORRECTION_WORDS:
@@ -546,10 +546,10 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
                 "or" in marker and "rather" not in marker or "that" in marker and "scratch" not in marker:
             continue
         if not (words[j:j + 1] and words[j] in ("the", "a", "an", "that") and words[j + 1:j + 2]
-                and words[j + 1] in named):
+                and words[j + 1] in NAMING):
             continue
         start = k - 1
-        while start > 0 and words[start - 1] in named:
+        while start > 0 and words[start - 1] in NAMING:
             start -= 1
         start -= start > 0 and words[start - 1] in ("the", "a", "an", "that", "this")
         return words[:start] + words[j:], ((" ".join(words[start:j]), "nothing, a correction"),)
@@ -564,18 +564,17 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
     ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
     words read so, or the words as they are and ()."""
-    named = OBJECT_WORDS | NOUNS_SAID
     out, read, k = [], [], 0
     while k < len(words):
         j = k + (words[k] in OWNERS)
         while words[j:j + 1] and words[j] in TOYS:
             j += 1
-        if j > k and words[j:j + 1] and words[j] in named and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])):
+        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])):
             said = ["the"] if words[k] in OWNERS else []
             read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
             out += said
             k = j
-            while words[k:k + 1] and words[k] in named:
+            while words[k:k + 1] and words[k] in NAMING:
                 out.append(words[k])
                 k += 1
             if words[k:k + 1] and words[k] in TOYS - {"little"}:
@@ -600,7 +599,7 @@ def _decoration(word: str) -> bool:
 
 def _complete(words: list[str], k: int) -> bool:
     """Whether a vehicle's name that begins with the colour at k goes on with a sub-type or category."""
-    return words[k + 1:k + 2] != [] and words[k + 1] in OBJECT_WORDS | NOUNS_SAID and words[k + 1] not in COLOR_NAMES
+    return words[k + 1:k + 2] != [] and words[k + 1] in NAMING and words[k + 1] not in COLOR_NAMES
 
 
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -642,7 +641,7 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     if asks_impact(out):
         k = 1
         while k < len(out) - 1:
-            if out[k] in COLOR_NAMES and _complete(out, k) and out[k - 1] in OBJECT_WORDS | NOUNS_SAID and \
+            if out[k] in COLOR_NAMES and _complete(out, k) and out[k - 1] in NAMING and \
                     out[k - 1] not in COLOR_NAMES:
                 out.insert(k, "and")
                 read.append((f"{out[k - 1]} {out[k + 1]}", f"{out[k - 1]} and {out[k + 1]}"))
@@ -759,7 +758,7 @@ def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
     the words read so, or the words as they are and ()."""
     for k in range(1, len(words) - 2):
         if words[k - 1] in ASKING and words[k] in ("kind", "sort") and words[k + 1] == "of" and \
-                words[k + 2] in OBJECT_WORDS | NOUNS_SAID and words[k + 2] not in COLOR_NAMES:
+                words[k + 2] in NAMING and words[k + 2] not in COLOR_NAMES:
             return words[:k] + ["type"] + words[k + 1:], ((f"{words[k]} of", "type of"),)
     return words, ()
 
@@ -957,10 +956,11 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         statement = body[:-n]
         # 'is it going left , right ?' offers a choice: only a statement takes an agreeing tag
         asked = tag[1:2] != ["not"] and statement[:1] and statement[0] in YES_NO_OPENERS | ASKING | {"how"}
+        if len(body) <= n or body[-n:] != [","] + tag or asked:
+            continue
         # a statement's own negation only as 'not moving', which reads as static ('it is not moving , is not it ?')
-        denied = any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
-                     for k, w in enumerate(statement))
-        if len(body) > n and body[-n:] == [","] + tag and not asked and not denied:
+        if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
+                   for k, w in enumerate(statement)):
             return statement + ["?"], ((" ".join(body[-n:]), "?"),)
     return words, ()
 
@@ -1053,7 +1053,7 @@ SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becom
 _START = ("at", "the", "start")
 STAYED = ("stayed", "remained", "kept", "stood")
 STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
-IDIOMS = tuple(sorted({
+IDIOMS = phrase_table({
     **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
                            ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
                            ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("outta", "the", "gate"),
@@ -1169,7 +1169,7 @@ IDIOMS = tuple(sorted({
                     else (("its", "foot", "on", "the", "gas"),) if verb != "had" else (("its", "foot", "down"),))},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
-}.items(), key=lambda kv: -len(kv[0])))
+}.items())
 
 
 IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # said first: 'imagine' (not 'the picture')

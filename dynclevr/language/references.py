@@ -68,19 +68,28 @@ def _written(name: str) -> set[tuple[str, ...]]:
     return out
 
 
-_EVERYDAY = [(w, tuple(said.split())) for w, said in sorted(
+def phrase_table(pairs) -> dict[str, tuple[tuple[tuple[str, ...], tuple[str, ...]], ...]]:
+    """(phrase, words it is read as) pairs by their phrase's first word, the longest phrase first: what
+    `phrases_as_said` looks up at each word instead of scanning every phrase."""
+    out: dict[str, list] = {}
+    for phrase, said in sorted(pairs, key=lambda kv: -len(kv[0])):
+        out.setdefault(phrase[0], []).append((tuple(phrase), tuple(said)))
+    return {w: tuple(hits) for w, hits in out.items()}
+
+
+_EVERYDAY = phrase_table((w, tuple(said.split())) for w, said in sorted(
     {(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
                                   *EVERYDAY_NAMES.items()] for w in _written(name)}
     | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]}
-    | _SHADES, key=lambda kv: (-len(kv[0]), kv))]
+    | _SHADES, key=lambda kv: (-len(kv[0]), kv)))
 
 
 def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """Every phrase of `table` ((phrase, words it is read as), the longest first) in `words` read as its words; with
-    the phrases read so, as written ('dirt-bike')."""
+    """Every phrase of `table` (`phrase_table`) in `words` read as its words, the longest at a place; with the
+    phrases read so, as written ('dirt-bike')."""
     out, read, i = [], [], 0
     while i < len(words):
-        hit = next(((p, said) for p, said in table if tuple(words[i:i + len(p)]) == p), None)
+        hit = next(((p, said) for p, said in table.get(words[i], ()) if tuple(words[i:i + len(p)]) == p), None)
         if hit is None:
             out.append(words[i])
             i += 1
