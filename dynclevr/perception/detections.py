@@ -22,7 +22,7 @@ from dynclevr.artifacts import Store, atomic_path, file_digest
 from dynclevr.config import stable_digest
 from dynclevr.perception.detector import Detection, decode, run
 
-PARAMS = ("detect_threshold", "max_detections", "detector_flip")
+PARAMS = ("detect_threshold", "max_detections", "detector_flip", "plane_distance")
 _SCALARS = ("u", "v", "score", "alpha", "dist", "height")
 
 
@@ -37,7 +37,8 @@ def cache_path(store: Store, scene: str) -> Path:
 
 
 def cache_key(video: Path, detector: str, parser: dict) -> str:
-    """`detector`: the head's digest (detector_train.detector_digest)."""
+    """`detector`: the digests of the networks that read the frames (the head's, detector_train.detector_digest,
+    and the plane distance refiner's where it is on)."""
     return stable_digest({"video": file_digest(video), "detector": detector, **{k: parser[k] for k in PARAMS}})
 
 
