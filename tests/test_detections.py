@@ -23,7 +23,7 @@ def _head():
     return net
 
 
-PARSER = {"detect_threshold": 0.3, "max_detections": 5, "detector_flip": True, "plane_distance": True}
+PARSER = {"detect_threshold": 0.3, "max_detections": 5, "detector_flip": True}
 
 
 def _same(a, b):
@@ -85,6 +85,5 @@ def test_the_key_holds_the_video_the_head_and_the_decode_settings(tmp_path):
     assert key == detections.cache_key(video, "head1", dict(PARSER, refine=True))   # the tracker's own params: no
     assert key != detections.cache_key(video, "head2", PARSER)
     assert key != detections.cache_key(video, "head1", dict(PARSER, detector_flip=False))
-    assert key != detections.cache_key(video, "head1", dict(PARSER, plane_distance=False))
     video.write_bytes(b"other frames")
     assert key != detections.cache_key(video, "head1", PARSER)

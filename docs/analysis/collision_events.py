@@ -51,7 +51,7 @@ for path in sorted((root / "sim").glob("*.mcap")):
     video = Video.read(store.path("render", scene, ".mcap"))
     frames = video.frames()
     parser = SceneParser(*parse_scene._model(), video.camera, cfg, parse_scene._collision_model())
-    est = parser.parse(frames, scene, parse_scene.scene_detections(store, scene, frames, cfg, video.camera))
+    est = parser.parse(frames, scene, parse_scene.scene_detections(store, scene, frames, cfg))
     if [(c.frame, c.a, c.b) for c in est.collisions] != [(c.frame, c.a, c.b) for c in stored.collisions]:
         raise SystemExit(f"{scene}: the parse differs from parsed/{scene}.mcap: rerun `dynclevr run` first")
     to_truth, _ = _to_truth_and_seen(truth, est, match(truth, est))

@@ -60,7 +60,7 @@ def enabled(cfg: Config) -> bool:
 # The [parser] settings the per-frame model reads (the rest are the filter's): its cache key holds these only, so
 # that tuning the tracker does not rerun this baseline.
 PARSER_KEYS = ("detect_threshold", "max_detections", "new_track_score", "spawn_pixels", "merge_radius",
-               "appearance_weight", "static_speed", "engine_threshold", "plane_distance")
+               "appearance_weight", "static_speed", "engine_threshold")
 
 
 def parse_params(cfg: Config) -> dict:

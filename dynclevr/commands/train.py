@@ -1,4 +1,4 @@
-"""`dynclevr train parser | detector | plane-distance | collisions | qparser | cnnlstm`: reproduce the shipped weights from the train split."""
+"""`dynclevr train parser | detector | collisions | qparser | cnnlstm`: reproduce the shipped weights from the train split."""
 
 from __future__ import annotations
 
@@ -51,16 +51,6 @@ def register(app: typer.Typer) -> None:
             return
         train_detector(cfg, data_dir, out, workers, resume, steps, minutes, grow_from, device, loader_workers,
                        echo=typer.echo)
-
-    @train.command("plane-distance")
-    def plane_distance(config: Optional[Path] = ConfigOpt, data_dir: Path = DataOpt, workers: int = WorkersOpt,
-                       out: Path = typer.Option(WEIGHTS_DIR / "plane_distance", "--out"),
-                       resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint in --out")):
-        """Plane distance refiner: a flying plane's distance from a crop of its pixels (resumable, per epoch)."""
-        from dynclevr.config import Config
-        from dynclevr.perception.plane_distance_train import train_plane_distance
-
-        train_plane_distance(Config.load(config), data_dir, out, workers, resume, echo=typer.echo)
 
     @train.command("collisions")
     def collisions(split: str = typer.Option("train", "--split"), config: Optional[Path] = ConfigOpt,

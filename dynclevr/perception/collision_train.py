@@ -75,7 +75,7 @@ def _scene_rows(job: tuple) -> Path:
     video = Video.read(store.path("render", scene, ".mcap"))
     frames = video.frames()
     parser = SceneParser(*_models(), video.camera, cfg)
-    est = parser.parse(frames, scene, scene_detections(store, scene, frames, cfg, video.camera))
+    est = parser.parse(frames, scene, scene_detections(store, scene, frames, cfg))
     truth = Scene4D.read(store.path("simulate", scene, ".mcap"))
     to_est = {truth.objects[i].id: est.objects[j].id for i, j in match(truth, est)}
     true_events = merge_events(truth.collisions, cfg["labels"]["collision_merge_frames"])

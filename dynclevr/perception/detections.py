@@ -22,7 +22,7 @@ from dynclevr.artifacts import Store, atomic_path, file_digest
 from dynclevr.config import stable_digest
 from dynclevr.perception.detector import Detection, decode, run
 
-PARAMS = ("detect_threshold", "max_detections", "detector_flip", "plane_distance")
+PARAMS = ("detect_threshold", "max_detections", "detector_flip")
 _SCALARS = ("u", "v", "score", "alpha", "dist", "height")
 
 
@@ -37,8 +37,7 @@ def cache_path(store: Store, scene: str) -> Path:
 
 
 def cache_key(video: Path, detector: str, parser: dict) -> str:
-    """`detector`: the digests of the networks that read the frames (the head's, detector_train.detector_digest,
-    and the plane distance refiner's where it is on)."""
+    """`detector`: the head's digest (detector_train.detector_digest)."""
     return stable_digest({"video": file_digest(video), "detector": detector, **{k: parser[k] for k in PARAMS}})
 
 

@@ -17,14 +17,12 @@ from functools import lru_cache
 
 from dynclevr.artifacts import Store
 from dynclevr.baselines import perframe
-from dynclevr.camera import Camera
 from dynclevr.perception import detections
 from dynclevr.perception.collisions import DEFAULT_DIR as COLLISION_DIR
 from dynclevr.perception.collisions import CollisionModel, collision_digest
 from dynclevr.perception.detector_train import DEFAULT_DIR as DETECTOR_DIR
 from dynclevr.perception.detector_train import detector_digest, load_detector
 from dynclevr.perception.model import DEFAULT_DIR, ParserModel, manifest_digest
-from dynclevr.perception.plane_distance import load_plane_distance, plane_distance_digest, refine
 from dynclevr.perception.tracker import parse_video
 from dynclevr.physics import catalogue_digest
 from dynclevr.pipeline import SceneJob, Stage
@@ -88,7 +86,7 @@ def run_scene(job: SceneJob) -> None:
     torch.set_num_threads(1)   # the runner's process pool is the parallelism
     video = Video.read(job.inputs["render"][0])
     frames, cfg = video.frames(), job.cfg
-    dets = scene_detections(job.store, job.scene, frames, cfg, video.camera)
+    dets = scene_detections(job.store, job.scene, frames, cfg)
     if perframe.enabled(cfg):   # the per-frame 3D baseline (`--per-frame`): the detection head alone
         scene = perframe.parse(frames, video.camera, _detector(), cfg, job.scene, dets)
     else:
@@ -96,29 +94,18 @@ def run_scene(job: SceneJob) -> None:
     scene.write(job.outputs[0], kind="estimate")
 
 
-def scene_detections(store: Store, scene: str, frames, cfg, camera: Camera) -> list:
-    """The head's detections of a video, each flying plane's distance read again from its crop where
-    `parser.plane_distance` (perception/plane_distance.py); shared by every row of the model and the per-frame
-    baseline (perception/detections.py)."""
+def scene_detections(store: Store, scene: str, frames, cfg) -> list:
+    """The head's detections of a video, shared by every row of the model and the per-frame baseline
+    (perception/detections.py)."""
     parser = cfg["parser"]
-    readers = detector_digest(DETECTOR_DIR) + (f"+{plane_distance_digest()}" if parser["plane_distance"] else "")
-    key = detections.cache_key(store.path("render", scene, ".mcap"), readers, parser)
-
-    def read():
-        found = detections.detect(_detector(), frames, parser)
-        return refine(_plane_distance(), frames, found, camera) if parser["plane_distance"] else found
-
-    return detections.cached(detections.cache_path(store, scene), key, read)
+    key = detections.cache_key(store.path("render", scene, ".mcap"), detector_digest(DETECTOR_DIR), parser)
+    return detections.cached(detections.cache_path(store, scene), key,
+                             lambda: detections.detect(_detector(), frames, parser))
 
 
 @lru_cache(maxsize=1)
 def _detector():
     return load_detector(DETECTOR_DIR)
-
-
-@lru_cache(maxsize=1)
-def _plane_distance():
-    return load_plane_distance()
 
 
 def _params(cfg) -> dict:
@@ -135,8 +122,6 @@ STAGE = Stage(
     outputs=(".mcap",),
     run_scene=run_scene,
     # The neural meshes and the prior's bodies come from the catalogue: new meshes change the estimate.
-    extra_inputs=lambda store, cfg: {
-        "weights": manifest_digest(DEFAULT_DIR), "detector": detector_digest(DETECTOR_DIR),
-        "collision": collision_digest(COLLISION_DIR), "assets": catalogue_digest(cfg),
-        "plane_distance": plane_distance_digest() if cfg["parser"]["plane_distance"] else "off"},
+    extra_inputs=lambda store, cfg: {"weights": manifest_digest(DEFAULT_DIR), "detector": detector_digest(DETECTOR_DIR),
+                                     "collision": collision_digest(COLLISION_DIR), "assets": catalogue_digest(cfg)},
 )
