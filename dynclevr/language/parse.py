@@ -247,7 +247,8 @@ class QuestionParser:
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
-            or property_unread(said, c.program) or visibility_unread(said, c.program)) else c
+            or property_unread(said, c.program) or visibility_unread(said, c.program)
+            or acceleration_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -1167,6 +1168,26 @@ IDIOMS = phrase_table({
                                                               ("had", "accelerated"))
        for rest in ((("its", "foot", "down"),) if verb.startswith("put") else (("it",),) if verb[0] in "fg"
                     else (("its", "foot", "on", "the", "gas"),) if verb != "had" else (("its", "foot", "down"),))},
+    ("had", "put", "its", "foot", "down"): ("had", "accelerated"),
+    **{p: ("fast",) for p in (("at", "a", "lick"), ("at", "a", "fair", "lick"), ("at", "a", "good", "lick"),
+                              ("at", "quite", "a", "lick"))},
+    # a collision as an idiom says it ('did it come to grief with the bus?', 'tangled with', 'ploughed into')
+    **{(*come, "with"): (collide, "with") for come, collide in (
+        (("come", "to", "grief"), "collide"), (("comes", "to", "grief"), "collides"),
+        (("came", "to", "grief"), "collided"), (("coming", "to", "grief"), "colliding"), (("tangle",), "collide"),
+        (("tangles",), "collides"), (("tangled",), "collided"), (("tangling",), "colliding"))},
+    **{(plough, "into"): (crash, "into") for plough, crash in (
+        ("plough", "crash"), ("ploughs", "crashes"), ("ploughed", "crashed"), ("ploughing", "crashing"),
+        ("plow", "crash"), ("plows", "crashes"), ("plowed", "crashed"), ("plowing", "crashing"))},
+    # a translator's time of the video ('in the beginning time', 'at the end time of video')
+    **{(at, *the, when, "time"): ("at", "the", "end") if when == "end" else _START
+       for at in ("at", "in") for the in ((), ("the",)) for when in ("beginning", "start", "starting", "end")},
+    # a translator's comparison ('faster compared with the bus') and direction ('heading for what direction')
+    **{(comparative, "compared", to): (comparative, "than") for comparative in ("faster", "slower", "quicker")
+       for to in ("with", "to")},
+    **{(prep, which, "direction"): ("in", which, "direction") for prep in ("for", "to", "toward", "towards")
+       for which in ("what", "which")},
+    ("how", "much", "speed"): ("how", "fast"),
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
 }.items())
@@ -1266,7 +1287,8 @@ def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return words, ()
 
 
-IN_PLACE = (["at", "what", "speed"], ["at", "which", "speed"], ["at", "what", "velocity"], ["with", "what", "speed"])
+IN_PLACE = (["at", "what", "speed"], ["at", "which", "speed"], ["at", "what", "velocity"], ["with", "what", "speed"],
+            ["with", "which", "speed"], ["with", "what", "velocity"])
 
 
 # Comparisons of speed: offered as a choice ('is X faster or slower than Y?') they ask which, which no family answers
@@ -1373,7 +1395,7 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"])
-FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence"}
+FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation"}
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
                   ["has", "stopped"], ["comes", "to", "an", "end"],
@@ -1824,7 +1846,9 @@ HEIGHT_MOTIONS = {"moving", "going", "flying", "heading", "headed", "travelling"
 # Where a vehicle is, said by its neighbour or its distance: never a question here, whatever the lexicon reads them as
 # ('behind' is its 'down')
 PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "front", "of"], ["further"],
-                 ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"])
+                 ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"],
+                 # a learner's comparative of a place ('which one is more close to the camera?' was read as faster)
+                 *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"])
 RIGHT_AS_TIME = {"at", "when", "as", "after", "before", "away", "then", "from", "in", "on", "upon"}
 
 
@@ -1987,7 +2011,9 @@ def visibility_unread(words: list[str], program: list[str]) -> str:
     reads."""
     said = next((w for w in words if w in VISIBILITY), None)
     if said is None or "come_in_frame" in program:
-        leaving = next((w for w in words if w in LEAVING), None)
+        # ... or goes out of it ('goes out from the view'; 'comes out from behind' is coming into it)
+        leaving = next((w for w in words if w in LEAVING), None) or next(
+            (f"{a} out" for a, b in zip(words, words[1:]) if a in GOING_OUT and b == "out"), None)
         if leaving and "come_in_frame" in program:   # 'when it leaves the view' was read as when it comes into it
             return (f"the question asks when a vehicle leaves the view ('{leaving}'), which no question here asks "
                     "(they ask how fast it moves when it comes into view)")
@@ -1996,6 +2022,8 @@ def visibility_unread(words: list[str], program: list[str]) -> str:
             "fast it moves when it comes into view)")
 
 
+GOING_OUT = {"go", "goes", "going", "went", "gone", "move", "moves", "moving", "moved", "drive", "drives", "driving",
+             "drove", "fly", "flies", "flying", "flew", "get", "gets", "getting", "got", "pass", "passes", "passed"}
 LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "exited", "disappear", "disappears",
            "disappearing", "disappeared", "vanish", "vanishes", "vanished", "departs", "departed"}
 
@@ -2571,6 +2599,20 @@ PARTNER_SAID = {"that", "which", "who"}
 # the grammar's words for accelerating: 'how quickly is it speeding up?' asks how much it accelerates
 ACCELERATION_SAID = tuple(tokenize(phrase) for key in ("ACCELERATING", "ACCELERATE") for pool in ("seen", "heldout")
                           for phrase in templates()["lexicon"][key][pool])
+
+
+def acceleration_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question says a vehicle speeds up, and its reading
+    asks no acceleration ('was it speeding up when it hit the sedan?' was read as whether it was fast there; only the
+    start and a counterfactual's condition ask one)."""
+    if any("accelerat" in t for t in program):
+        return ""
+    said = next((w for w in words if w.startswith("accelerat")), None) or next(
+        (" ".join(a) for k in range(len(words)) for a in ACCELERATION_SAID if words[k:k + len(a)] == a), None)
+    if said is None:
+        return ""
+    return (f"the question asks whether a vehicle speeds up ('{said}') where no question here asks it (they ask it "
+            "at the start, or as what might have been)")
 
 
 def property_unread(words: list[str], program: list[str]) -> str:
