@@ -1710,3 +1710,36 @@ def test_spoken_questions_their_fillers_tags_and_slang_read_as_the_grammar_says_
                "Which vehicle was at fault in the collision between the purple scooter and the purple school bus?"]
     for text, parse in zip(refused, parser.analyse_batch(refused)):
         assert parse.program is None, (text, parse.program)
+
+
+def test_collision_idioms_and_a_translators_wording_read_and_their_wrong_readings_refused():
+    parser = QuestionParser.load()
+    grief, tangle, plough, lick, foot, begun, compared, which_speed, screen = parser.analyse_batch([
+        "Does the brown SUV come to grief with anything during the clip?",
+        "What kind of vehicle did the red double-decker tangle with?",
+        "Was the blue bendy bus going at a fair lick when it ploughed into the yellow sedan?",
+        "Is the gray wagon moving at a good lick at the start?",
+        "If the purple sedan had put its foot down right from the start, would it have hit the yellow utility bike?",
+        "In the beginning time, is the red sedan moving fast?",
+        "At the start, is the brown truck moving faster compared with the cyan airliner?",
+        "At the start of video the cyan double-decker bus is moving with which speed?",
+        "When the yellow scooter comes into the screen, how fast is it?"])
+    assert grief.program[-1] == "exist" and "filter_collision" in grief.program
+    assert tangle.program[-2:] == ["unique", "query_attributes[shape]"] and "get_all_col_partners" in tangle.program
+    assert plough.program[-1] == "is_moving_velocity[fast]" and "filter_collision" in plough.program
+    assert lick.program[-2:] == ["start", "is_moving_velocity[fast]"]
+    assert "Counterfactual_accelerating" in foot.program
+    assert begun.program[-2:] == ["start", "is_moving_velocity[fast]"]
+    assert compared.program[-2:] == ["start", "faster_velocity"]
+    assert which_speed.program[-2:] == ["start", "query_moving_velocity"]
+    assert "come_in_frame" in screen.program
+    # each of these had a wrong reading: leaving the view as coming into it, the video's end as its start, a place
+    # as a speed, a speeding up at a collision as a speed there
+    refused = parser.analyse_batch([
+        "When the gray chopper goes out from the view, with what speed is it moving?",
+        "In the end time of video, which color is the vehicle that is not moving?",
+        "The brown road bike and the cyan wagon, which one is more close to the camera in the beginning?",
+        "Is the red biplane still floating in the air when the cartoon finishes?",
+        "Was the purple tandem bike speeding up at the moment it collided with the red sedan?"])
+    assert [p.program for p in refused] == [None] * 5
+    assert "leaves the view ('goes out')" in refused[0].reason and "speeds up" in refused[4].reason

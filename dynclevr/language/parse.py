@@ -1188,6 +1188,7 @@ IDIOMS = phrase_table({
     **{(prep, which, "direction"): ("in", which, "direction") for prep in ("for", "to", "toward", "towards")
        for which in ("what", "which")},
     ("how", "much", "speed"): ("how", "fast"),
+    **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
 }.items())
