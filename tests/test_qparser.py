@@ -1743,3 +1743,23 @@ def test_collision_idioms_and_a_translators_wording_read_and_their_wrong_reading
         "Was the purple tandem bike speeding up at the moment it collided with the red sedan?"])
     assert [p.program for p in refused] == [None] * 5
     assert "leaves the view ('goes out')" in refused[0].reason and "speeds up" in refused[4].reason
+
+
+def test_a_researchers_window_a_phones_mtb_a_label_before_a_time_and_a_race_read_and_sounds_refused():
+    parser = QuestionParser.load()
+    window, mtb, label, line, carrying = parser.analyse_batch([
+        "In the post-observation window, will the blue school bus and the green sedan come into contact?",
+        "dose the brown scooter hit the gray mtb in the video",
+        "Here's an easy one: at any point in the video, do the green scooter and the red minivan collide?",
+        "Right off the line, is the blue station wagon quicker than the green chopper?",
+        "Was the green double-decker carrying more speed than the blue cruiser when they collided?"])
+    assert window.program[0] == "futureEvents" and window.program[-1] == "exist"
+    assert "filter_attributes[mountain_bike]" in mtb.program
+    assert label.program[0] == "Events" and label.program[-1] == "exist"   # 'easy' had been read as slow
+    assert line.program[-2:] == ["start", "faster_velocity"]
+    assert carrying.program[-1] == "faster_velocity" and "filter_collision" in carrying.program
+    sound, parking = parser.analyse_batch([
+        "And what a noise that was - what sound does the double-decker make when it hits the cyan minivan?",
+        "is the brown minivan parked in a parking spot or just on the floor"])
+    assert sound.program is None and "heard ('noise')" in sound.reason
+    assert parking.program is None and "'parking spot'" in parking.reason

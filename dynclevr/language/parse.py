@@ -662,7 +662,7 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 # bracket is an unknown word).
 LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
                "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
-               "is", "the"}
+               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus"}   # 'Here's an easy one:' ('easy': slow)
 ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
 
 
@@ -691,7 +691,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         read.append(("this", "the"))
         words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
     end = next((k for k, w in enumerate(words[:7]) if w in (":", ".")), None)
-    if end and all(map(_label, words[:end])) and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS:
+    if end and all(map(_label, words[:end])) and words[end + 1:end + 2] and \
+            words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
         read.append((" ".join(words[:end + 1]), "nothing, a label"))
         words = words[end + 1:]
     out, k = [], 0
@@ -1188,6 +1189,14 @@ IDIOMS = phrase_table({
     **{(prep, which, "direction"): ("in", which, "direction") for prep in ("for", "to", "toward", "towards")
        for which in ("what", "which")},
     ("how", "much", "speed"): ("how", "fast"),
+    # a race's start ('right off the line') and a commentator's speed ('carrying more speed than the cruiser')
+    **{(*right, "off", "the", *starting, "line"): _START for right in ((), ("right",)) for starting in ((), ("starting",))},
+    **{(carrying, "more", "speed", "than"): (going, "faster", "than") for carrying, going in (
+        ("carrying", "going"), ("carries", "goes"), ("carried", "went"), ("carry", "go"))},
+    # a researcher's time of the video ('during the observation window', 'in the post-observation window')
+    **{(*the, "observation", window): (*the, "video") for the in ((), ("the",)) for window in ("window", "period")},
+    **{(*at, "the", "post", "-", "observation", window): ("after", "the", "video") for at in ((), ("in",), ("during",))
+       for window in ("window", "period")},
     **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
@@ -1849,7 +1858,8 @@ HEIGHT_MOTIONS = {"moving", "going", "flying", "heading", "headed", "travelling"
 PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "front", "of"], ["further"],
                  ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"],
                  # a learner's comparative of a place ('which one is more close to the camera?' was read as faster)
-                 *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"])
+                 *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"],
+                 *(["parking", w] for w in ("spot", "space", "lot", "bay")))
 RIGHT_AS_TIME = {"at", "when", "as", "after", "before", "away", "then", "from", "in", "on", "upon"}
 
 
@@ -1943,6 +1953,9 @@ MAKING = {"physics", "simulator", "simulation", "simulated", "renderer", "render
 QUANTITIES = {"gravity", "force", "forces", "energy", "momentum", "friction", "inertia", "torque", "pressure",
               "elastic", "inelastic", "bouncy", "bounciness", "restitution", "vector", "vectors", "angular",
               "rotational", "kinetic", "mass", "weight", "weighs", "altitude", "coordinates", "coordinate"}
+# what is heard ('what sound does the bus make when it hits the van?' was read as its speed there)
+SOUNDS = {"sound", "sounds", "noise", "noises", "noisy", "loud", "loudly", "honk", "honks", "honked", "honking", "horn",
+          "horns", "beep", "beeps", "siren", "sirens", "hear", "hears", "heard", "audible", "screech", "screeches"}
 # each word of a kind no family asks, and why it is refused ('{}': the word)
 NO_FAMILY_WORDS = (
     (PEOPLE, "the question asks about a person ('{}'), and the videos show only vehicles (questions ask how they move "
@@ -1958,6 +1971,8 @@ NO_FAMILY_WORDS = (
     (FAULT, "the question asks who is to blame ('{}'), which no question here asks (they ask who collides)"),
     (FITTINGS, "the question asks about a vehicle's '{}', which no question here asks (they ask how it moves, its "
                "colour and its type)"),
+    (SOUNDS, "the question asks what is heard ('{}'), and the videos are silent (questions ask how the vehicles move "
+             "and what they hit)"),
 )
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
