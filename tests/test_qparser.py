@@ -1763,3 +1763,25 @@ def test_a_researchers_window_a_phones_mtb_a_label_before_a_time_and_a_race_read
         "is the brown minivan parked in a parking spot or just on the floor"])
     assert sound.program is None and "heard ('noise')" in sound.reason
     assert parking.program is None and "'parking spot'" in parking.reason
+
+
+def test_a_letters_greeting_sign_off_and_clip_heading_and_a_remark_after_the_question_ask_nothing():
+    parser = QuestionParser.load()
+    letter, heading, remark, starts, pickup = parser.analyse_batch([
+        "Dear support, if the purple school bus had been moving fast from the start, would it have collided with the "
+        "blue road bike? Many thanks, Oksana",
+        "Hi team, re clip 3: at the moment the green road bike crashes with the blue truck, is the bike going faster "
+        "than the truck? Thx",
+        "what kind of vehicle did the blue dirt bike crash into??? couldn't see",
+        "Right when it starts, how fast is the red sedan going?",
+        "Does the purple pickup run into the blue biplane at any point in the video?"])
+    assert "Counterfactual_moving_fast" in letter.program
+    assert heading.program[-1] == "faster_velocity" and "filter_collision" in heading.program
+    assert remark.program[-1] == "query_attributes[shape]" and "get_all_col_partners" in remark.program
+    assert starts.program[-2:] == ["start", "query_moving_velocity"]   # had been read as coming into view
+    assert "filter_attributes[truck]" in pickup.program
+    # what follows the question and asks something stays: its time, or the property to give
+    later, give = parser.analyse_batch(["Hello, is the gray school bus moving fast at the end of the video? Best "
+                                        "wishes, Femi", "Which vehicle is accelerating at the beginning? Give its type."])
+    assert later.program is None
+    assert give.program[-1] == "query_attributes[shape]"

@@ -480,11 +480,18 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 # a comma after them: 'Right at the start, is ...' opens with a time.
 CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
-                 "hey", "anyway", "anyways", "yo", "hi", "hello"} | CHAT
+                 "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
+                 "evening"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
-             "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all"}
+             "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all", "support", "there",
+             "sir", "madam", "colleagues", "staff", "helpdesk"}   # and a letter's ('Dear support,')
+# A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
+# prediction.'): it asks nothing, and its name is an unknown word
+SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
+             "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
+             "greetings", "with"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
@@ -499,7 +506,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
     while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS
                               and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
-                              or k and words[k - 1] in INTERJECTIONS and words[k] in VOCATIVES | {"like"}):
+                              or k and words[k - 1] in INTERJECTIONS | VOCATIVES and words[k] in VOCATIVES | {"like"}):
         k += 1
         while k < len(words) and words[k] in INTERJECTION_ENDS:
             k += 1
@@ -507,6 +514,15 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     while end > k and (words[end - 1] in CLOSING_INTERJECTIONS or words[end - 1] in INTERJECTION_ENDS
                        and end - 1 > k and words[end - 2] in CLOSING_INTERJECTIONS):
         end -= 1
+    # ... and a letter's sign-off or a short remark after the question ('? couldn't see'), where it says nothing of
+    # a vehicle, a time, a motion or a collision
+    asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
+    tail = words[asked + 1:end] if asked is not None else []
+    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4) and not asks_impact(tail) and not set(tail) & (
+            OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
+            | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say"):
+        # (not '? Give its colour.')
+        end = asked + 1
     closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
     # a speaker's fillers within the question ('the um green sedan'), with the commas around them
     within = [j for j in range(k, end) if words[j] in FILLERS]
@@ -662,8 +678,14 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 # bracket is an unknown word).
 LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
                "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
-               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus"}   # 'Here's an easy one:' ('easy': slow)
+               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus", "query", "check", "hypothetical"}
+# ('Here's an easy one:': 'easy' is slow; 'Hi, quick check - is ...': a greeting before it, 'quick' is fast)
 ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
+
+
+# ... after a greeting, or naming which clip it is about ('Hi team, re clip 3: at the moment ...')
+CLIP_NAMED = {",", "re", "regarding", "concerning", "about", "on", "for", "video", "clip"} | {
+    str(n) for n in range(100)}
 
 
 def _label(word: str) -> bool:
@@ -690,8 +712,9 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if any(a == "this" and b in OBJECT_WORDS for a, b in zip(words, words[1:])):   # 'is this green bus ...'
         read.append(("this", "the"))
         words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
-    end = next((k for k, w in enumerate(words[:7]) if w in (":", ".")), None)
-    if end and all(map(_label, words[:end])) and words[end + 1:end + 2] and \
+    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-")), None)
+    if end and all(_label(w) or w in INTERJECTIONS | VOCATIVES | CLIP_NAMED for w in words[:end]) and \
+            any(map(_label, words[:end])) and words[end + 1:end + 2] and \
             words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
         read.append((" ".join(words[:end + 1]), "nothing, a label"))
         words = words[end + 1:]
@@ -884,14 +907,16 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
 # 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please |kindly )?"
-                     r"(?:tell me|let me know)|do you (?:happen to )?know|i (?:would |' d |want to |need to |should )"
+                     r"(?:tell me|let me know|advise(?: me)?)|do you (?:happen to )?know"
+                     r"|i (?:would |' d |want to |need to |should )"
                      r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
                      r"|(?:my )?[a-z]+ (?:wants|wanted|would like|' d like|needs) to know)"
                      r" (?:, )?(?:please )?")
 # whether a statement holds, asked formally ('Can it be established that ...'): the grammar's 'is it true that'
-CERTAINTY = re.compile(r"^(?:can|could) (?:it|one|we|you) (?:be )?(?:established|shown|confirmed|verified|determined|"
+CERTAINTY = re.compile(r"^(?:can|could|would) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
+                       r"(?:established|shown|confirmed|verified|determined|"
                        r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
                        r"demonstrate) (?:that|whether|if) ")
 
@@ -1189,8 +1214,11 @@ IDIOMS = phrase_table({
     **{(prep, which, "direction"): ("in", which, "direction") for prep in ("for", "to", "toward", "towards")
        for which in ("what", "which")},
     ("how", "much", "speed"): ("how", "fast"),
+    **{("this", film): ("the", film) for film in ("video", "clip", "footage", "film", "recording", "movie")},
+    **{("right", "when", "it", starts): _START for starts in ("starts", "begins", "opens")},
     # a race's start ('right off the line') and a commentator's speed ('carrying more speed than the cruiser')
-    **{(*right, "off", "the", *starting, "line"): _START for right in ((), ("right",)) for starting in ((), ("starting",))},
+    **{(*right, "off", "the", *starting, "line"): _START for right in ((), ("right",))
+       for starting in ((), ("starting",))},
     **{(carrying, "more", "speed", "than"): (going, "faster", "than") for carrying, going in (
         ("carrying", "going"), ("carries", "goes"), ("carried", "went"), ("carry", "go"))},
     # a researcher's time of the video ('during the observation window', 'in the post-observation window')

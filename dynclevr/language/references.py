@@ -31,7 +31,8 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon",
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
                   "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
-                  "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike", "mtb": "mountain bike",
+                  "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
+                  "mtb": "mountain bike", "pickup": "truck",
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus",
