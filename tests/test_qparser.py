@@ -1785,3 +1785,13 @@ def test_a_letters_greeting_sign_off_and_clip_heading_and_a_remark_after_the_que
                                         "wishes, Femi", "Which vehicle is accelerating at the beginning? Give its type."])
     assert later.program is None
     assert give.program[-1] == "query_attributes[shape]"
+
+
+def test_a_dropped_g_is_the_word_in_full_and_jammed_is_hit():
+    assert tokenize("How fast is the bus movin' at the start?")[5] == "moving"
+    assert tokenize("the 'spin' and Berlin's")[2] == "spin"   # a quoted word and a possessive stay as they are
+    parser = QuestionParser.load()
+    driver, jammed = parser.analyse_batch(["Who's drivin' the purple SUV, mate?",
+                                           "Was the red truck moving fast when it jammed the yellow tandem bike?"])
+    assert driver.program is None and "person" in driver.reason
+    assert jammed.program[-1] == "is_moving_velocity[fast]" and "filter_collision" in jammed.program

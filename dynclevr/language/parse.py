@@ -1226,6 +1226,9 @@ IDIOMS = phrase_table({
     **{(*at, "the", "post", "-", "observation", window): ("after", "the", "video") for at in ((), ("in",), ("during",))
        for window in ("window", "period")},
     **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
+    # 'jam' said for 'hit' ('when it jammed the bike', 'will they jam each other?'; a traffic jam is refused)
+    **{(jam, after): (hit, after) for jam, hit in (("jam", "hit"), ("jams", "hits"), ("jammed", "hit"),
+                                                   ("jamming", "hitting")) for after in ("the", "each", "into")},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
 }.items())

@@ -16,6 +16,8 @@ _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": 
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
 _NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|should|wo|ca)n'?t\b")
 _NOT_STEMS = {"wo": "will", "ca": "can"}
+# A dropped g written with an apostrophe ("movin'", "drivin'") is the word in full
+_DROPPED_G = re.compile(r"(?<!')\b([a-z]{2,}in)'(?!s\b)")   # not a quoted word ("the 'spin'")
 
 
 def tokenize(text: str) -> list[str]:
@@ -23,4 +25,5 @@ def tokenize(text: str) -> list[str]:
     raises on a str."""
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
+    text = _DROPPED_G.sub(r"\1g", text)
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]
