@@ -23,7 +23,7 @@ from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_s
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
-                                     corrections_dropped,
+                                     context_as_question, corrections_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -1795,3 +1795,55 @@ def test_a_dropped_g_is_the_word_in_full_and_jammed_is_hit():
                                            "Was the red truck moving fast when it jammed the yellow tandem bike?"])
     assert driver.program is None and "person" in driver.reason
     assert jammed.program[-1] == "is_moving_velocity[fast]" and "filter_collision" in jammed.program
+
+
+def _context_read(text: str) -> str:
+    return " ".join(context_as_question(catalogue_names(tokenize(text))[0])[0])
+
+
+def test_context_before_the_question_gives_its_vehicles_condition_and_moment():
+    assert _context_read("The yellow school bus is near the left edge. I couldn't tell whether it was moving. How "
+                         "fast is it going right at the start?") == \
+        "how fast is the yellow school bus going right at the start ?"
+    assert _context_read("There's a red double-decker and a cyan scooter near the middle. They come really close. Do "
+                         "they end up colliding?") == "do the red double bus and the cyan scooter end up colliding ?"
+    assert _context_read("The green double-decker and the yellow jet are in frame. Is the double-decker slower than "
+                         "the jet at the start?") == \
+        "is the green double bus slower than the yellow jet at the start ?"
+    assert _context_read("Suppose the gray dirt bike hadn't been moving at the beginning. The blue bus would still "
+                         "come through. Would the dirt bike collide with the bus in that case?") == \
+        ("suppose the gray dirtbike had not been moving at the beginning . would the dirtbike collide with the blue "
+         "bus in that case ?")
+    assert _context_read("Picture the gray airliner up in the air from the first frame instead of on the ground. "
+                         "Would the airliner crash into the red scooter then?") == \
+        ("picture the gray airliner had been up in the air from the first frame . would the airliner crash into the "
+         "red scooter then ?")
+    assert _context_read("The blue SUV slams into the gray jet near the end. How fast was the SUV going then?") == \
+        "when the blue suv and the gray jet collide , how fast was the blue suv going ?"
+    assert _context_read("The gray cruiser shows up at some point. How fast is it moving then?") == \
+        "when the gray cruiser comes into view , how fast is the gray cruiser moving ?"
+    # left whole: a vehicle the context describes but does not name, a context that asks, an ellipsis, 'i.e.'
+    for text in ("Something hits the cyan jet. What colour is it?", "The SUV hits a vehicle. What kind is that?",
+                 "How about the brown bike? How fast is it at the start?",
+                 "when the brown dirtbike and yellow bus crash, which... is the dirtbike faster?",
+                 "Do the red bus and the jet come into contact, i.e. collide, at any point?"):
+        assert _context_read(text) == " ".join(catalogue_names(tokenize(text))[0]), text
+
+
+def test_questions_after_their_context_parse_and_a_speed_offered_as_not_at_all_is_asked():
+    parser = QuestionParser.load()
+    chopper, scooter, condition, then, damaged, late = parser.analyse_batch([
+        "I'm trying to sort out the green chopper. It's hard to read. Is it moving fast, slowly, or not at all at "
+        "the very beginning?",
+        "Toward the end the brown scooter runs into the blue minivan. I want to know about the scooter's speed there. "
+        "Is it moving fast, slowly, or standing still when the two of them collide?",
+        "What if the brown chopper had been accelerating from the very beginning? The green fighter plane is over on "
+        "the right side. Would the chopper collide with the fighter then?",
+        "The blue biplane hits the brown sedan at some point. How fast is the biplane going when that happens?",
+        "The blue mountain bike crashes into something. Afterward it spins a bit. Does it get damaged?",
+        "The purple road bike seems to speed up. Is it accelerating in the last second of the video?"])
+    assert chopper.program[-2:] == ["start", "query_moving_velocity"]   # 'not at all' was read as asking 'fast?'
+    assert scooter.program[-1] == "query_moving_velocity" and "filter_attributes[minivan]" in scooter.program
+    assert condition.program[4] == "Counterfactual_accelerating" and "filter_attributes[fighter]" in condition.program
+    assert then.program[-2:] == ["get_frame", "query_moving_velocity"]
+    assert damaged.program is None and late.program is None

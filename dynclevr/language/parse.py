@@ -69,7 +69,8 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, coordinated,
-                                          corefer, delexicalise, description_as_said, is_description,
+                                          corefer, delexicalise, description_as_said, generalises,
+                                          is_description, mentions,
                                           phrase_table, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips
@@ -263,6 +264,7 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, shorthand = shorthand_as_said(words)
         words, named = catalogue_names(words)
+        words, context = context_as_question(words)
         words, corrected = corrections_dropped(words)
         words, owned = owners_dropped(words)
         words, labelled = asides_dropped(words)
@@ -286,7 +288,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + corrected + owned + labelled + inserted + opened + idioms + described + typed
+        request = (shorthand + named + context + corrected + owned + labelled + inserted + opened + idioms + described + typed
                    + afloat + end + framing + attended + request + stated + negative + asked + aloft + heading + subject
                    + first + more + tail + offered)
         if not words:   # 'y/n' alone: an answer's form, and nothing asked
@@ -536,6 +538,166 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
+
+# Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
+# moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
+# before it are read for what the question refers back to, and dropped: the vehicles its 'it', 'they' or shorter
+# names mean, a counterfactual's condition ('Suppose the bus had been parked. ... Would it hit the car?') and the
+# moment its 'then' means ('The SUV slams into the jet. How fast was the SUV going then?').
+SENTENCE_ENDS = {".", "!", "?"}
+CONTEXT_OPENERS = {"so", "ok", "okay", "and", "now", "but", "well", "alright", "right", "also", ",", "-", ":"}
+CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose",), ("lets", "say"): ("suppose",),
+                   ("say",): ("suppose",), ("hypothetically", ":"): ("suppose",), ("hypothetically", ","): ("suppose",),
+                   ("hypothetically",): ("suppose",), ("consider",): ("suppose",),
+                   **{(w,): (w,) for w in ("suppose", "supposing", "imagine", "assume", "assuming", "pretend", "if",
+                                           "picture", "envision", "envisage", "visualise", "visualize")}}
+# a sentence of context that imagines something otherwise, but not as a condition read here: the question is left
+# whole ('if' only where a clause of it imagines: 'I can't tell if it's moving' asks whether)
+IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
+                 "hypothetical", "instead", "otherwise", "wish"}
+# A state said without its verb after the condition's vehicle ('Picture the airliner up in the air from the start')
+STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
+               "going", "travelling", "traveling", "driving", "riding", "rolling", "speeding", "accelerating",
+               "standing", "sitting", "fast", "slow", "already", "stopped", "motionless", "airborne", "aloft"}
+PLURAL_PRONOUNS = (("the", "two", "of", "them"), ("both", "of", "them"), ("the", "pair", "of", "them"),
+                   ("these", "two"), ("those", "two"), ("they",))
+# 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
+IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear"}
+# A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
+# 'The SUV hits a vehicle. What kind of vehicle is that?'): the question is left whole, which reads it so
+UNNAMED = {"something", "someone", "somebody", "anything", "whatever"}
+GENERIC = {"vehicle", "vehicles", "thing", "things", "object", "objects", "toy", "toys", "one", "other"}
+NAMELESS = {"some", "a", "an", "another", "one"}
+THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
+             ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
+             *((w, d, "happens") for w in ("when", "as") for d in ("that", "this", "it")), ("then",))
+
+
+def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
+    """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis ('well... is it'), a
+    point after a letter ('i.e.') or between digits closes none."""
+    spans, start = [], 0
+    for k, w in enumerate(words):
+        before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
+        if w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
+                before == "." or len(before) == 1 and before.isalpha() or before.isdigit() and after.isdigit()):
+            continue
+        spans.append((start, k + 1))
+        start = k + 1
+    return spans + [(start, len(words))] * (start < len(words))
+
+
+def _condition_said(sentence: list[str]) -> list[str] | None:
+    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...'),
+    as the clause 'if ...' or 'suppose ...' that the parser reads before a question; None for any other sentence."""
+    for k in (0, sentence.index(":") + 1 if ":" in sentence else 0):
+        while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
+            k += 1
+        said = next(((p, o) for p, o in CONDITIONS_SAID.items() if tuple(sentence[k:k + len(p)]) == p), None)
+        if said and mentions(sentence[k:]):
+            break
+    else:
+        return None
+    out = [*said[1], *sentence[k + len(said[0]):-1]]
+    first = mentions(out)[0]
+    if out[first[1]:first[1] + 1] and out[first[1]] in STATES_SAID:
+        out[first[1]:first[1]] = ["had", "been"]
+    if "instead" in out and out[out.index("instead") + 1:out.index("instead") + 2] == ["of"]:
+        out = out[:out.index("instead")]   # '... up in the air instead of on the ground': the change alone
+    return out + ["."]
+
+
+def _unnamed(sentence: list[str]) -> bool:
+    """Whether a sentence speaks of a vehicle without naming it ('something', 'a vehicle', 'one of them')."""
+    return bool(UNNAMED & set(sentence)) or any(a in NAMELESS and b in GENERIC | {"of"}
+                                                for a, b in zip(sentence, sentence[1:]))
+
+
+def _named(ref, asked: list[tuple]) -> bool:
+    return any(generalises(r, ref) or generalises(ref, r) for _, _, r in asked)
+
+
+def _said(ref) -> list[str]:
+    return ["the", *(w for v in ref for w in v.split("_"))]
+
+
+def _moment(context: list[list[str]], fullest: list) -> list[str] | None:
+    """The moment a question's 'then' means, from the latest sentence of context that names one: two vehicles'
+    collision, or a vehicle coming into view; None where none does."""
+    for sentence in reversed(context):
+        refs = list(dict.fromkeys(next((f for f in fullest if generalises(r, f)), r) for _, _, r in mentions(sentence)))
+        if asks_impact(sentence) and len(refs) >= 2:
+            return ["when", *_said(refs[0]), "and", *_said(refs[1]), "collide"]
+        if COMES_IN_WORDS & set(sentence) and refs:
+            return ["when", *_said(refs[0]), "comes", "into", "view"]
+    return None
+
+
+def context_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after its context, what it refers back to read from the context; with the context read as
+    what it gave. The words as they are and () where there is no context; where the question needs more than the
+    vehicles, a condition or a moment (a vehicle the context describes: 'Something is speeding up. What colour is
+    it?'); or where the context asks a question of its own, or imagines otherwise than as a condition."""
+    spans = _sentence_spans(words)
+    asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
+    if not asked_at:
+        return words, ()
+    context = [words[a:b] for a, b in spans[:asked_at]]
+    conditions = [_condition_said(s) for s in context]
+    if any(c is None and (s[-1] == "?" or IMAGINED_SAID & set(s) or "if" in s and {"had", "were", "would"} & set(
+            s[s.index("if"):])) for s, c in zip(context, conditions)):
+        return words, ()
+    question = words[spans[asked_at][0]:spans[asked_at][1]]
+    tail = words[spans[asked_at][1]:]
+    condition = next((c for c in reversed(conditions) if c), None)
+    own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
+    asked = (condition if condition and not own_condition else []) + question
+    # the vehicles the context names, fullest mention of each, in the order of the sentences that name them
+    said = [[r for _, _, r in mentions(s)] for s in context]
+    every = [r for refs in said for r in refs]
+    fullest = [r for r in dict.fromkeys(every) if not any(o != r and generalises(r, o) for o in every)]
+    latest = [r for refs in reversed(said) for r in refs if r in fullest]   # the most recent sentence's first
+    out = list(asked)
+    for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
+        fits = [r for r in fullest if r != ref and generalises(ref, r)]
+        alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]
+        if len(fits) == 1 and not alike:
+            out[start:end + (out[end:end + 1] == ["one"])] = _said(fits[0])[1:]
+    named = mentions(out)
+    pronoun = next((k for k, w in enumerate(out) if w in ("it", "its") and out[k + 1:k + 2] and
+                    out[k + 1] not in IT_FORWARD), None)
+    pronoun = pronoun if pronoun is not None and not any(start < pronoun for start, _, _ in named) else None
+    plural = next(((k, p) for k in range(len(out)) for p in PLURAL_PRONOUNS if tuple(out[k:k + len(p)]) == p), None)
+    plural = plural if plural and len({r for _, _, r in named}) < 2 else None
+    # 'what colour is that?', 'that vehicle', 'is that suspect?'
+    pointed = any(a in ("that", "this") and (b in GENERIC | {"?"} or out[k - 1:k] in (["is"], ["was"])
+                                            and out[k + 2:k + 3] == ["?"] and b not in OBJECT_WORDS)
+                  for k, (a, b) in enumerate(zip(out, out[1:])))
+    if (pronoun is not None or plural or pointed) and any(map(_unnamed, context)) or pointed:
+        return words, ()
+    if pronoun is not None:
+        meant = next((r for r in latest if not _named(r, named)), None)
+        if meant is None:
+            return words, ()
+        out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
+        named = mentions(out)
+    if plural:
+        others = [r for r in latest if not _named(r, named)]
+        pair = [r for _, _, r in named][:1] + others[:2 - len(named[:1])]
+        if len(pair) < 2 or len(fullest) > 2 and not named:
+            return words, ()
+        k, p = plural
+        out[k:k + len(p)] = _said(pair[0]) + ["and"] + _said(pair[1])
+    then = next(((k, p) for k in range(len(out)) for p in THEN_SAID if tuple(out[k:k + len(p)]) == p), None)
+    if then and not condition and not own_condition and not (
+            (START_WORDS | COMES_IN_WORDS) & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
+        moment = _moment(context, fullest)
+        if moment is None:
+            return words, ()
+        k, p = then
+        out = [*moment, ",", *out[:k], *out[k + len(p):]]
+    dropped = " ".join(w for s, c in zip(context, conditions) if c is not condition or own_condition for w in s)
+    return out + tail, ((dropped, "context read for what the question refers to"),) * bool(dropped)
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 NAMING = OBJECT_WORDS | NOUNS_SAID   # the words of a vehicle's name
@@ -1371,6 +1533,8 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "parked", "motionless", "stopped")},
                  **{("not", *m, *a): "static" for m in (("moving",), ("going",), ("travelling",), ("traveling",),
                                                           ("in", "motion")) for a in ((), ("at", "all"))},
+                 # 'moving fast, slowly, or not at all', 'or standing still'
+                 ("not", "at", "all"): "static", ("standing", "still"): "static", ("at", "rest"): "static",
                  ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
                  ("rapidly",): "fast"}
 VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
@@ -2294,7 +2458,8 @@ CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
 COLLISION_MANNER = {"violent", "violently", "severe", "severely", "serious", "seriously", "minor", "powerful",
                     "forceful", "forcefully", "softly", "damaging", "destructive", "fatal", "catastrophic", "absorb",
                     "absorbs", "absorbed", "absorbing", "avoidable", "unavoidable", "preventable", "inevitable",
-                    "angle", "angled", "glancing"}
+                    "angle", "angled", "glancing", "damage", "damaged", "damages", "dented", "dent", "dents",
+                    "broken", "breaks", "wrecked", "injured", "hurt", "scratched"}
 TRAVELLED = MOTION_WORDS | {"travel", "travels", "travelled", "traveled", "go", "goes", "went", "drive", "drives",
                             "drove"}
 CARRYING = {"carry", "carries", "carried", "carrying", "cargo", "load", "loaded", "tow", "tows", "towed", "towing"}
@@ -2935,7 +3100,8 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
              for very in ((), ("very",)) for e in ("end", "finish", "close")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
-    [[p, "the", a, f] for p in ("in", "at") for a in ("last", "final", "closing") for f in ("frame", "frames")]
+    [[p, "the", a, *few, f] for p in ("in", "at", "during") for a in ("last", "final", "closing")
+     for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
 

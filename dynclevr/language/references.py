@@ -192,6 +192,22 @@ def is_description(ref: Ref) -> bool:
     return len(ref) <= 2 and len(colors) <= 1 and (not colors or ref[0] in COLOR_NAMES) and len(ref) - len(colors) <= 1
 
 
+def mentions(words: list[str]) -> list[tuple[int, int, Ref]]:
+    """Each run of attribute words as (first, past-last) word and the values it names: ['is', 'the', 'red', 'sedan',
+    'fast'] -> [(2, 4, ('red', 'sedan'))]."""
+    out, i = [], 0
+    while i < len(words):
+        start, run = i, []
+        while i < len(words) and (hit := _value_at(words, i)):
+            run.append(hit[0])
+            i += hit[1]
+        if run:
+            out.append((start, i, tuple(run)))
+        else:
+            i += 1
+    return out
+
+
 def delexicalise(words: list[str]) -> tuple[list[str], list[Ref]]:
     """['is', 'the', 'red', 'sedan', 'static', '?'] -> (['is', 'the', '<obj1>', 'static', '?'], [('red', 'sedan')])."""
     out, refs, i = [], [], 0
@@ -210,7 +226,7 @@ def delexicalise(words: list[str]) -> tuple[list[str], list[Ref]]:
     return out, refs
 
 
-def _generalises(short: Ref, full: Ref) -> bool:
+def generalises(short: Ref, full: Ref) -> bool:
     """Every word of `short` says something `full` says: one of its values, or the category of its sub-type
     ('the bus' of 'the yellow double bus', 'the dirtbike' of 'the gray dirtbike')."""
     said = set(full) | {SUBTYPES[v][0] for v in full if v in SUBTYPES}
@@ -248,7 +264,7 @@ def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
     training scores them without it (`QuestionParser.corefer`). Mentions joined by 'and' or 'or' ('the bus and the
     school bus') are told apart by the question itself, so neither is read as the other."""
     apart = coordinated(words)
-    fuller = {k: [j for j, r in enumerate(refs) if r != ref and _generalises(ref, r) and (k, j) not in apart]
+    fuller = {k: [j for j, r in enumerate(refs) if r != ref and generalises(ref, r) and (k, j) not in apart]
               for k, ref in enumerate(refs)}
     root = list(range(len(refs)))
     for k, js in fuller.items():
