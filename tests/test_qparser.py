@@ -1822,6 +1822,12 @@ def test_context_before_the_question_gives_its_vehicles_condition_and_moment():
         "when the blue suv and the gray jet collide , how fast was the blue suv going ?"
     assert _context_read("The gray cruiser shows up at some point. How fast is it moving then?") == \
         "when the gray cruiser comes into view , how fast is the gray cruiser moving ?"
+    assert _context_read("The red sedan and the blue bus start on the left. Is the former faster than the latter?") \
+        == "is the red sedan faster than the blue bus ?"
+    assert _context_read("There's a purple jet and a green truck. Will the two collide? ") == \
+        "will the purple jet and the green truck collide ?"
+    assert _context_read("There's a purple jet and a green truck. Does the jet hit the other one?") == \
+        "does the purple jet hit the green truck ?"
     # left whole: a vehicle the context describes but does not name, a context that asks, an ellipsis, 'i.e.'
     for text in ("Something hits the cyan jet. What colour is it?", "The SUV hits a vehicle. What kind is that?",
                  "How about the brown bike? How fast is it at the start?",

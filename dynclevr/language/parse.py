@@ -559,8 +559,16 @@ IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "prete
 STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
                "going", "travelling", "traveling", "driving", "riding", "rolling", "speeding", "accelerating",
                "standing", "sitting", "fast", "slow", "already", "stopped", "motionless", "airborne", "aloft"}
-PLURAL_PRONOUNS = (("the", "two", "of", "them"), ("both", "of", "them"), ("the", "pair", "of", "them"),
-                   ("these", "two"), ("those", "two"), ("they",))
+PLURAL_PRONOUNS = (*((w, "two", "of", "them") for w in ("the", "all")), ("both", "of", "them"),
+                   ("the", "pair", "of", "them"), *((w, "two", *v) for w in ("the", "these", "those")
+                                                   for v in (("vehicles",), ("of", "them"), ())),
+                   ("the", "pair"), ("they",), ("both", "vehicles"), ("both",))
+# a vehicle of the context by its place in it ('the first one', 'the latter') or as the one not named ('the other')
+PLACES_SAID = {**{("the", w, *n): 0 for w in ("first", "former") for n in (("one",), ("vehicle",), ())
+                  if n or w == "former"},
+               **{("the", w, *n): 1 for w in ("second", "latter") for n in (("one",), ("vehicle",), ())
+                  if n or w == "latter"},
+               **{("the", "other", *n): None for n in (("one",), ("vehicle",), ())}}
 # 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
 IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear"}
 # A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
@@ -663,6 +671,16 @@ def context_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]
         if len(fits) == 1 and not alike:
             out[start:end + (out[end:end + 1] == ["one"])] = _said(fits[0])[1:]
+    for k in reversed(range(len(out))):
+        place = next((p for p in PLACES_SAID if tuple(out[k:k + len(p)]) == p and not (
+            out[k + len(p):k + len(p) + 1] and out[k + len(p)] in OBJECT_WORDS)), None)
+        if place is not None:
+            at = PLACES_SAID[place]
+            others = [r for r in fullest if not _named(r, mentions(out[:k] + out[k + len(place):]))]
+            meant = fullest[at] if at is not None and len(fullest) == 2 else others[0] if len(others) == 1 else None
+            if meant is None:
+                return words, ()
+            out[k:k + len(place)] = _said(meant)
     named = mentions(out)
     pronoun = next((k for k, w in enumerate(out) if w in ("it", "its") and out[k + 1:k + 2] and
                     out[k + 1] not in IT_FORWARD), None)
