@@ -1823,7 +1823,7 @@ def test_context_before_the_question_gives_its_vehicles_condition_and_moment():
     assert _context_read("The gray cruiser shows up at some point. How fast is it moving then?") == \
         "when the gray cruiser comes into view , how fast is the gray cruiser moving ?"
     assert _context_read("The red sedan and the blue bus start on the left. Is the former faster than the latter?") \
-        == "is the red sedan faster than the blue bus ?"
+        == "is the red sedan faster than the blue bus at the start ?"
     assert _context_read("There's a purple jet and a green truck. Will the two collide? ") == \
         "will the purple jet and the green truck collide ?"
     assert _context_read("There's a purple jet and a green truck. Does the jet hit the other one?") == \
@@ -1853,3 +1853,26 @@ def test_questions_after_their_context_parse_and_a_speed_offered_as_not_at_all_i
     assert condition.program[4] == "Counterfactual_accelerating" and "filter_attributes[fighter]" in condition.program
     assert then.program[-2:] == ["get_frame", "query_moving_velocity"]
     assert damaged.program is None and late.program is None
+
+
+def test_context_gives_a_collisions_partner_a_conditions_it_and_the_start():
+    assert _context_read("The purple tandem bike smacks into the yellow station wagon. At the moment of impact, how "
+                         "fast is the bike?") == \
+        "when the purple tandem bike and the yellow wagon collide , how fast is the purple tandem bike ?"
+    assert _context_read("The blue road bike starts off fast. Imagine it started slow instead. Would it collide with "
+                         "the green school bus in that case?") == \
+        "imagine the blue road bike started slow . would it collide with the green school bus in that case ?"
+    assert _context_read("ok weird what-if. the cyan biplane is accelerating from the beginning instead. does it "
+                         "crash into the brown cruiser then?") == \
+        "suppose the cyan biplane is accelerating from the beginning . does it crash into the brown cruiser then ?"
+    assert _context_read("The purple dirt bike hits the gray wagon. Suppose the bike had been parked. Would it still "
+                         "collide with the wagon?") == \
+        "suppose the purple dirtbike had been parked . would it still collide with the gray wagon ?"
+    assert _context_read("Two things: the brown utility bike and the cyan minivan. Beginning of the video. Is the "
+                         "first one slower than the second?") == \
+        "is the brown utility bike slower than the cyan minivan at the start ?"
+    # 'it' of the named vehicle, where the context's other is unnamed; a vehicle said with an unknown word is not read
+    assert _context_read("The gray pickup hits something. What colour is the thing it collides with?") == \
+        "what color is the thing the gray truck collides with ?"
+    pink = tokenize("The pink scooter looked like it was speeding up. Is it accelerating at the start?")
+    assert context_as_question(pink, known={"the", "scooter"})[0] == pink

@@ -264,7 +264,7 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, shorthand = shorthand_as_said(words)
         words, named = catalogue_names(words)
-        words, context = context_as_question(words)
+        words, context = context_as_question(words, self.known)
         words, corrected = corrections_dropped(words)
         words, owned = owners_dropped(words)
         words, labelled = asides_dropped(words)
@@ -541,9 +541,10 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
-# before it are read for what the question refers back to, and dropped: the vehicles its 'it', 'they' or shorter
-# names mean, a counterfactual's condition ('Suppose the bus had been parked. ... Would it hit the car?') and the
-# moment its 'then' means ('The SUV slams into the jet. How fast was the SUV going then?').
+# before it are read for what the question refers back to, and dropped: the vehicles its 'it', 'they', 'the former'
+# or shorter names mean, a counterfactual's condition ('Suppose the bus had been parked. ... Would it hit the car?'),
+# the moment its 'then' means ('The SUV slams into the jet. How fast was the SUV going then?') and the start it says
+# nothing of ('Beginning of the video. Is the first one slower than the second?').
 SENTENCE_ENDS = {".", "!", "?"}
 CONTEXT_OPENERS = {"so", "ok", "okay", "and", "now", "but", "well", "alright", "right", "also", ",", "-", ":"}
 CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose",), ("lets", "say"): ("suppose",),
@@ -552,9 +553,11 @@ CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose"
                    **{(w,): (w,) for w in ("suppose", "supposing", "imagine", "assume", "assuming", "pretend", "if",
                                            "picture", "envision", "envisage", "visualise", "visualize")}}
 # a sentence of context that imagines something otherwise, but not as a condition read here: the question is left
-# whole ('if' only where a clause of it imagines: 'I can't tell if it's moving' asks whether)
+# whole ('if' only where a clause of it imagines: 'I can't tell if it's moving' asks whether); said alone, it makes
+# the next sentence the condition ('ok weird what-if. the biplane is accelerating from the beginning instead.')
 IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
-                 "hypothetical", "instead", "otherwise", "wish"}
+                 "hypothetical", "instead", "otherwise", "wish", "scenario"}
+CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
 # A state said without its verb after the condition's vehicle ('Picture the airliner up in the air from the start')
 STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
                "going", "travelling", "traveling", "driving", "riding", "rolling", "speeding", "accelerating",
@@ -563,22 +566,32 @@ PLURAL_PRONOUNS = (*((w, "two", "of", "them") for w in ("the", "all")), ("both",
                    ("the", "pair", "of", "them"), *((w, "two", *v) for w in ("the", "these", "those")
                                                    for v in (("vehicles",), ("of", "them"), ())),
                    ("the", "pair"), ("they",), ("both", "vehicles"), ("both",))
-# a vehicle of the context by its place in it ('the first one', 'the latter') or as the one not named ('the other')
-PLACES_SAID = {**{("the", w, *n): 0 for w in ("first", "former") for n in (("one",), ("vehicle",), ())
-                  if n or w == "former"},
-               **{("the", w, *n): 1 for w in ("second", "latter") for n in (("one",), ("vehicle",), ())
-                  if n or w == "latter"},
+# a vehicle of the context by its place in it ('the first one', 'the latter') or as the one not named ('the other');
+# 'the first' and 'the second' alone where no noun follows ('the second frame')
+PLACES_SAID = {**{("the", w, *n): 0 for w in ("first", "former") for n in (("one",), ("vehicle",), ())},
+               **{("the", w, *n): 1 for w in ("second", "latter") for n in (("one",), ("vehicle",), ())},
                **{("the", "other", *n): None for n in (("one",), ("vehicle",), ())}}
+AFTER_PLACE = {"?", ",", ".", "at", "when", "in", "during", "as", "and", "or", "than", "once", "while", "right", "just",
+               "is", "was", "does", "did", "going", "moving"}
 # 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
 IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear"}
 # A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
 # 'The SUV hits a vehicle. What kind of vehicle is that?'): the question is left whole, which reads it so
-UNNAMED = {"something", "someone", "somebody", "anything", "whatever"}
+UNNAMED = {"something", "someone", "somebody"}
 GENERIC = {"vehicle", "vehicles", "thing", "things", "object", "objects", "toy", "toys", "one", "other"}
 NAMELESS = {"some", "a", "an", "another", "one"}
 THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
              ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
-             *((w, d, "happens") for w in ("when", "as") for d in ("that", "this", "it")), ("then",))
+             *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
+             ("then",))
+# a collision said without its partner ('At the moment of impact, how fast is the bike?'), the context's
+IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash")
+IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for m in ("moment", "instant", "time")
+                         for the in ((), ("the",)) for n in IMPACT_NOUNS}
+                        | {(p, n) for p in ("at", "on", "upon") for n in ("impact", "contact")}
+                        | {(p, "the", n) for p in ("at", "during", "in") for n in IMPACT_NOUNS}, key=len, reverse=True)
+# a question's own time, besides the start and coming into view
+OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
 
 
 def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
@@ -595,24 +608,30 @@ def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
     return spans + [(start, len(words))] * (start < len(words))
 
 
-def _condition_said(sentence: list[str]) -> list[str] | None:
-    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...'),
-    as the clause 'if ...' or 'suppose ...' that the parser reads before a question; None for any other sentence."""
+def _at(words: list[str], phrases) -> tuple[int, tuple] | None:
+    return next(((k, p) for k in range(len(words)) for p in phrases if tuple(words[k:k + len(p)]) == p), None)
+
+
+def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
+    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...';
+    with its vehicle as 'it'; as a statement after a sentence that imagines), as the clause 'if ...' or 'suppose ...'
+    that the parser reads before a question; None for any other sentence."""
     for k in (0, sentence.index(":") + 1 if ":" in sentence else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
             k += 1
         said = next(((p, o) for p, o in CONDITIONS_SAID.items() if tuple(sentence[k:k + len(p)]) == p), None)
-        if said and mentions(sentence[k:]):
+        if said and (mentions(sentence[k:]) or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["it"], ["they"])):
             break
     else:
-        return None
+        if not (after_imagining and mentions(sentence)):
+            return None
+        said, k = ((), ("suppose",)), 0
     out = [*said[1], *sentence[k + len(said[0]):-1]]
-    first = mentions(out)[0]
-    if out[first[1]:first[1] + 1] and out[first[1]] in STATES_SAID:
-        out[first[1]:first[1]] = ["had", "been"]
-    if "instead" in out and out[out.index("instead") + 1:out.index("instead") + 2] == ["of"]:
-        out = out[:out.index("instead")]   # '... up in the air instead of on the ground': the change alone
-    return out + ["."]
+    subject = mentions(out)[0][1] if mentions(out) else out.index("it") + 1 if "it" in out else out.index("they") + 1
+    if out[subject:subject + 1] and out[subject] in STATES_SAID:
+        out[subject:subject] = ["had", "been"]
+    change_end = _at(out, CHANGE_ENDS)
+    return out[:change_end[0]] + ["."] if change_end else out + ["."]
 
 
 def _unnamed(sentence: list[str]) -> bool:
@@ -621,59 +640,74 @@ def _unnamed(sentence: list[str]) -> bool:
                                                 for a, b in zip(sentence, sentence[1:]))
 
 
+def _fits(short, full) -> bool:
+    """Whether a shorter mention can be a fuller one's vehicle; a 'bike' may be a motorbike ('the purple dirt bike ...
+    the bike')."""
+    return generalises(short, full) or generalises(tuple("motorbike" if v == "bicycle" else v for v in short), full)
+
+
 def _named(ref, asked: list[tuple]) -> bool:
-    return any(generalises(r, ref) or generalises(ref, r) for _, _, r in asked)
+    return any(_fits(r, ref) or _fits(ref, r) for _, _, r in asked)
 
 
 def _said(ref) -> list[str]:
     return ["the", *(w for v in ref for w in v.split("_"))]
 
 
-def _moment(context: list[list[str]], fullest: list) -> list[str] | None:
+def _moment(context: list[list[str]], fullest: list, of=None) -> list[str] | None:
     """The moment a question's 'then' means, from the latest sentence of context that names one: two vehicles'
-    collision, or a vehicle coming into view; None where none does."""
+    collision (one of them `of`, where given), or a vehicle coming into view; None where none does."""
     for sentence in reversed(context):
-        refs = list(dict.fromkeys(next((f for f in fullest if generalises(r, f)), r) for _, _, r in mentions(sentence)))
-        if asks_impact(sentence) and len(refs) >= 2:
+        refs = list(dict.fromkeys(next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(sentence)))
+        if asks_impact(sentence) and len(refs) >= 2 and (of is None or of in refs[:2]):
             return ["when", *_said(refs[0]), "and", *_said(refs[1]), "collide"]
-        if COMES_IN_WORDS & set(sentence) and refs:
+        if of is None and COMES_IN_WORDS & set(sentence) and refs:
             return ["when", *_said(refs[0]), "comes", "into", "view"]
     return None
 
 
-def context_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
-    vehicles, a condition or a moment (a vehicle the context describes: 'Something is speeding up. What colour is
-    it?'); or where the context asks a question of its own, or imagines otherwise than as a condition."""
+    vehicles, a condition, a moment or the start (a vehicle the context describes: 'Something is speeding up. What
+    colour is it?'; a vehicle said with a word the parser does not know, of `known`: 'the pink scooter'); or where
+    the context asks a question of its own, or imagines otherwise than as a condition."""
     spans = _sentence_spans(words)
     asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
     if not asked_at:
         return words, ()
     context = [words[a:b] for a, b in spans[:asked_at]]
-    conditions = [_condition_said(s) for s in context]
-    if any(c is None and (s[-1] == "?" or IMAGINED_SAID & set(s) or "if" in s and {"had", "were", "would"} & set(
-            s[s.index("if"):])) for s, c in zip(context, conditions)):
+    conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
+                                          and not mentions(context[j - 1]))) for j, s in enumerate(context)]
+    if any(c is None and (s[-1] == "?" or IMAGINED_SAID & set(s) and mentions(s) or "if" in s and
+                          {"had", "were", "would"} & set(s[s.index("if"):])) for s, c in zip(context, conditions)):
         return words, ()
     question = words[spans[asked_at][0]:spans[asked_at][1]]
     tail = words[spans[asked_at][1]:]
     condition = next((c for c in reversed(conditions) if c), None)
     own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
     asked = (condition if condition and not own_condition else []) + question
-    # the vehicles the context names, fullest mention of each, in the order of the sentences that name them
-    said = [[r for _, _, r in mentions(s)] for s in context]
-    every = [r for refs in said for r in refs]
-    fullest = [r for r in dict.fromkeys(every) if not any(o != r and generalises(r, o) for o in every)]
-    latest = [r for refs in reversed(said) for r in refs if r in fullest]   # the most recent sentence's first
+    # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
+    # said with a word the parser does not know are not read for it
+    said = [mentions(s) for s in context]
+    every = [r for runs in said for _, _, r in runs]
+    fullest = [r for r in dict.fromkeys(every) if not any(o != r and _fits(r, o) for o in every)]
+    latest = [r for runs in reversed(said) for _, _, r in runs if r in fullest]   # the most recent sentence's first
+    unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, _, r in runs
+              if known is not None and a and s[a - 1].isalpha() and s[a - 1] not in known}
+    used = set()
     out = list(asked)
     for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
-        fits = [r for r in fullest if r != ref and generalises(ref, r)]
-        alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]
+        fits = [r for r in fullest if r != ref and _fits(ref, r)]
+        alike = [r for _, _, r in mentions(asked) if r != ref and _fits(ref, r)]
         if len(fits) == 1 and not alike:
             out[start:end + (out[end:end + 1] == ["one"])] = _said(fits[0])[1:]
+            used.add(fits[0])
     for k in reversed(range(len(out))):
-        place = next((p for p in PLACES_SAID if tuple(out[k:k + len(p)]) == p and not (
-            out[k + len(p):k + len(p) + 1] and out[k + len(p)] in OBJECT_WORDS)), None)
+        place = next((p for p in PLACES_SAID if tuple(out[k:k + len(p)]) == p and (
+            p[-1] in ("one", "vehicle", "former", "latter", "other") or out[k + len(p):k + len(p) + 1] and
+            out[k + len(p)] in AFTER_PLACE) and not (out[k + len(p):k + len(p) + 1] and
+                                                       out[k + len(p)] in OBJECT_WORDS | GENERIC)), None)
         if place is not None:
             at = PLACES_SAID[place]
             others = [r for r in fullest if not _named(r, mentions(out[:k] + out[k + len(place):]))]
@@ -681,23 +715,26 @@ def context_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
             if meant is None:
                 return words, ()
             out[k:k + len(place)] = _said(meant)
+            used.add(meant)
     named = mentions(out)
     pronoun = next((k for k, w in enumerate(out) if w in ("it", "its") and out[k + 1:k + 2] and
                     out[k + 1] not in IT_FORWARD), None)
     pronoun = pronoun if pronoun is not None and not any(start < pronoun for start, _, _ in named) else None
-    plural = next(((k, p) for k in range(len(out)) for p in PLURAL_PRONOUNS if tuple(out[k:k + len(p)]) == p), None)
+    plural = _at(out, PLURAL_PRONOUNS)
     plural = plural if plural and len({r for _, _, r in named}) < 2 else None
     # 'what colour is that?', 'that vehicle', 'is that suspect?'
     pointed = any(a in ("that", "this") and (b in GENERIC | {"?"} or out[k - 1:k] in (["is"], ["was"])
                                             and out[k + 2:k + 3] == ["?"] and b not in OBJECT_WORDS)
                   for k, (a, b) in enumerate(zip(out, out[1:])))
-    if (pronoun is not None or plural or pointed) and any(map(_unnamed, context)) or pointed:
+    asked_of = pronoun is not None and out[pronoun + 1] in SENTENCE_ENDS | {","}   # 'what colour is it?'
+    if pointed or (asked_of or plural) and any(map(_unnamed, context)):
         return words, ()
     if pronoun is not None:
         meant = next((r for r in latest if not _named(r, named)), None)
         if meant is None:
             return words, ()
         out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
+        used.add(meant)
         named = mentions(out)
     if plural:
         others = [r for r in latest if not _named(r, named)]
@@ -706,14 +743,28 @@ def context_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
             return words, ()
         k, p = plural
         out[k:k + len(p)] = _said(pair[0]) + ["and"] + _said(pair[1])
-    then = next(((k, p) for k in range(len(out)) for p in THEN_SAID if tuple(out[k:k + len(p)]) == p), None)
-    if then and not condition and not own_condition and not (
-            (START_WORDS | COMES_IN_WORDS) & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
-        moment = _moment(context, fullest)
+        used |= set(pair)
+    if used & unread:
+        return words, ()
+    if not condition and not own_condition:
+        timed = START_WORDS | COMES_IN_WORDS | OWN_TIMES
+        then = _at(out, THEN_SAID)
+        impact = _at(out, IMPACT_MOMENTS)
+        own = {next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(out)}
+        if then and not (timed & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
+            moment, (k, p) = _moment(context, fullest), then
+        elif impact and len(own) == 1:
+            moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
+        else:
+            moment, k, p = [], 0, ()
+            if not (timed & set(out) or asks_impact(out)) and any(START_WORDS & set(s) for s in context):
+                out = out[:-1] + ["at", "the", "start", "?"]
         if moment is None:
             return words, ()
-        k, p = then
-        out = [*moment, ",", *out[:k], *out[k + len(p):]]
+        if moment:   # said first, as a clause of time ('when the bus and the car collide, how fast ...')
+            rest = out[:k] + out[k + len(p):]
+            rest = [w for j, w in enumerate(rest) if w != "," or j and rest[j + 1:j + 2] not in (["?"], [","])]
+            out = [*moment, ",", *rest]
     dropped = " ".join(w for s, c in zip(context, conditions) if c is not condition or own_condition for w in s)
     return out + tail, ((dropped, "context read for what the question refers to"),) * bool(dropped)
 
