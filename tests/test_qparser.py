@@ -23,7 +23,7 @@ from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_s
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
-                                     context_as_question, corrections_dropped,
+                                     afterthoughts_read, context_as_question, corrections_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -1876,3 +1876,38 @@ def test_context_gives_a_collisions_partner_a_conditions_it_and_the_start():
         "what color is the thing the gray truck collides with ?"
     pink = tokenize("The pink scooter looked like it was speeding up. Is it accelerating at the start?")
     assert context_as_question(pink, known={"the", "scooter"})[0] == pink
+
+
+def test_a_transcript_without_stops_is_read_as_its_statement_then_its_question():
+    assert _context_read("the blue cruiser is still moving at the end will it hit anything after the video is over") \
+        == "will the blue cruiser hit anything after the video is over ?"
+    assert _context_read("so the green pickup and the blue chopper smash into each other near the bottom when they "
+                         "collide is the pickup going faster than the chopper") == \
+        "when they collide , is the green truck going faster than the blue chopper ?"
+    # one question, a condition said as a note, written with commas: as said
+    for text in ("when the red car hits the bus is it moving fast", "purple dirtbike fast from start would it collide "
+                 "with yellow truck", "Regarding the purple sedan, how fast does it move at the start?"):
+        assert _context_read(text) == " ".join(catalogue_names(tokenize(text))[0]), text
+
+
+def _after_read(text: str) -> str:
+    return " ".join(afterthoughts_read(catalogue_names(tokenize(text))[0])[0])
+
+
+def test_what_is_said_after_the_question_names_its_vehicle_time_or_property():
+    assert _after_read("Is it moving fast at the start? The red car, I mean.") == \
+        "is the red car moving fast at the start ?"
+    assert _after_read("Does the green double-decker collide with the red minivan? Wait, sorry, the cyan minivan, not "
+                       "the red one.") == "does the green double bus collide with the cyan minivan ?"
+    assert _after_read("Is the purple mountain bike slower than the bus at the start? The cyan bus, the regular "
+                       "one.") == "is the purple mountain bike slower than the cyan regular bus at the start ?"
+    assert _after_read("How fast is the yellow jet going? At the very beginning, I mean.") == \
+        "how fast is the yellow jet going at the start ?"
+    assert _after_read("Which vehicle is accelerating at the beginning? I mean what type of vehicle it is, not its "
+                       "colour.") == "what type of vehicle is accelerating at the beginning ?"
+    assert _after_read("If the gray biplane had been floating, would it hit the brown SUV? Asking for a friend.") == \
+        "if the gray biplane had been floating , would it hit the brown suv ?"
+    # as said: another question, a request, a vehicle said with a word the parser does not know
+    for text in ("Is the red car fast? And the blue bus?", "Which object collides with the cyan scooter? Tell me its "
+                 "color.", "Does the red sedan hit the bus? Sorry, I meant the red helicopter, not the sedan."):
+        assert afterthoughts_read(tokenize(text), known={"the", "red", "sedan", "bus"})[0] == tokenize(text), text

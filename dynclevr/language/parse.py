@@ -65,6 +65,7 @@ import torch
 
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
+from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
@@ -264,8 +265,9 @@ class QuestionParser:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
         words, shorthand = shorthand_as_said(words)
         words, named = catalogue_names(words)
-        words, context = context_as_question(words, self.known)
         words, corrected = corrections_dropped(words)
+        words, context = context_as_question(words, self.known)
+        words, after = afterthoughts_read(words, self.known)
         words, owned = owners_dropped(words)
         words, labelled = asides_dropped(words)
         words, inserted = inserted_time_last(words)
@@ -288,7 +290,7 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + context + corrected + owned + labelled + inserted + opened + idioms + described + typed
+        request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms + described + typed
                    + afloat + end + framing + attended + request + stated + negative + asked + aloft + heading + subject
                    + first + more + tail + offered)
         if not words:   # 'y/n' alone: an answer's form, and nothing asked
@@ -557,6 +559,7 @@ CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose"
 # the next sentence the condition ('ok weird what-if. the biplane is accelerating from the beginning instead.')
 IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
                  "hypothetical", "instead", "otherwise", "wish", "scenario"}
+WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask", "asking", "unsure", "clear", "say"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
 # A state said without its verb after the condition's vehicle ('Picture the airliner up in the air from the start')
 STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
@@ -666,6 +669,53 @@ def _moment(context: list[list[str]], fullest: list, of=None) -> list[str] | Non
     return None
 
 
+# Speech transcribed without stops ('the blue cruiser is still moving at the end will it hit anything after the video
+# is over'): the question starts where an auxiliary or a question word that opens one follows a word that may end a
+# statement, with a statement before it; said so, the context is read as above.
+RUN_ON_ASKS = {**dict.fromkeys(("is", "was", "are", "were", "does", "did", "do", "will", "would", "can", "could", "has",
+                                "have"), {"the", "it", "they", "its", "this", "that", "there", "any", "either",
+                                          "both", "a", "an", "these", "those", *COLOR_NAMES}),
+               **dict.fromkeys(("how", "what", "which"), {"fast", "quickly", "slowly", "direction", "way", "color",
+                                                          "colour", "type", "kind", "sort", "speed", "vehicle"}),
+               "if": {"the", "it", "they", *COLOR_NAMES}}
+STATEMENT_ENDS_NOT = {"the", "a", "an", "that", "this", "which", "who", "what", "and", "or", "but", "if", "when", "to",
+                      "of", "than", "as", "with", "into", "at", "in", "on", "by", "from", "is", "was", "are", "were",
+                      "does", "did", "do", "will", "would", "not", ",", "it", "its"}
+
+
+def _run_on_question(words: list[str]) -> int | None:
+    """Where the question of a transcript without stops starts, after a statement of 3 words or more; None where
+    none does, or what comes before it is a clause of time or a question ('when the bike enters the frame how
+    fast ...' is one question)."""
+    if any(not w.isalnum() and w != "'" for w in words[:-1]):   # said with stops or commas: written, not spoken
+        return None
+    opener = next((w for w in words if w not in INTERJECTIONS | FILLERS | {"like", ","}), "")
+    if opener in TIME_OPENERS | CONDITION_OPENERS | set(RUN_ON_ASKS) | {"after", "before", "until", "why", "who"}:
+        return None
+    # ('purple dirtbike fast from start would it collide ...' is a note's condition, not a statement)
+    return next((k for k in range(3, len(words) - 2) if words[k] in RUN_ON_ASKS and words[k + 1] in RUN_ON_ASKS[
+        words[k]] and words[k - 1] not in STATEMENT_ENDS_NOT and words[k] != "would" and (
+            words[k] != "if" or {"would", "will"} & set(words[k:]))), None)
+
+
+def _run_on_clause(words: list[str], k: int) -> int:
+    """Where a clause of time said just before a run-on question starts ('... smash into each other near the bottom
+    when they collide is the pickup faster'), as its part; k where none is."""
+    return next((j for j in range(k - 1, max(k - 9, 2), -1) if words[j] in ("when", "once", "whenever", "while") or
+                 words[j:j + 3] in ([at, d, m] for at in ("at", "in") for d in ("the", "that")
+                                    for m in ("moment", "instant", "time", "point")) or
+                 words[j] == "as" and words[j + 1:j + 2] in (["soon"], ["they"], ["it"], ["the"])), k)
+
+
+OPENING_SAID = {"there", "theres", "'", "s", "is", "are", "like", "so", "ok", "okay", "um", "uh", "i", "see", "saw",
+                "look", "in", "this", "video", "clip", "one", ","}
+
+
+def _opening(sentence: list[str]) -> list[str]:
+    """A sentence from the first words that say something ('theres like a tractor ...' -> 'a tractor ...')."""
+    return sentence[next((k for k, w in enumerate(sentence) if w not in OPENING_SAID), len(sentence)):]
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
@@ -674,13 +724,22 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     the context asks a question of its own, or imagines otherwise than as a condition."""
     spans = _sentence_spans(words)
     asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
-    if not asked_at:
+    if len(spans) > 1 and not asked_at:
         return words, ()
+    if len(spans) == 1:
+        k = _run_on_question(words)
+        if k is None:
+            return words, ()
+        j = _run_on_clause(words, k)
+        asked = words[j:k] + [","] * (j < k) + words[k:] + ["?"] * (words[-1] != "?")
+        out, read = context_as_question(words[:j] + ["."] + asked, known)
+        return (out, read) if read else (words, ())
     context = [words[a:b] for a, b in spans[:asked_at]]
     conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
                                           and not mentions(context[j - 1]))) for j, s in enumerate(context)]
-    if any(c is None and (s[-1] == "?" or IMAGINED_SAID & set(s) and mentions(s) or "if" in s and
-                          {"had", "were", "would"} & set(s[s.index("if"):])) for s, c in zip(context, conditions)):
+    if any(c is None and (s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or "if" in s and
+                                                            s[s.index("if") - 1] not in WHETHER))
+           for s, c in zip(context, conditions)):
         return words, ()
     question = words[spans[asked_at][0]:spans[asked_at][1]]
     tail = words[spans[asked_at][1]:]
@@ -689,19 +748,25 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     asked = (condition if condition and not own_condition else []) + question
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
     # said with a word the parser does not know are not read for it
-    said = [mentions(s) for s in context]
+    said = [[(a, b, r) for a, b, r in mentions(s) if "not" not in s[max(a - 2, 0):a]] for s in context]
+    # a sentence that opens on a thing the parser does not know ('theres like a tractor near the bus'): what 'it'
+    # means is not read
+    strange = known is not None and any(_opening(s)[:1] and _opening(s)[0] in DETERMINERS and _opening(s)[1:2] and
+                                        _opening(s)[1].isalpha() and _opening(s)[1] not in known for s in context)
     every = [r for runs in said for _, _, r in runs]
     fullest = [r for r in dict.fromkeys(every) if not any(o != r and _fits(r, o) for o in every)]
     latest = [r for runs in reversed(said) for _, _, r in runs if r in fullest]   # the most recent sentence's first
-    unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, _, r in runs
-              if known is not None and a and s[a - 1].isalpha() and s[a - 1] not in known}
-    used = set()
+    unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, b, r in runs
+              if _unknown_beside(s, a, b, r, known)}
+    used, read = set(), []
     out = list(asked)
     for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
         fits = [r for r in fullest if r != ref and _fits(ref, r)]
         alike = [r for _, _, r in mentions(asked) if r != ref and _fits(ref, r)]
         if len(fits) == 1 and not alike:
-            out[start:end + (out[end:end + 1] == ["one"])] = _said(fits[0])[1:]
+            end += out[end:end + 1] == ["one"]
+            read.append((" ".join(out[start:end]), " ".join(_said(fits[0])[1:])))
+            out[start:end] = _said(fits[0])[1:]
             used.add(fits[0])
     for k in reversed(range(len(out))):
         place = next((p for p in PLACES_SAID if tuple(out[k:k + len(p)]) == p and (
@@ -714,6 +779,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             meant = fullest[at] if at is not None and len(fullest) == 2 else others[0] if len(others) == 1 else None
             if meant is None:
                 return words, ()
+            read.append((" ".join(place), " ".join(_said(meant))))
             out[k:k + len(place)] = _said(meant)
             used.add(meant)
     named = mentions(out)
@@ -727,12 +793,13 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
                                             and out[k + 2:k + 3] == ["?"] and b not in OBJECT_WORDS)
                   for k, (a, b) in enumerate(zip(out, out[1:])))
     asked_of = pronoun is not None and out[pronoun + 1] in SENTENCE_ENDS | {","}   # 'what colour is it?'
-    if pointed or (asked_of or plural) and any(map(_unnamed, context)):
+    if pointed or (asked_of or plural) and any(map(_unnamed, context)) or (pronoun is not None or plural) and strange:
         return words, ()
     if pronoun is not None:
         meant = next((r for r in latest if not _named(r, named)), None)
         if meant is None:
             return words, ()
+        read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
         out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
         used.add(meant)
         named = mentions(out)
@@ -742,6 +809,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         if len(pair) < 2 or len(fullest) > 2 and not named:
             return words, ()
         k, p = plural
+        read.append((" ".join(p), " ".join(_said(pair[0]) + ["and"] + _said(pair[1]))))
         out[k:k + len(p)] = _said(pair[0]) + ["and"] + _said(pair[1])
         used |= set(pair)
     if used & unread:
@@ -757,16 +825,122 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
         else:
             moment, k, p = [], 0, ()
-            if not (timed & set(out) or asks_impact(out)) and any(START_WORDS & set(s) for s in context):
+            started = next((s for s in reversed(context) if START_WORDS & set(s)), None)
+            if started and not (timed & set(out) or asks_impact(out)):
                 out = out[:-1] + ["at", "the", "start", "?"]
+                read.append((" ".join(started), "at the start"))
         if moment is None:
             return words, ()
         if moment:   # said first, as a clause of time ('when the bus and the car collide, how fast ...')
             rest = out[:k] + out[k + len(p):]
             rest = [w for j, w in enumerate(rest) if w != "," or j and rest[j + 1:j + 2] not in (["?"], [","])]
             out = [*moment, ",", *rest]
+            read.append((" ".join(p), " ".join(moment)))
     dropped = " ".join(w for s, c in zip(context, conditions) if c is not condition or own_condition for w in s)
-    return out + tail, ((dropped, "context read for what the question refers to"),) * bool(dropped)
+    return out + tail, (((dropped, "nothing, context the question refers back to"),) * bool(dropped) + tuple(read))
+
+# What is said after the question, where it says which vehicle was meant ('Is it moving fast at the start? The red
+# car, I mean.', 'Does the bus hit the car? Sorry, the blue car, not the red one.', '... the bus? The cyan bus, the
+# regular one.'), the time ('How fast is the jet going? At the very beginning, I mean.'), which property is asked
+# ('What kind of vehicle is moving fast? The type, not the colour.'), or nothing ('Asking for a friend.').
+AFTER_OPENERS = {"sorry", "oops", "wait", "no", "actually", "i", "mean", "meant", "correction", "rather", "er", "um",
+                 "uh", "oh", "ah", "my", "bad", "that", "is", "s", "'", "like", ",", "-", ":", "and", "so"}
+AFTER_CLOSERS = {",", ".", "!", "i", "mean", "meant", "that", "is", "please", "thanks", "thx", "though", "obviously"}
+NOT_SAID = (("not",), ("instead", "of"), ("rather", "than"))
+SUBTYPE_FIRST = {v.split("_")[0]: tuple(v.split("_")) for v in SUBTYPES if "_" in v}   # 'the regular one'
+CATEGORY_OF = {**{v: c for v, (c, *_) in SUBTYPES.items()}, **{c: c for c, *_ in SUBTYPES.values()}}
+ASKED_PROPERTY = {"type": "shape", "kind": "shape", "sort": "shape", "model": "shape", "colour": "color",
+                  "color": "color"}
+
+
+def _unknown_beside(words: list[str], a: int, b: int, ref: tuple, known) -> bool:
+    """Whether a mention words[a:b] is said with a word the parser does not know: before it ('the pink scooter'), or
+    after its colour alone ('green tractor'); never where `known` is None."""
+    def unknown(w: str) -> bool:
+        return known is not None and w.isalpha() and w not in known
+    return bool(a and unknown(words[a - 1]) or b < len(words) and unknown(words[b]) and set(ref) <= set(COLOR_NAMES))
+
+
+def _one_vehicle(words: list[str]) -> tuple | None:
+    """The values of the one vehicle some words name ('the cyan bus, the regular one' -> ('cyan', 'regular_bus')),
+    () where they name none, None where they name more than a colour and a type."""
+    values = [v for _, _, r in mentions(words) for v in r]
+    colours = list(dict.fromkeys(v for v in values if v in COLOR_NAMES))
+    kinds = list(dict.fromkeys(v for v in values if v not in COLOR_NAMES))
+    kinds = [k for k in kinds if not any(o != k and CATEGORY_OF[o] == k for o in kinds)]   # the bus, the regular one
+    return None if len(colours) > 1 or len(kinds) > 1 else tuple(colours + kinds)
+
+
+def _meant(ref: tuple, meant: tuple) -> tuple:
+    """A mention's values with what the words after the question say of it instead."""
+    colour = [v for v in meant if v in COLOR_NAMES] or [v for v in ref if v in COLOR_NAMES]
+    kind = [v for v in meant if v not in COLOR_NAMES] or [v for v in ref if v not in COLOR_NAMES]
+    return tuple(colour + kind)
+
+
+def _compatible(ref: tuple, meant: tuple) -> bool:
+    """Whether the vehicle a mention names can be the one said after the question (its category, or its colour
+    where the mention has none)."""
+    kinds = [CATEGORY_OF[v] for v in meant if v not in COLOR_NAMES]
+    own = [CATEGORY_OF[v] for v in ref if v not in COLOR_NAMES]
+    if kinds:
+        return not own or own == kinds
+    return not any(v in COLOR_NAMES for v in ref)
+
+
+def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question with what is said after it read into it, and what was said after it read as nothing; the words
+    as they are and () where nothing is said after it, it asks again, or what it says cannot be read so (a vehicle
+    said with a word the parser does not know, of `known`: 'The white sedan, I mean.')."""
+    spans = _sentence_spans(words)
+    asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
+    if asked_at is None or asked_at == len(spans) - 1:
+        return words, ()
+    start, end = spans[asked_at]
+    out, read = words[:end], []
+    for a, b in spans[asked_at + 1:]:
+        said = words[a:b]
+        if said[-1] == "?":
+            return words, ()
+        k, e = 0, len(said)
+        while k < e and said[k] in AFTER_OPENERS:
+            k += 1
+        while e > k and said[e - 1] in AFTER_CLOSERS:
+            e -= 1
+        core = [w for j, w in enumerate(said[k:e]) for w in (
+            SUBTYPE_FIRST[w] if w in SUBTYPE_FIRST and said[k:e][j + 1:j + 2] == ["one"] else (w,))]
+        cut = _at(core, NOT_SAID)
+        meant, other = (core[:cut[0]], core[cut[0] + len(cut[1]):]) if cut else (core, [])
+        vehicle, wrong = _one_vehicle(meant), _one_vehicle(other)
+        question = out[start:]
+        runs = mentions(question)
+        if vehicle is None or wrong is None or any(_unknown_beside(core, *run, known) for run in mentions(core)) or \
+                {"tell", "give", "name", "state", "say", "list"} & set(core):   # '? Give its colour.' asks
+            return words, ()
+        if vehicle:
+            hits = [r for r in runs if wrong and (_fits(wrong, r[2]) or _fits(r[2], wrong))] or \
+                [r for r in runs if _compatible(r[2], vehicle)]
+            it = next((j for j, w in enumerate(question) if w == "it"), None)
+            if len(hits) == 1:
+                first, last, ref = hits[0]
+                question[first:last] = _said(_meant(ref, vehicle))[1:]
+            elif not runs and it is not None:
+                question[it:it + 1] = _said(vehicle)
+            else:
+                return words, ()
+        elif ASKED_PROPERTY.keys() & set(core):
+            asked = ASKED_PROPERTY[next(w for w in core if w in ASKED_PROPERTY)]
+            if question[:2] in (["which", "vehicle"], ["which", "one"]):   # 'which vehicle is ...? the type'
+                question[:2] = ["what", "type", "of", "vehicle"] if asked == "shape" else \
+                    ["what", "color", "is", "the", "vehicle", "that"]
+        elif START_WORDS & set(core):
+            if not (START_WORDS | COMES_IN_WORDS | OWN_TIMES) & set(question) and not asks_impact(question):
+                question[-1:] = ["at", "the", "start", "?"]
+        elif set(core) & (FILM_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS):
+            return words, ()
+        out = out[:start] + question
+        read.append((" ".join(said), " ".join(question)))
+    return out, tuple(read)
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 NAMING = OBJECT_WORDS | NOUNS_SAID   # the words of a vehicle's name
