@@ -1911,3 +1911,21 @@ def test_what_is_said_after_the_question_names_its_vehicle_time_or_property():
     for text in ("Is the red car fast? And the blue bus?", "Which object collides with the cyan scooter? Tell me its "
                  "color.", "Does the red sedan hit the bus? Sorry, I meant the red helicopter, not the sedan."):
         assert afterthoughts_read(tokenize(text), known={"the", "red", "sedan", "bus"})[0] == tokenize(text), text
+
+
+def test_a_contexts_plane_van_and_jet_and_an_it_said_first_are_its_vehicles_and_a_speed_in_cm_is_refused():
+    assert _context_read("The red airliner is way bigger than the yellow sedan beside it. In the opening moments, is "
+                         "the plane going slower than the car?") == \
+        "in the opening moments , is the red airliner going slower than the yellow sedan ?"
+    assert _context_read("There's a collision involving the blue minivan. What type of vehicle does the van hit?") \
+        == "what type of vehicle does the blue minivan hit ?"
+    assert _context_read("Near the middle, the brown sedan crashes into the green fighter. When they collided, was the "
+                         "sedan moving faster than the jet?") == \
+        "when they collided , was the brown sedan moving faster than the green fighter ?"
+    assert _context_read("The red jet is sitting on the ground in this one. Had it been floating in the air from the "
+                         "start, would the jet and the green utility bike still have collided?") == \
+        ("had the red jet been floating in the air from the start , would the red jet and the green utility bike "
+         "still have collided ?")
+    cm = QuestionParser.load().analyse_batch(["The yellow mountain bike starts on the left. What's its speed in "
+                                              "centimetres per second at the start?"])[0]
+    assert cm.program is None and "number" in cm.reason

@@ -290,9 +290,9 @@ class QuestionParser:
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
         words, offered = alternatives_as_asked(words)
-        request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms + described + typed
-                   + afloat + end + framing + attended + request + stated + negative + asked + aloft + heading + subject
-                   + first + more + tail + offered)
+        request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms
+                   + described + typed + afloat + end + framing + attended + request + stated + negative + asked + aloft
+                   + heading + subject + first + more + tail + offered)
         if not words:   # 'y/n' alone: an answer's form, and nothing asked
             return [], "the question asks nothing once its asides are read ('" + text.strip() + "')", request, words
         reverse = reversed_as_said(words)
@@ -643,10 +643,14 @@ def _unnamed(sentence: list[str]) -> bool:
                                                 for a, b in zip(sentence, sentence[1:]))
 
 
+# 'the purple dirt bike ... the bike', 'the fighter ... the jet'
+SAID_OF = {"bicycle": "motorbike", "jet": "aeroplane"}
+
+
 def _fits(short, full) -> bool:
-    """Whether a shorter mention can be a fuller one's vehicle; a 'bike' may be a motorbike ('the purple dirt bike ...
-    the bike')."""
-    return generalises(short, full) or generalises(tuple("motorbike" if v == "bicycle" else v for v in short), full)
+    """Whether a shorter mention can be a fuller one's vehicle; a 'bike' may be a motorbike and a 'jet' any
+    aeroplane."""
+    return generalises(short, full) or generalises(tuple(SAID_OF.get(v, v) for v in short), full)
 
 
 def _named(ref, asked: list[tuple]) -> bool:
@@ -762,7 +766,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     out = list(asked)
     for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
         fits = [r for r in fullest if r != ref and _fits(ref, r)]
-        alike = [r for _, _, r in mentions(asked) if r != ref and _fits(ref, r)]
+        alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]   # the parser's to read
         if len(fits) == 1 and not alike:
             end += out[end:end + 1] == ["one"]
             read.append((" ".join(out[start:end]), " ".join(_said(fits[0])[1:])))
@@ -796,7 +800,9 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     if pointed or (asked_of or plural) and any(map(_unnamed, context)) or (pronoun is not None or plural) and strange:
         return words, ()
     if pronoun is not None:
-        meant = next((r for r in latest if not _named(r, named)), None)
+        # said before the question's own mentions, it may be one of them ('Had it been floating ..., would the jet
+        # and the bike ...?')
+        meant = next((r for r in latest if not _named(r, named)), latest[0] if latest else None)
         if meant is None:
             return words, ()
         read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
@@ -853,12 +859,18 @@ ASKED_PROPERTY = {"type": "shape", "kind": "shape", "sort": "shape", "model": "s
                   "color": "color"}
 
 
+PLAIN_BEFORE = {"only", "other", "same", "first", "second", "third", "last", "very", "actual", "real", "exact",
+                "particular", "specific", "entire", "main", "lone", "single", "whole", "poor", "crashing", "moving",
+                "parked", "speeding", "flying", "both", "either", "each"}   # not a colour no vehicle has ('the pink')
+
+
 def _unknown_beside(words: list[str], a: int, b: int, ref: tuple, known) -> bool:
     """Whether a mention words[a:b] is said with a word the parser does not know: before it ('the pink scooter'), or
     after its colour alone ('green tractor'); never where `known` is None."""
     def unknown(w: str) -> bool:
         return known is not None and w.isalpha() and w not in known
-    return bool(a and unknown(words[a - 1]) or b < len(words) and unknown(words[b]) and set(ref) <= set(COLOR_NAMES))
+    return bool(a and unknown(words[a - 1]) and words[a - 1] not in PLAIN_BEFORE
+                or b < len(words) and unknown(words[b]) and set(ref) <= set(COLOR_NAMES))
 
 
 def _one_vehicle(words: list[str]) -> tuple | None:
@@ -2566,8 +2578,10 @@ def clock_unasked(words: list[str], program: list[str]) -> str:
 
 # A speed said as a number: '5 m/s', '20 mph', '10kph', 'five metres per second'
 SPEED_UNITS = (["m", "/", "s"], ["km", "/", "h"], ["mph"], ["kph"], ["kmh"], ["mps"], ["knots"],
-               *([unit, "per", time] for unit in ("metres", "meters", "m", "km", "kilometres", "kilometers", "miles")
-                 for time in ("second", "sec", "s", "hour", "h")))
+               ["cm", "/", "s"], *([unit, "per", time] for unit in (
+                   "metres", "meters", "m", "km", "kilometres", "kilometers", "miles", "centimetres", "centimeters",
+                   "cm", "millimetres", "millimeters", "mm", "feet", "foot", "ft", "inches", "pixels", "units")
+                   for time in ("second", "sec", "s", "hour", "h", "minute", "min", "frame")))
 SPEED_NUMBER = re.compile(r"^\d+(?:\.\d+)?(?:mph|kph|kmh|mps|m|km)$")   # a number run together with its unit
 
 

@@ -33,6 +33,11 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
                   "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
                   "mtb": "mountain bike", "pickup": "truck",
+                  # a vehicle's everyday noun (as synonyms.txt reads it), here so that the context of a question and
+                  # what follows it are read for it ('The red airliner ... is the plane going slower?')
+                  "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
+                  "lorry": "truck", "van": "minivan", "pushbike": "bicycle",
+                  "jetliner": "airliner",
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus",
