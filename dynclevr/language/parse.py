@@ -728,7 +728,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     the context asks a question of its own, or imagines otherwise than as a condition."""
     spans = _sentence_spans(words)
     asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
-    if len(spans) > 1 and not asked_at:
+    if not spans or len(spans) > 1 and not asked_at:
         return words, ()
     if len(spans) == 1:
         k = _run_on_question(words)
