@@ -1932,3 +1932,20 @@ def test_a_contexts_plane_van_and_jet_and_an_it_said_first_are_its_vehicles_and_
     cm = QuestionParser.load().analyse_batch(["The yellow mountain bike starts on the left. What's its speed in "
                                               "centimetres per second at the start?"])[0]
     assert cm.program is None and "number" in cm.reason
+
+
+def test_a_vehicle_named_again_in_apposition_and_a_pronoun_chain_are_read_from_the_context():
+    assert _context_read("Okay, so the yellow double-decker is cruising along. Then a gray plane - a jet, I think - "
+                         "clips it. How fast was the jet moving right when the two hit?") == \
+        "how fast was the gray jet moving right when the gray jet and the yellow double bus hit ?"
+    assert _context_read("OK so a purple motorbike and a yellow bicycle sit near the left. At the very start, was the "
+                         "motorbike going faster than the bicycle?") == \
+        "at the very start , was the purple motorbike going faster than the yellow bicycle ?"
+    # 'it' goes on about the airliner, not the bus the sentence names; said 'white', it is not read
+    known = QuestionParser.load().known
+    white = catalogue_names(tokenize("A white airliner floats above the others. It drifts toward the bus. Did it "
+                                     "collide with anything?"))[0]
+    assert context_as_question(white, known)[0] == white
+    assert " ".join(context_as_question(catalogue_names(tokenize(
+        "A gray airliner floats above the others. It drifts toward the bus. Did it collide with anything?"))[0],
+        known)[0]) == "did the gray airliner collide with anything ?"

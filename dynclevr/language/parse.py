@@ -577,7 +577,7 @@ PLACES_SAID = {**{("the", w, *n): 0 for w in ("first", "former") for n in (("one
 AFTER_PLACE = {"?", ",", ".", "at", "when", "in", "during", "as", "and", "or", "than", "once", "while", "right", "just",
                "is", "was", "does", "did", "going", "moving"}
 # 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
-IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear"}
+IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear", "all"}
 # A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
 # 'The SUV hits a vehicle. What kind of vehicle is that?'): the question is left whole, which reads it so
 UNNAMED = {"something", "someone", "somebody"}
@@ -653,6 +653,24 @@ def _fits(short, full) -> bool:
     return generalises(short, full) or generalises(tuple(SAID_OF.get(v, v) for v in short), full)
 
 
+APPOSED = {",", "-", "a", "an", "(", "i", "think", "like", "probably", "maybe", "or", "rather"}
+
+
+def _appositions(sentence: list[str]) -> list[tuple[int, int, tuple]]:
+    """The sentence's mentions, a vehicle named again in apposition as one ('a gray plane - a jet, I think -', 'this
+    purple plane, a fighter jet,'): the colour of the first, the sub-type of either."""
+    out = []
+    for a, b, ref in mentions(sentence):
+        if out and set(sentence[out[-1][1]:a]) <= APPOSED and sentence[out[-1][1]:a] and \
+                not any(v in COLOR_NAMES for v in ref) and _compatible(out[-1][2], ref):
+            first = out[-1][2]
+            kind = [v for v in ref if v in SUBTYPES] or [v for v in first if v not in COLOR_NAMES]
+            out[-1] = (out[-1][0], b, tuple([v for v in first if v in COLOR_NAMES] + kind))
+        else:
+            out.append((a, b, ref))
+    return out
+
+
 def _named(ref, asked: list[tuple]) -> bool:
     return any(_fits(r, ref) or _fits(ref, r) for _, _, r in asked)
 
@@ -720,6 +738,18 @@ def _opening(sentence: list[str]) -> list[str]:
     return sentence[next((k for k, w in enumerate(sentence) if w not in OPENING_SAID), len(sentence)):]
 
 
+AMOUNTS = {"lot", "bit", "couple", "few", "bunch", "little"}
+
+
+def _thing_first(sentence: list[str], known) -> bool:
+    """Whether a sentence opens on a thing the parser does not know ('theres like a tractor near the bus'), where
+    what 'it' means is not read."""
+    said = _opening(sentence)
+    return len(said) > 2 and said[0] in DETERMINERS and said[1].isalpha() and \
+        said[1] not in known | AMOUNTS | OBJECT_WORDS | NOUNS_SAID \
+        and said[2] != "of"   # 'the top of the frame' is a place
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
@@ -752,20 +782,23 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     asked = (condition if condition and not own_condition else []) + question
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
     # said with a word the parser does not know are not read for it
-    said = [[(a, b, r) for a, b, r in mentions(s) if "not" not in s[max(a - 2, 0):a]] for s in context]
+    said = [[(a, b, r) for a, b, r in _appositions(s) if "not" not in s[max(a - 2, 0):a]] for s in context]
     # a sentence that opens on a thing the parser does not know ('theres like a tractor near the bus'): what 'it'
     # means is not read
-    strange = known is not None and any(_opening(s)[:1] and _opening(s)[0] in DETERMINERS and _opening(s)[1:2] and
-                                        _opening(s)[1].isalpha() and _opening(s)[1] not in known for s in context)
+    strange = known is not None and any(_thing_first(s, known) for s in context)
     every = [r for runs in said for _, _, r in runs]
     fullest = [r for r in dict.fromkeys(every) if not any(o != r and _fits(r, o) for o in every)]
-    latest = [r for runs in reversed(said) for _, _, r in runs if r in fullest]   # the most recent sentence's first
+    # the most recent sentence's first, past sentences that go on about it ('A white airliner floats. It drifts toward
+    # the bus. Did it ...?': the airliner)
+    latest = [r for s, runs in zip(reversed(context), reversed(said)) if _opening(s)[:1] not in (["it"], ["they"])
+              for _, _, r in runs if r in fullest] + [r for runs in reversed(said) for _, _, r in runs if r in fullest]
     unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, b, r in runs
               if _unknown_beside(s, a, b, r, known)}
     used, read = set(), []
     out = list(asked)
     for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
-        fits = [r for r in fullest if r != ref and _fits(ref, r)]
+        fits = [r for r in fullest if r != ref and generalises(ref, r)] or \
+            [r for r in fullest if r != ref and _fits(ref, r)]
         alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]   # the parser's to read
         if len(fits) == 1 and not alike:
             end += out[end:end + 1] == ["one"]
@@ -859,9 +892,10 @@ ASKED_PROPERTY = {"type": "shape", "kind": "shape", "sort": "shape", "model": "s
                   "color": "color"}
 
 
-PLAIN_BEFORE = {"only", "other", "same", "first", "second", "third", "last", "very", "actual", "real", "exact",
-                "particular", "specific", "entire", "main", "lone", "single", "whole", "poor", "crashing", "moving",
-                "parked", "speeding", "flying", "both", "either", "each"}   # not a colour no vehicle has ('the pink')
+# colours no catalogue colour is (references.COLOUR_SHADES reads those that are one)
+OTHER_COLOURS = {"pink", "orange", "white", "black", "silver", "navy", "teal", "tan", "khaki", "magenta", "beige",
+                 "cream", "ivory", "lime", "olive", "peach", "coral", "lavender", "rose", "mauve", "copper", "amber",
+                 "lilac", "fuchsia", "rainbow", "striped", "spotted"}
 
 
 def _unknown_beside(words: list[str], a: int, b: int, ref: tuple, known) -> bool:
@@ -869,7 +903,7 @@ def _unknown_beside(words: list[str], a: int, b: int, ref: tuple, known) -> bool
     after its colour alone ('green tractor'); never where `known` is None."""
     def unknown(w: str) -> bool:
         return known is not None and w.isalpha() and w not in known
-    return bool(a and unknown(words[a - 1]) and words[a - 1] not in PLAIN_BEFORE
+    return bool(a and unknown(words[a - 1]) and words[a - 1] in OTHER_COLOURS
                 or b < len(words) and unknown(words[b]) and set(ref) <= set(COLOR_NAMES))
 
 
@@ -1643,6 +1677,8 @@ IDIOMS = phrase_table({
     **{(*at, "the", "post", "-", "observation", window): ("after", "the", "video") for at in ((), ("in",), ("during",))
        for window in ("window", "period")},
     **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
+    **{(when, "it", "all", *began): ("at", "the", "start") for when in ("when", "as") for began in (
+        ("started",), ("starts",), ("began",), ("begins",), ("kicked", "off"), ("kicks", "off"))},
     # 'jam' said for 'hit' ('when it jammed the bike', 'will they jam each other?'; a traffic jam is refused)
     **{(jam, after): (hit, after) for jam, hit in (("jam", "hit"), ("jams", "hits"), ("jammed", "hit"),
                                                    ("jamming", "hitting")) for after in ("the", "each", "into")},
