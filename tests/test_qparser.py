@@ -1949,3 +1949,12 @@ def test_a_vehicle_named_again_in_apposition_and_a_pronoun_chain_are_read_from_t
     assert " ".join(context_as_question(catalogue_names(tokenize(
         "A gray airliner floats above the others. It drifts toward the bus. Did it collide with anything?"))[0],
         known)[0]) == "did the gray airliner collide with anything ?"
+
+
+def test_an_assumption_that_states_a_fact_is_context_and_one_that_imagines_is_a_condition():
+    assert _context_read("Consider a clip in which a brown sedan rolls into a purple jet. Assume the sedan makes "
+                         "contact with the jet near the middle. At the moment of impact, is the jet standing still?") \
+        == "when the brown sedan and the purple jet collide , is the purple jet standing still ?"
+    assert _context_read("Consider the clip. A red fighter jet crosses the floor. Assume instead that the fighter had "
+                         "been stationary from the beginning. Would it collide with the bus?") == \
+        "assume the red fighter had been stationary from the beginning . would it collide with the bus ?"

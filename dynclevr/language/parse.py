@@ -560,6 +560,10 @@ CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose"
 IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
                  "hypothetical", "instead", "otherwise", "wish", "scenario"}
 WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask", "asking", "unsure", "clear", "say"}
+# openers that may state a fact as well as imagine one, and the words that say they imagine
+STATING = {"assume", "assuming", "consider"}
+IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
+                   "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
 # A state said without its verb after the condition's vehicle ('Picture the airliner up in the air from the start')
 STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
@@ -615,26 +619,50 @@ def _at(words: list[str], phrases) -> tuple[int, tuple] | None:
     return next(((k, p) for k in range(len(words)) for p in phrases if tuple(words[k:k + len(p)]) == p), None)
 
 
-def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
-    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...';
-    with its vehicle as 'it'; as a statement after a sentence that imagines), as the clause 'if ...' or 'suppose ...'
-    that the parser reads before a question; None for any other sentence."""
+def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
+    """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...'): its place, its
+    words and the opener it is read as; None where it does not."""
     for k in (0, sentence.index(":") + 1 if ":" in sentence else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
             k += 1
         said = next(((p, o) for p, o in CONDITIONS_SAID.items() if tuple(sentence[k:k + len(p)]) == p), None)
-        if said and (mentions(sentence[k:]) or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["it"], ["they"])):
-            break
-    else:
+        if said and (mentions(sentence[k:]) or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["it"], ["they"])
+                     or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["instead"], ["that"])):
+            return k, *said
+    return None
+
+
+def _stated(sentence: list[str]) -> bool:
+    """Whether a sentence opens on an opener that may state a fact as well as imagine ('Assume the sedan makes
+    contact with the jet near the middle.'), with nothing that imagines: a sentence of context, not a condition."""
+    said = _opener_said(sentence)
+    return bool(said) and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
+        sentence[k:k + 2] == ["from", "the"] and sentence[k + 2:k + 3] and sentence[k + 2] in START_WORDS
+        for k in range(len(sentence))))
+
+
+def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
+    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...';
+    with its vehicle as 'it'; as a statement after a sentence that imagines), as the clause 'if ...' or 'suppose ...'
+    that the parser reads before a question; None for any other sentence."""
+    opened = _opener_said(sentence)
+    if opened is None or _stated(sentence):
         if not (after_imagining and mentions(sentence)):
             return None
-        said, k = ((), ("suppose",)), 0
-    out = [*said[1], *sentence[k + len(said[0]):-1]]
-    subject = mentions(out)[0][1] if mentions(out) else out.index("it") + 1 if "it" in out else out.index("they") + 1
+        opened = (0, (), ("suppose",))
+    k, said, reading = opened
+    rest = sentence[k + len(said):-1]
+    while rest[:1] in (["instead"], ["that"], [","]):   # 'Assume instead that the fighter had been ...'
+        rest = rest[1:]
+    out = [*reading, *rest]
+    subject = mentions(out)[0][1] if mentions(out) else out.index("it") + 1 if "it" in out else \
+        out.index("they") + 1 if "they" in out else None
+    if subject is None:
+        return None
     if out[subject:subject + 1] and out[subject] in STATES_SAID:
         out[subject:subject] = ["had", "been"]
-    change_end = _at(out, CHANGE_ENDS)
-    return out[:change_end[0]] + ["."] if change_end else out + ["."]
+    change_end = _at(out[subject:], CHANGE_ENDS)
+    return out[:subject + change_end[0]] + ["."] if change_end else out + ["."]
 
 
 def _unnamed(sentence: list[str]) -> bool:
@@ -771,8 +799,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     context = [words[a:b] for a, b in spans[:asked_at]]
     conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
                                           and not mentions(context[j - 1]))) for j, s in enumerate(context)]
-    if any(c is None and (s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or "if" in s and
-                                                            s[s.index("if") - 1] not in WHETHER))
+    if any(c is None and not _stated(s) and (s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or "if" in s and
+                                                                              s[s.index("if") - 1] not in WHETHER))
            for s, c in zip(context, conditions)):
         return words, ()
     question = words[spans[asked_at][0]:spans[asked_at][1]]
