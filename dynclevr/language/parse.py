@@ -722,7 +722,8 @@ def _moment(context: list[list[str]], fullest: list, of=None) -> list[str] | Non
 # Speech transcribed without stops ('the blue cruiser is still moving at the end will it hit anything after the video
 # is over'): the question starts where an auxiliary or a question word that opens one follows a word that may end a
 # statement, with a statement before it; said so, the context is read as above.
-RUN_ON_ASKS = {**dict.fromkeys(("is", "was", "are", "were", "does", "did", "do", "will", "would", "can", "could", "has",
+# ('purple dirtbike fast from start would it collide ...' is a note's condition, not a statement: no 'would')
+RUN_ON_ASKS = {**dict.fromkeys(("is", "was", "are", "were", "does", "did", "do", "will", "can", "could", "has",
                                 "have"), {"the", "it", "they", "its", "this", "that", "there", "any", "either",
                                           "both", "a", "an", "these", "those", *COLOR_NAMES}),
                **dict.fromkeys(("how", "what", "which"), {"fast", "quickly", "slowly", "direction", "way", "color",
@@ -742,9 +743,8 @@ def _run_on_question(words: list[str]) -> int | None:
     opener = next((w for w in words if w not in INTERJECTIONS | FILLERS | {"like", ","}), "")
     if opener in TIME_OPENERS | CONDITION_OPENERS | set(RUN_ON_ASKS) | {"after", "before", "until", "why", "who"}:
         return None
-    # ('purple dirtbike fast from start would it collide ...' is a note's condition, not a statement)
     return next((k for k in range(3, len(words) - 2) if words[k] in RUN_ON_ASKS and words[k + 1] in RUN_ON_ASKS[
-        words[k]] and words[k - 1] not in STATEMENT_ENDS_NOT and words[k] != "would" and (
+        words[k]] and words[k - 1] not in STATEMENT_ENDS_NOT and (
             words[k] != "if" or {"would", "will"} & set(words[k:]))), None)
 
 
