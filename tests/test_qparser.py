@@ -1958,3 +1958,19 @@ def test_an_assumption_that_states_a_fact_is_context_and_one_that_imagines_is_a_
     assert _context_read("Consider the clip. A red fighter jet crosses the floor. Assume instead that the fighter had "
                          "been stationary from the beginning. Would it collide with the bus?") == \
         "assume the red fighter had been stationary from the beginning . would it collide with the bus ?"
+
+
+def test_a_labelled_intervention_a_learners_he_and_this_moment_are_read_from_the_context():
+    assert _context_read("Notes: yellow car; red plane floating nearby. Intervention: the car is slow from t=0. Would "
+                         "the car collide with the plane?") == \
+        "suppose the yellow car is slow from the start . would the yellow car collide with the red aeroplane ?"
+    assert _context_read("The yellow school bus and the gray SUV crash in the middle. In this moment, how fast the bus "
+                         "is going?") == \
+        "when the yellow school bus and the gray suv collide , how fast the yellow school bus is going ?"
+    assert _context_read("The gray bus drive all the video. Does he crash with any other thing?") == \
+        "does the gray bus crash with any other thing ?"
+    assert _context_read("There is a cyan double-decker next the green car. At the first moment, the big bus is static "
+                         "or no?") == "at the first moment , the cyan double bus is static or no ?"
+    # a label that imagines, unread as a condition, leaves the text whole rather than drop the change
+    text = "Obs: blue bus. Alternative timeline where the bus waits. Does it hit the car?"
+    assert _context_read(text) == " ".join(catalogue_names(tokenize(text))[0])

@@ -551,17 +551,21 @@ SENTENCE_ENDS = {".", "!", "?"}
 CONTEXT_OPENERS = {"so", "ok", "okay", "and", "now", "but", "well", "alright", "right", "also", ",", "-", ":"}
 CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose",), ("lets", "say"): ("suppose",),
                    ("say",): ("suppose",), ("hypothetically", ":"): ("suppose",), ("hypothetically", ","): ("suppose",),
-                   ("hypothetically",): ("suppose",), ("consider",): ("suppose",),
+                   ("hypothetically",): ("suppose",), ("consider",): ("suppose",), ("think",): ("suppose",),
                    **{(w,): (w,) for w in ("suppose", "supposing", "imagine", "assume", "assuming", "pretend", "if",
                                            "picture", "envision", "envisage", "visualise", "visualize")}}
 # a sentence of context that imagines something otherwise, but not as a condition read here: the question is left
 # whole ('if' only where a clause of it imagines: 'I can't tell if it's moving' asks whether); said alone, it makes
 # the next sentence the condition ('ok weird what-if. the biplane is accelerating from the beginning instead.')
 IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
-                 "hypothetical", "instead", "otherwise", "wish", "scenario"}
+                 "hypothetical", "instead", "otherwise", "wish", "scenario", "counterfactual", "counterfactually",
+                 "intervention", "hypothesis", "alternate", "alternative"}
 WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask", "asking", "unsure", "clear", "say"}
 # openers that may state a fact as well as imagine one, and the words that say they imagine
-STATING = {"assume", "assuming", "consider"}
+STATING = {"assume", "assuming", "consider", "think"}
+# a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
+CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
+                    "alternative", "alternate", "change", "suppose", "assume", "imagine"}
 IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
                    "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
@@ -589,12 +593,14 @@ GENERIC = {"vehicle", "vehicles", "thing", "things", "object", "objects", "toy",
 NAMELESS = {"some", "a", "an", "another", "one"}
 THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
              ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
+             *((p, d, m) for p in ("at", "in", "during") for d in ("this", "that", "the") if (p, d) != ("at", "the")
+               for m in ("moment", "instant", "point", "event", "collision", "crash", "impact")),
              *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
              ("then",))
 # a collision said without its partner ('At the moment of impact, how fast is the bike?'), the context's
 IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash")
 IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for m in ("moment", "instant", "time")
-                         for the in ((), ("the",)) for n in IMPACT_NOUNS}
+                         for the in ((), ("the",), ("that",), ("this",)) for n in IMPACT_NOUNS}
                         | {(p, n) for p in ("at", "on", "upon") for n in ("impact", "contact")}
                         | {(p, "the", n) for p in ("at", "during", "in") for n in IMPACT_NOUNS}, key=len, reverse=True)
 # a question's own time, besides the start and coming into view
@@ -620,9 +626,12 @@ def _at(words: list[str], phrases) -> tuple[int, tuple] | None:
 
 
 def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
-    """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...'): its place, its
-    words and the opener it is read as; None where it does not."""
-    for k in (0, sentence.index(":") + 1 if ":" in sentence else 0):
+    """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...', or as a label:
+    'Counterfactual: the pickup ...'): its place, its words and the opener it is read as; None where it does not."""
+    colon = sentence.index(":") if ":" in sentence else None
+    if colon and sentence[colon - 1] in CONDITION_LABELS and (mentions(sentence[colon:]) or "it" in sentence):
+        return colon + 1, (), ("suppose",)
+    for k in (0, colon + 1 if colon is not None else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
             k += 1
         said = next(((p, o) for p, o in CONDITIONS_SAID.items() if tuple(sentence[k:k + len(p)]) == p), None)
@@ -636,9 +645,8 @@ def _stated(sentence: list[str]) -> bool:
     """Whether a sentence opens on an opener that may state a fact as well as imagine ('Assume the sedan makes
     contact with the jet near the middle.'), with nothing that imagines: a sentence of context, not a condition."""
     said = _opener_said(sentence)
-    return bool(said) and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
-        sentence[k:k + 2] == ["from", "the"] and sentence[k + 2:k + 3] and sentence[k + 2] in START_WORDS
-        for k in range(len(sentence))))
+    return bool(said) and said[1][:1] and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
+        w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence)))
 
 
 def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
@@ -661,6 +669,9 @@ def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[
         return None
     if out[subject:subject + 1] and out[subject] in STATES_SAID:
         out[subject:subject] = ["had", "been"]
+    zero = _at(out, (("t", "=", "0"), ("t", "0"), ("time", "zero"), ("t", "=", "zero")))   # 'from t=0'
+    if zero:
+        out[zero[0]:zero[0] + len(zero[1])] = ["the", "start"]
     change_end = _at(out[subject:], CHANGE_ENDS)
     return out[:subject + change_end[0]] + ["."] if change_end else out + ["."]
 
@@ -807,6 +818,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     tail = words[spans[asked_at][1]:]
     condition = next((c for c in reversed(conditions) if c), None)
     own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
+    # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')
+    question = ["it" if w in ("he", "she") else "its" if w == "his" else w for w in question]
     asked = (condition if condition and not own_condition else []) + question
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
     # said with a word the parser does not know are not read for it
@@ -830,6 +843,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]   # the parser's to read
         if len(fits) == 1 and not alike:
             end += out[end:end + 1] == ["one"]
+            start -= bool(start) and out[start - 1] in LOOKS   # 'the big bus': the context says which one
             read.append((" ".join(out[start:end]), " ".join(_said(fits[0])[1:])))
             out[start:end] = _said(fits[0])[1:]
             used.add(fits[0])
@@ -1614,8 +1628,9 @@ IDIOMS = phrase_table({
        for dash in ((), ("-",))},
     **{(clip, the): (hit, the) for clip, hit in (("clips", "hits"), ("clipped", "hit"), ("clipping", "hitting"))
        for the in ("the", "a", "an", "into")},
-    **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"), ("flying", "moving"),
-                                                             ("flies", "moves"), ("flew", "moved"),
+    **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"),
+                                                             ("flying", "moving"), ("flies", "moves"),
+                                                             ("flew", "moved"),
                                                              ("haring", "moving"), ("careering", "moving"),
                                                              ("careening", "moving"))},
     **{(verb, adverb): (stay, "still") for verb, stay in (("sitting", "staying"), ("sits", "stays"), ("sit", "stay"),
