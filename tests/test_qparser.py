@@ -44,7 +44,7 @@ from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstrac
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped, slips
+from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped, slips, stretched
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -1974,3 +1974,53 @@ def test_a_labelled_intervention_a_learners_he_and_this_moment_are_read_from_the
     # a label that imagines, unread as a condition, leaves the text whole rather than drop the change
     text = "Obs: blue bus. Alternative timeline where the bus waits. Does it hit the car?"
     assert _context_read(text) == " ".join(catalogue_names(tokenize(text))[0])
+
+
+def test_a_child_s_words_are_read_whom_it_is_asked_a_big_bus_and_a_stretched_word():
+    parser = QuestionParser.load()
+    texts = {"Mummy, at the very start, how fast is the big yellow school bus going?":
+             "Objects filter_attributes[yellow] filter_attributes[school_bus] unique start query_moving_velocity",
+             "Daddy, is the little gray biplane already floating up in the air, not touching the floor, when it all "
+             "begins?": "Objects filter_attributes[gray] filter_attributes[biplane] unique start is_floating",
+             "Can you tell me, sweetie, at the very start is the little green biplane going slower than the gray "
+             "fighter jet?": "Objects filter_attributes[green] filter_attributes[biplane] unique Objects "
+                             "filter_attributes[gray] filter_attributes[fighter] unique start slower_velocity",
+             "Suppose the purple mountain bike was zooming sooo fast since the start. Would the purple mountain bike "
+             "crash into the blue dirt bike then?":
+             "Objects filter_attributes[purple] filter_attributes[mountain_bike] unique Counterfactual_moving_fast "
+             "Objects filter_attributes[purple] filter_attributes[mountain_bike] unique filter_collision Objects "
+             "filter_attributes[blue] filter_attributes[dirtbike] unique filter_collision exist"}
+    for (text, program), parse in zip(texts.items(), parser.analyse_batch(list(texts))):
+        assert parse.program and " ".join(parse.program) == program, (text, parse.reason)
+    # a size said of a car describes it by what no vehicle has; a bus or a plane is big by its kind
+    assert_refused(parser, {"Is the big red sedan moving fast at the start?": "size"})
+    assert stretched("sloooow", {"slow", "so"}) == "slow" and stretched("seeeen", {"seen", "sen"}) == "seen"
+    assert stretched("slow", {"slow"}) is None and stretched("zzzz", {"slow"}) is None
+
+
+def test_a_chat_s_mentions_remarks_and_an_echoed_question_are_read():
+    assert tokenize("@luna which type is it?") == ["which", "type", "is", "it", "?"]
+    assert tokenize("spd @ start") == ["speed", "at", "start"]
+    assert interjections_dropped(tokenize("which type of vehicle is accelerating at the start, i missed it"))[0] == \
+        tokenize("which type of vehicle is accelerating at the start")
+    assert interjections_dropped(tokenize("how fast is the bus at the start ngl cant tell"))[0] == \
+        tokenize("how fast is the bus at the start")
+    # a question that only echoes the statement before it asks it
+    assert _context_read("calling it now: the cyan chopper and the gray station wagon crash after the clip is over. "
+                         "will they tho??") == \
+        "will the cyan chopper and the gray wagon crash after the clip is over ?"
+    assert _context_read("The red car is fast at the start. Is it?") == "is the red car fast at the start ?"
+    # ... where the auxiliary fits the statement's verb, and the pronoun its subject
+    assert_refused(QuestionParser.load(), ["The red car is fast at the start. Does it?"])
+    # 'it' hit by the vehicle the question names is the context's other one
+    assert _context_read("cyan fighter jet bonks the yellow airliner. was the fighter moving slow when it collided "
+                         "with it?") == \
+        "was the cyan fighter moving slow when it collided with the yellow airliner ?"
+    # an ellipsis after a statement closes it, after an interjection or a word that cannot end one none
+    assert _context_read("the blue mountain bike seems to dodge everything... does it collide with anything?") == \
+        "does the blue mountain bike collide with anything ?"
+    assert _context_read("when the brown dirtbike and yellow regular bus crash, which... is the dirtbike faster?") \
+        == "when the brown dirtbike and yellow regular bus crash , which . . . is the dirtbike faster ?"
+    # a transcript's question may open on 'where'
+    assert _context_read("the purple jet clipped the red SUV where was the jet headed when they collided") == \
+        "where was the purple jet headed when the purple jet and the red suv collided ?"

@@ -74,7 +74,7 @@ from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue
                                           is_description, mentions,
                                           phrase_table, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips
+from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, stretched
 from dynclevr.questions.generate import templates
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
@@ -263,7 +263,11 @@ class QuestionParser:
             return [], "empty question", (), []
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
+        held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
+        held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
+        words = [held.get(w, w) for w in words]
         words, shorthand = shorthand_as_said(words)
+        shorthand = tuple(held.items()) + shorthand
         words, named = catalogue_names(words)
         words, corrected = corrections_dropped(words)
         words, context = context_as_question(words, self.known)
@@ -491,6 +495,12 @@ COMMA_INTERJECTIONS = {"right", "now", "like"}
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
              "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all", "support", "there",
              "sir", "madam", "colleagues", "staff", "helpdesk"}   # and a letter's ('Dear support,')
+# ... and a child's or to a child, said alone before a comma or between commas ('Mummy, how fast ...', 'Can you tell
+# me, sweetie, is ...'): 'daddy' was read as 'pops' (into view)
+ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", "dad", "papa", "grandma", "granny",
+             "gran", "nana", "grandpa", "grandad", "granddad", "gramps", "sweetie", "sweetheart", "honey", "darling",
+             "kiddo", "kids", "children", "class", "teacher", "auntie", "aunty", "uncle", "pal", "guys", "folks",
+             "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -503,12 +513,25 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
                          "thanks", "cheers", "tho"} | CHAT
 
 
+def _says_nothing(tail: list[str]) -> bool:
+    """Whether words after a question say nothing of a vehicle, a time, a motion or a collision, nor ask anything
+    ('? couldn't see', '? Many thanks, Nadia'; not '? Give its colour.')."""
+    return not asks_impact(tail) and not set(tail) & (
+        OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
+        | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
+
+
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
+    addressed = [j for j in range(1, len(words) - 1) if words[j] in ADDRESSED and words[j - 1] == ","
+                 and words[j + 1] in (",", "?", "!", ".")]
+    addressees = " ".join(words[j] for j in addressed)
+    if addressed:   # between commas, or at the end: 'is it fast , honey ?'
+        words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
     k = 0
     # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
-    while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS
+    while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS | ADDRESSED
                               and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
                               or k and words[k - 1] in INTERJECTIONS | VOCATIVES and words[k] in VOCATIVES | {"like"}):
         k += 1
@@ -522,11 +545,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # a vehicle, a time, a motion or a collision
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
-    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4) and not asks_impact(tail) and not set(tail) & (
-            OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
-            | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say"):
-        # (not '? Give its colour.')
+    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4) and _says_nothing(tail):
         end = asked + 1
+    # without a question mark, a chat's remark after the question ('..., i missed it', '... ngl cant tell')
+    remark = next((j for j in range(k + 3, end) if asked is None and (words[j] in CHAT or words[j - 1] == ","
+                                                                        and words[j] == "i")
+                   and len(words[j:end]) <= 6 and _says_nothing(words[j:end])), None)
+    if remark:
+        end = remark - (words[remark - 1] == ",")
     closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
     # a speaker's fillers within the question ('the um green sedan'), with the commas around them
     within = [j for j in range(k, end) if words[j] in FILLERS]
@@ -536,7 +562,9 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         closing = ((" ".join(words[j] for j in within), "nothing, a filler"), *closing)
         kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
         words, end = kept + words[end:], len(kept)
-    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"}:
+    closing = ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
+    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
+            not ADDRESSED & set(words[:k]):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
@@ -565,7 +593,8 @@ WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask",
 STATING = {"assume", "assuming", "consider", "think"}
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
-                    "alternative", "alternate", "change", "suppose", "assume", "imagine"}
+                    "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
+                    "whatif"}
 IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
                    "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
@@ -608,13 +637,18 @@ OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
 
 
 def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
-    """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis ('well... is it'), a
-    point after a letter ('i.e.') or between digits closes none."""
+    """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis after a statement
+    closes it ('the bike seems to dodge everything... does it'), after a word or two ('well... is it') or a word
+    that cannot end one ('which...') none; a point
+    after a letter ('i.e.') or between digits closes none."""
     spans, start = [], 0
     for k, w in enumerate(words):
         before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
+        said = [v for v in words[start:k] if v != "."]
         if w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
-                before == "." or len(before) == 1 and before.isalpha() or before.isdigit() and after.isdigit()):
+                before == "." and (len(said) < 3 or said[-1] in STATEMENT_ENDS_NOT)   # 'crash , which... is it'
+                or len(before) == 1 and before.isalpha()
+                or before.isdigit() and after.isdigit()):
             continue
         spans.append((start, k + 1))
         start = k + 1
@@ -739,10 +773,11 @@ RUN_ON_ASKS = {**dict.fromkeys(("is", "was", "are", "were", "does", "did", "do",
                                           "both", "a", "an", "these", "those", *COLOR_NAMES}),
                **dict.fromkeys(("how", "what", "which"), {"fast", "quickly", "slowly", "direction", "way", "color",
                                                           "colour", "type", "kind", "sort", "speed", "vehicle"}),
-               "if": {"the", "it", "they", *COLOR_NAMES}}
+               "if": {"the", "it", "they", *COLOR_NAMES},
+               "where": {"is", "was", "are", "were", "does", "did", "do", "will"}}
 STATEMENT_ENDS_NOT = {"the", "a", "an", "that", "this", "which", "who", "what", "and", "or", "but", "if", "when", "to",
                       "of", "than", "as", "with", "into", "at", "in", "on", "by", "from", "is", "was", "are", "were",
-                      "does", "did", "do", "will", "would", "not", ",", "it", "its"}
+                      "does", "did", "do", "will", "would", "not", ",", "it", "its", "where", "how", "why", "who"}
 
 
 def _run_on_question(words: list[str]) -> int | None:
@@ -789,6 +824,41 @@ def _thing_first(sentence: list[str], known) -> bool:
         and said[2] != "of"   # 'the top of the frame' is a place
 
 
+BE = {"is", "was", "are", "were"}
+ECHO_AUXILIARIES = BE | {"do", "does", "did", "will", "would", "can", "could"}
+ECHO_CLOSERS = {"tho", "though", "really", "actually", "then", "now", "?", "!"} | CHAT
+
+
+def _echoed(question: list[str], said: list[str]) -> list[str] | None:
+    """A question that only echoes the statement before it, asked of it ('the cyan chopper and the gray wagon crash
+    after the clip is over . will they tho ?' -> 'will the cyan chopper and the gray wagon crash after the clip is
+    over ?', 'the red car is fast . is it ?'); None where it does not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if len(asked) != 2 or asked[0] not in ECHO_AUXILIARIES or asked[1] not in ("it", "they", "he", "she"):
+        return None
+    said = said[said.index(":") + 1:] if ":" in said else said
+    said = said[:-1] if said[-1:] and said[-1] in SENTENCE_ENDS else said
+    subject = coordinated_subject(said)
+    if subject is None or (asked[1] == "they") != (len(subject[1]) == 2) or not said[subject[0]:]:
+        return None
+    rest = said[subject[0]:]
+    if (asked[0] in BE) != (rest[0] in BE) or rest[0] in ECHO_AUXILIARIES - BE:
+        return None
+    return [asked[0], *said[:subject[0]], *rest[asked[0] in BE:], "?"]
+
+
+def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
+    """Where a statement's subject of one vehicle or two joined by 'and' ends, and the vehicles; None where it does
+    not open on one."""
+    runs = mentions(said)
+    if not runs or said[:runs[0][0]] not in ([], ["the"], ["a"], ["an"]):
+        return None
+    end, named = runs[0][1], [runs[0][2]]
+    if len(runs) > 1 and said[end:runs[1][0]] in (["and"], ["and", "the"], ["and", "a"]):
+        end, named = runs[1][1], named + [runs[1][2]]
+    return end, named
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
@@ -816,6 +886,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         return words, ()
     question = words[spans[asked_at][0]:spans[asked_at][1]]
     tail = words[spans[asked_at][1]:]
+    question = _echoed(question, context[-1]) or question
     condition = next((c for c in reversed(conditions) if c), None)
     own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
     # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')
@@ -883,6 +954,16 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
         out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
         used.add(meant)
+        named = mentions(out)
+    # 'it' hit by the vehicle the question names: the context's other one ('The cyan jet bonks the yellow airliner.
+    # Was the jet slow when it collided with it?')
+    struck = next((k for k, w in enumerate(out) if w == "it" and k and (out[k - 1] in ("with", "into", "against") or
+                                                                         out[k - 1].startswith(IMPACT_STEMS))), None)
+    others = [r for r in fullest if not _named(r, named)]
+    if struck is not None and len({r for _, _, r in named}) == 1 and len(others) == 1:
+        read.append(("it", " ".join(_said(others[0]))))
+        out[struck:struck + 1] = _said(others[0])
+        used.add(others[0])
         named = mentions(out)
     if plural:
         others = [r for r in latest if not _named(r, named)]
@@ -1068,6 +1149,10 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 
 OWNERS = {"my", "our", "your"}
 TOYS = {"toy", "toys", "model", "little"}
+# 'the big yellow school bus', 'the huge cyan airliner': a bus or a plane is big by its kind, which picks none out (a
+# size said of a car or a bike, 'the big red sedan', describes the vehicle by a size none has: refused, LOOKS)
+BIG = {"big", "huge", "giant", "large", "massive", "enormous"}
+BIG_KINDS = {"bus", "aeroplane"}
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1075,7 +1160,13 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
     words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
+    kinds = {start: ref for start, _, ref in mentions(words)}
     while k < len(words):
+        if words[k] in BIG and out[-1:] in (["the"], ["a"], ["this"], ["that"]) and k + 1 in kinds and \
+                len(kinds[k + 1]) > 1 and CATEGORY_OF.get(kinds[k + 1][-1]) in BIG_KINDS:
+            read.append((words[k], "nothing, a bus or a plane is big"))
+            k += 1
+            continue
         j = k + (words[k] in OWNERS)
         while words[j:j + 1] and words[j] in TOYS:
             j += 1
@@ -1233,7 +1324,26 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             out[k:close + 1] = []
             continue
         k += 1
+    # what a floating vehicle does, said again ('floating up in the air , not touching the floor ,'), or a 'not' said
+    # again to stress it ('did not move at all , not one bit ,')
+    for k in reversed(range(1, len(out) - 2)):
+        gloss = next((g for g in (*GROUND_GLOSSES, *STRESSED_NOTS) if out[k - 1] == "," and out[k:k + len(g)] == list(g)
+                      and out[k + len(g):k + len(g) + 1] in ([","], ["?"], ["."])), None)
+        if gloss and (FLOATING_WORDS & set(out[:k]) if gloss in GROUND_GLOSSES else "not" in out[:k - 1]):
+            read.append((", " + " ".join(gloss), "nothing, said again"))
+            out[k - 1:k + len(gloss)] = []
+    # a condition's consequence closed by 'then' ('Would the bike crash into the dirt bike then?'); not the 'then' of
+    # a moment, read from the context (`context_as_question`)
+    if out[-2:] == ["then", "?"] and {"would", "if", "had", "suppose", "imagine", "were"} & set(out):
+        read.append(("then", "nothing"))
+        out[-2:-1] = []
     return out, tuple(read)
+
+
+GROUND_GLOSSES = tuple((*n, t, s) for n in (("not", "touching"), ("not", "on")) for t in ("the", "any")
+                       for s in ("floor", "ground")) + (("off", "the", "ground"), ("off", "the", "floor"))
+STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a", "little"), ("not", "an", "inch"),
+                 ("not", "at", "all"), ("not", "even", "a", "bit"))
 
 
 HEADING_KEPT = {"end", "ends", "finish", "after", "before", "once", "when", "while", "later", "future", "beyond",
@@ -1428,7 +1538,9 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
     # 'I'd like to know, is the bus fast?', '... , at the start, is it fast?': the question itself
-    asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else 0
+    asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else \
+        next((j for j in range(2, 7) if rest[:1] and rest[0] in TIME_OPENERS and rest[j:j + 1] and rest[j] in
+              YES_NO_OPENERS and rest[j + 1:j + 2] and rest[j + 1] in SUBJECT_STARTS | set(COLOR_NAMES)), 0)
     if rest[asked:asked + 1] and rest[asked] in YES_NO_OPENERS:
         return rest, ((said, "nothing, a request"),)
     return ["tell", "me"] + rest, ((said, "tell me"),)

@@ -18,6 +18,8 @@ _NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|shou
 _NOT_STEMS = {"wo": "will", "ca": "can"}
 # A dropped g written with an apostrophe ("movin'", "drivin'") is the word in full
 _DROPPED_G = re.compile(r"(?<!')\b([a-z]{2,}in)'(?!s\b)")   # not a quoted word ("the 'spin'")
+# A chat's mention of someone ("@luna which type ...", "... ? @sam"), first or last; '@' alone is a note's 'at'
+_MENTION = re.compile(r"^\s*@[a-z]\w*\s*[,:]?|(?<=\s)@[a-z]\w*(?=\s*(?:[,:!?.]|$))")
 
 
 def tokenize(text: str) -> list[str]:
@@ -26,4 +28,5 @@ def tokenize(text: str) -> list[str]:
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
+    text = _MENTION.sub(" ", text)
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]

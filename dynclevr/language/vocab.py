@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import itertools
 import json
+import re
 from collections import Counter
 from pathlib import Path
 from typing import Iterable
@@ -109,6 +111,19 @@ def slipped(word: str, words: set[str], spellings: dict[str, str] | None = None)
     where `Vocab.closest` would make 'black' 'back'."""
     hits = slips(word, words, spellings)
     return hits[0] if len(hits) == 1 else None
+
+
+def stretched(word: str, words: set[str]) -> str | None:
+    """'sloooow' -> 'slow', 'seeeen' -> 'seen': a word with a letter held three times or more, as chat stretches it,
+    read with each held letter twice or once (twice first), where a reading is of `words`; else None."""
+    runs = re.split(r"((\w)\2{2,})", word)
+    if len(runs) == 1:
+        return None
+    parts = [[p] for p in runs[::3]]   # between the held letters, and each held letter as two or one
+    options = [parts[0]]
+    for k, held in enumerate(runs[1::3]):
+        options += [[held[0] * 2, held[0]], parts[k + 1]]
+    return next((w for w in map("".join, itertools.product(*options)) if w in words), None)
 
 
 def run_together(word: str, words: set[str]) -> str | None:
