@@ -27,6 +27,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
+                                     homophones_as_said,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
                                      impact_like, imperative_as_stated, inserted_time_last,
@@ -39,8 +40,9 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      synonyms, tail_as_question, time_clause_last, time_unasked, times_joined,
                                      video_end_as_said,
                                      well_formed)
+from dynclevr.language.code import code_as_said
 from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
-                                          concrete_program, corefer, delexicalise, description_as_said)
+                                          concrete_program, corefer, delexicalise, description_as_said, heard_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -2024,3 +2026,46 @@ def test_a_chat_s_mentions_remarks_and_an_echoed_question_are_read():
     # a transcript's question may open on 'where'
     assert _context_read("the purple jet clipped the red SUV where was the jet headed when they collided") == \
         "where was the purple jet headed when the purple jet and the red suv collided ?"
+
+
+def test_a_question_typed_as_code_is_said_as_the_grammar_says_it():
+    said = {"speed(purple_fighter_jet, t=0) > speed(green_airliner, t=0)?":
+            "is the purple fighter jet faster than the green airliner at the start?",
+            "collides(yellow sedan, purple mountain bike) -> bool?":
+            "do the yellow sedan and the purple mountain bike collide ?",
+            "cyanMinivan.velocity == 'slow' when it collides w/ yellowDoubleDecker?":
+            "is the cyan minivan slow when it collides w/ the yellow double decker?",
+            "SELECT color FROM vehicles WHERE speed = 'static' AND t = start":
+            "what colour is the vehicle that is static at the start ?",
+            "red_minivan.collides_with(?).color": "what colour is the vehicle the red minivan collides with",
+            "speed(gray_suv) @ collision(gray_suv, brown_school_bus) = ?":
+            "the speed of the gray suv when the gray suv and the brown school bus collide ?",
+            "what_if(red_airliner.static = True from t=0): collides(red_airliner, purple_sedan)?":
+            "if the red airliner is static from the start , do the red airliner and the purple sedan collide?"}
+    for text, english in said.items():
+        assert code_as_said(text)[0] == english, text
+    # a text with no mark of code is left as it is, and a colour is 'the' one only before a vehicle's name
+    assert code_as_said("Is the bus red or blue at the start?") == ("Is the bus red or blue at the start?", ())
+    assert code_as_said("is the bus red or blue at t=0?")[0] == "is the bus red or blue at the start?"
+    parser = QuestionParser.load()
+    parse = parser.analyse_batch(["assert blueJet.is_fast at start?"])[0]
+    assert " ".join(parse.program) == \
+        "Objects filter_attributes[blue] filter_attributes[jet] unique start is_moving_velocity[fast]"
+    # a time in seconds is no start ('t=3.2s' once read '3 .' as a remark and the rest at the start)
+    assert_refused(parser, ["At t=3.2s, is the blue jet accelerating?"])
+
+
+def test_a_speech_recogniser_s_hearing_of_names_colours_and_words_is_read():
+    known = QuestionParser.load().known
+    heard = {"the read sedan": "the red sedan", "the purple said an": "the purple sedan",
+             "the yellow s u v": "the yellow suv", "the grey station wag on": "the gray station wagon",
+             "the green by plane": "the green bi plane", "the brown chop her": "the brown chopper",
+             "the cyan dirt bite": "the cyan dirt bike", "the blew school bus": "the blue school bus"}
+    for text, said in heard.items():
+        assert " ".join(heard_as_said(tokenize(text), known)[0]) == said, text
+    # a colour alone, or before a word that sounds like no name, stays as it is
+    for text in ("the red one is fast", "is the blue moving fast", "the red dirt bike", "the read the bus"):
+        assert heard_as_said(tokenize(text), known) == (tokenize(text), ())
+    assert homophones_as_said(tokenize("is the cyan cruiser faster then the bus sitting their"))[0] == \
+        tokenize("is the cyan cruiser faster than the bus sitting there")
+    assert homophones_as_said(tokenize("then is their speed fast"))[0] == tokenize("then is their speed fast")

@@ -67,10 +67,11 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.code import code_as_said
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, coordinated,
-                                          corefer, delexicalise, description_as_said, generalises,
+                                          corefer, delexicalise, description_as_said, generalises, heard_as_said,
                                           is_description, mentions,
                                           phrase_table, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
@@ -258,6 +259,7 @@ class QuestionParser:
         be parsed; the words read as others; and the words as the rules left them, before any was read as another."""
         if not isinstance(text, str) or not text.strip():
             return [], "empty question", (), []
+        text, coded = code_as_said(text)
         words = tokenize(text)
         if not words:
             return [], "empty question", (), []
@@ -267,7 +269,9 @@ class QuestionParser:
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
         words, shorthand = shorthand_as_said(words)
-        shorthand = tuple(held.items()) + shorthand
+        words, heard = heard_as_said(words, self.known)
+        words, sounded = homophones_as_said(words)
+        shorthand = coded + tuple(held.items()) + shorthand + heard + sounded
         words, named = catalogue_names(words)
         words, corrected = corrections_dropped(words)
         words, context = context_as_question(words, self.known)
@@ -521,6 +525,23 @@ def _says_nothing(tail: list[str]) -> bool:
         | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
 
 
+# A speech recogniser's words that sound like the ones said ('is the bus faster then the car', 'sitting their',
+# 'weather it hits'), where the words around them say which was said
+def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'faster then the' -> 'faster than the', 'sitting their not' -> 'sitting there not', 'weather the bus' ->
+    'whether the bus'; with the words read so."""
+    out, read = list(words), []
+    for k, w in enumerate(out):
+        after = out[k + 1] if k + 1 < len(out) else ""
+        said = ("than" if w == "then" and k and out[k - 1] in COMPARISONS | {"more", "less"} else
+                "there" if w == "their" and after not in NAMING | GENERIC | QUERY_NOUNS and not after.endswith("s")
+                else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"} else None)
+        if said:
+            read.append((w, said))
+            out[k] = said
+    return out, tuple(read)
+
+
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
@@ -648,7 +669,7 @@ def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
         if w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
                 before == "." and (len(said) < 3 or said[-1] in STATEMENT_ENDS_NOT)   # 'crash , which... is it'
                 or len(before) == 1 and before.isalpha()
-                or before.isdigit() and after.isdigit()):
+                or before.isdigit() and after[:1].isdigit()):
             continue
         spans.append((start, k + 1))
         start = k + 1
@@ -1276,6 +1297,11 @@ def _label(word: str) -> bool:
     return word in LABEL_WORDS or re.fullmatch(r"q?\d+[a-z]?", word) is not None
 
 
+def _decimal(words: list[str], k: int) -> bool:
+    """Whether words[k] is the point of a number ('3 . 2 s')."""
+    return words[k] == "." and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1][:1].isdigit()
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -1283,7 +1309,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     nothing; a heading that says a time stays. With the words read as nothing, or the words as they are and ()."""
     read = []
     while True:
-        end = next((k for k, w in enumerate(words) if w in (".", "!", ":")), None)
+        end = next((k for k, w in enumerate(words) if w in (".", "!", ":") and not _decimal(words, k)), None)
         if end is None or end + 1 == len(words) or set(words[:end]) & (
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
                 | FLOATING_WORDS | STATIC_SAID) or asks_impact(words[:end]):   # one that says what is asked stays
@@ -1327,11 +1353,12 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     # what a floating vehicle does, said again ('floating up in the air , not touching the floor ,'), or a 'not' said
     # again to stress it ('did not move at all , not one bit ,')
     for k in reversed(range(1, len(out) - 2)):
-        gloss = next((g for g in (*GROUND_GLOSSES, *STRESSED_NOTS) if out[k - 1] == "," and out[k:k + len(g)] == list(g)
-                      and out[k + len(g):k + len(g) + 1] in ([","], ["?"], ["."])), None)
+        gloss = next((g for g in (*GROUND_GLOSSES, *STRESSED_NOTS) if out[k:k + len(g)] == list(g) and (
+            out[k - 1] == "," and out[k + len(g):k + len(g) + 1] in ([","], ["?"], ["."])
+            or out[k - 1] == "(" and out[k + len(g):k + len(g) + 1] == [")"])), None)
         if gloss and (FLOATING_WORDS & set(out[:k]) if gloss in GROUND_GLOSSES else "not" in out[:k - 1]):
-            read.append((", " + " ".join(gloss), "nothing, said again"))
-            out[k - 1:k + len(gloss)] = []
+            read.append((out[k - 1] + " " + " ".join(gloss), "nothing, said again"))
+            out[k - 1:k + len(gloss) + (out[k - 1] == "(")] = []
     # a condition's consequence closed by 'then' ('Would the bike crash into the dirt bike then?'); not the 'then' of
     # a moment, read from the context (`context_as_question`)
     if out[-2:] == ["then", "?"] and {"would", "if", "had", "suppose", "imagine", "were"} & set(out):

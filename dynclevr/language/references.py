@@ -10,6 +10,7 @@ the sentence.
 from __future__ import annotations
 
 import re
+from difflib import SequenceMatcher
 
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
@@ -105,6 +106,65 @@ def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str
         if list(p) != list(said):
             read.append((" ".join(p).replace(" - ", "-"), " ".join(said)))
         i += len(p)
+    return out, tuple(read)
+
+
+# A speech recogniser's hearing of a vehicle's name said after its colour: split ('the yellow s u v', 'the gray
+# station wag on', 'the green by plane'), or as words that sound alike ('the purple said an', 'the cyan crews her',
+# 'the gray many van'). Read as the name whose letters they are, or whose consonants they sound (vowels and the
+# glides h, w, y left out, a doubled letter once), where one name is.
+_HEARD_NAMES = {"".join(w): said for said_words, said in
+                [*((tuple(v.split("_")), v.replace("_", " ")) for v in SUBTYPES),
+                 *((tuple(k.split()), k) for k in EVERYDAY_NAMES),
+                 *((tuple(c.split()), c) for cs in CATEGORY_SAID.values() for c in cs)]
+                for w in [said_words]}
+_SOUNDLESS = re.compile(r"[aeiouhwy]")
+# ... and its colour, before a name ('the read sedan', 'the blew bus')
+HEARD_COLOURS = {"read": "red", "blew": "blue", "sian": "cyan", "scion": "cyan", "grey": "gray"}
+
+
+def _sounded(letters: str) -> str:
+    return re.sub(r"(.)\1+", r"\1", letters[:1] + _SOUNDLESS.sub("", letters[1:]))
+
+
+def _heard_name(heard: list[str]) -> str | None:
+    letters = "".join("u" if w == "you" else w for w in heard) if len(heard) > 1 else heard[0]   # 's u v'
+
+    if not letters.isalpha() or len(letters) < 3:
+        return None
+    if letters in _HEARD_NAMES:
+        return _HEARD_NAMES[letters]
+    close = {said for name, said in _HEARD_NAMES.items()
+             if len(_sounded(name)) >= 3 and _sounded(name) == _sounded(letters)
+             or len(name) >= 6 and SequenceMatcher(None, letters, name).ratio() >= 0.85}
+    return close.pop() if len(close) == 1 else None
+
+
+def heard_as_said(words: list[str], known: set[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A vehicle's name as a speech recogniser typed it, after its colour, as its name (and the colour before a name
+    as its colour): ['the', 'read', 'said', 'an'] -> ['the', 'red', 'sedan']; with the words read so. Only where the
+    words after the colour are no name already and are not all words of `known` that go on with the question."""
+    out, read, k = list(words), [], 0
+    while k < len(out) - 1:
+        colour = out[k] in COLOR_NAMES or out[k] in HEARD_COLOURS and k and out[k - 1] in ("the", "a", "an")
+        if not colour:
+            k += 1
+            continue
+        j = k + 1
+        name = None
+        named = out[j] in OBJECT_WORDS or any(tuple(out[j:j + len(p)]) == p for p, _ in _EVERYDAY.get(out[j], ()))
+        if not named and out[j] not in ("one", "ones"):
+            # the longest hearing first: 'station wag on' before 'station'
+            name = next(((n, said) for n in (3, 2, 1) if (said := _heard_name(out[j:j + n]))
+                         and (n > 1 or out[j] not in known)), None)
+        if name:
+            n, said = name
+            read.append((" ".join(out[j:j + n]), said))
+            out[j:j + n] = said.split()
+        if out[k] in HEARD_COLOURS and (name or named):
+            read.append((out[k], HEARD_COLOURS[out[k]]))
+            out[k] = HEARD_COLOURS[out[k]]
+        k += 1
     return out, tuple(read)
 
 
