@@ -27,7 +27,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     homophones_as_said,
+                                     homophones_as_said, worksheet_as_said,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
                                      impact_like, imperative_as_stated, inserted_time_last,
@@ -42,7 +42,8 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      well_formed)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
-                                          concrete_program, corefer, delexicalise, description_as_said, heard_as_said)
+                                          concrete_program, corefer, delexicalise, described_as_named,
+                                          description_as_said, heard_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -2069,3 +2070,43 @@ def test_a_speech_recogniser_s_hearing_of_names_colours_and_words_is_read():
     assert homophones_as_said(tokenize("is the cyan cruiser faster then the bus sitting their"))[0] == \
         tokenize("is the cyan cruiser faster than the bus sitting there")
     assert homophones_as_said(tokenize("then is their speed fast"))[0] == tokenize("then is their speed fast")
+
+
+def test_a_worksheet_s_print_around_its_question_is_read():
+    said = {"9. What is the speed of the cyan SUV at the moment it crashes into the brown bendy bus? A) static B) "
+            "slow C) fast [1 mark]": "what is the speed of the cyan suv at the moment it crashes into the brown "
+                                     "bendy bus ?",
+            "True or false: at the start the blue school bus is moving slowly. (1 pt)":
+            "is it true that at the start the blue school bus is moving slowly ?",
+            "(d) Tick the correct box. The purple bike is faster than the brown sedan. ☐ True ☐ False":
+            "is it true that the purple bike is faster than the brown sedan ?",
+            "Fill in the blank: When the red scooter hits the gray truck, it is moving ______ (static/slow/fast).":
+            "when the red scooter hits the gray truck , it is moving static , slow or fast ?",
+            "Q3) Was the green wagon stationary when it and the yellow cruiser collided? Yes / No":
+            "was the green wagon stationary when it and the yellow cruiser collided ?"}
+    for text, question in said.items():
+        assert " ".join(worksheet_as_said(tokenize(text))[0]) == question, text
+    # a question with none of a worksheet's print is as it is
+    assert worksheet_as_said(tokenize("Is the red car (the sedan) fast at the start?")) == \
+        (tokenize("Is the red car (the sedan) fast at the start?"), ())
+
+
+def test_a_vehicle_described_by_its_looks_is_its_sub_type_and_a_colour_said_further_off_is_read():
+    described = {"the red plane with two sets of wings": "the red biplane",
+                 "the green bus that takes kids to school": "the green school bus",
+                 "the brown bike built for two": "the brown tandem bike",
+                 "the blue car with the open back": "the blue truck",
+                 "the yellow family van": "the yellow minivan", "the red military jet": "the red fighter",
+                 "the long yellow bus with the concertina bit in the middle": "the yellow articulated bus",
+                 "the brown off-road motorbike": "the brown dirtbike",
+                 "the blue little motorbike you stand on": "the blue scooter",
+                 "the skinny purple racing bicycle": "the purple road bike", "the plain red car": "the red sedan"}
+    for text, said in described.items():
+        assert " ".join(described_as_named(catalogue_names(tokenize(text))[0])[0]) == said, text
+    # a size alone describes a car by what none has; a description of no one sub-type stays for the parser to refuse
+    for text in ("the big red sedan", "the off-road bike", "the red car with the blue roof"):
+        words = catalogue_names(tokenize(text))[0]
+        assert described_as_named(words) == (words, ())
+    parser = QuestionParser.load()
+    assert_refused(parser, {"Does the pink little stand-up motorbike speed up at the start?": "pink",
+                            "At exactly what second does the yellow military jet hit the blue bus?": "when"})

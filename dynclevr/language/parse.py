@@ -70,8 +70,10 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.code import code_as_said
 from dynclevr.language.params import QParserParams
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.references import (CATEGORY_SAID, OBJECT_WORDS, catalogue_names, concrete_program, coordinated,
-                                          corefer, delexicalise, description_as_said, generalises, heard_as_said,
+from dynclevr.language.references import (CATEGORY_SAID, EVERYDAY_NAMES, OBJECT_WORDS, catalogue_names,
+                                          concrete_program, coordinated,
+                                          corefer, delexicalise, described_as_named, description_as_said,
+                                          generalises, heard_as_said,
                                           is_description, mentions,
                                           phrase_table, phrases_as_said, placeholders)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
@@ -268,11 +270,14 @@ class QuestionParser:
         held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
+        words, printed = worksheet_as_said(words)
         words, shorthand = shorthand_as_said(words)
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
-        shorthand = coded + tuple(held.items()) + shorthand + heard + sounded
+        shorthand = coded + tuple(held.items()) + printed + shorthand + heard + sounded
         words, named = catalogue_names(words)
+        words, looked = described_as_named(words)
+        named += looked
         words, corrected = corrections_dropped(words)
         words, context = context_as_question(words, self.known)
         words, after = afterthoughts_read(words, self.known)
@@ -441,6 +446,10 @@ class QuestionParser:
                 return f"the question names the {named} {said}: no vehicle here is called '{said}'"
             if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
                 return f"the question names the {before} {named}: no object here is '{before}'"
+            # ... said further off ('the pink little stand-up motorbike' was read as any motorbike)
+            shade = next((v for v in reversed(words[max(k - 5, 0):k]) if v in OTHER_COLOURS), None)
+            if shade and not DETERMINERS.intersection(words[words.index(shade, max(k - 5, 0)):k]):
+                return f"the question names a {shade} {named}: no object here is '{shade}'"
         return ""
 
     def _check(self, words: list[str], refs: list, ids: list[int] | None, p: float, attended: list[float]) -> Parse:
@@ -523,6 +532,94 @@ def _says_nothing(tail: list[str]) -> bool:
     return not asks_impact(tail) and not set(tail) & (
         OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
         | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
+
+
+# A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
+# false: the red sedan is moving fast.', 'Circle one: static / slow / fast', 'it is moving ______ (static/slow/fast).')
+MARKS = {"mark", "marks", "pt", "pts", "point", "points"}
+BOXES = {"☐", "□", "◯", "○", "[", "]"}
+ANSWER_WORDS = {"yes", "no", "true", "false", "none", "of", "these", "the", "above", "static", "slow", "fast", "/", ",",
+                "or", "."} | set(COLOR_NAMES) | OBJECT_WORDS | {w for name in EVERYDAY_NAMES for w in name.split()}
+INSTRUCTIONS = (("answer", "in", "one", "word"), ("answer", "yes", "or", "no"), ("answer", "yes", "/", "no"),
+                ("explain", "nothing", ",", "just", "answer"), ("just", "answer"), ("circle", "one"), ("circle",),
+                ("tick", "one"), ("tick", "the", "correct", "box"), ("tick",), ("choose", "one"), ("select", "one"),
+                ("yes", "or", "no"), ("yes", "/", "no"), ("true", "/", "false"))
+
+
+def _numbered(words: list[str]) -> int:
+    """How many words a worksheet's number takes before its question ('9 .', 'q4 )', '( c )', 'q25 .'); 0 where none."""
+    first = words[0] if words else ""
+    if (first.isdigit() or re.fullmatch(r"q\d+", first)) and words[1:2] and words[1] in (".", ")", ":"):
+        return 2
+    if re.fullmatch(r"q\d+", first):
+        return 1
+    if first == "(" and words[2:3] == [")"] and re.fullmatch(r"[a-z]|[ivx]+|\d+", words[1]):
+        return 3
+    return 0
+
+
+def _options_at(words: list[str], k: int) -> bool:
+    """Whether a list of lettered options starts at words[k] ('( a ) static ( b ) ...', 'a ) red b ) gray ...')."""
+    return words[k:k + 3] == ["(", "a", ")"] or words[k:k + 2] == ["a", ")"]
+
+
+def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question a worksheet prints, without its number, marks, options and instructions; a statement to judge
+    true or false asked whether it is true; a blank to fill from choices asked as the choices. With what was read
+    so, or the words as they are and ()."""
+    out, read = list(words), []
+    n = _numbered(out)
+    if n:
+        read.append((" ".join(out[:n]), "nothing, a number"))
+        out = out[n:]
+    while len(out) > 3 and (out[-1] in ("]", ")") and out[-2] in MARKS and out[-3].isdigit() and out[-4] in ("[", "(")):
+        read.append((" ".join(out[-4:]), "nothing, the marks"))
+        out = out[:-4]
+    asked = next((k for k, w in enumerate(out) if w == "?"), None)
+    if asked is not None:
+        rest = out[asked + 1:]
+        options = next((k for k in range(len(rest)) if _options_at(rest, k)), None)
+        if options is not None and set(rest[options:]) <= ANSWER_WORDS | {"(", ")", "a", "b", "c", "d", "e"}:
+            read.append((" ".join(rest[options:]), "nothing, the options"))
+            rest = rest[:options]
+        while rest:
+            said = next((i for i in INSTRUCTIONS if tuple(rest[:len(i)]) == i), None)
+            if said is None:
+                break
+            end = len(said)
+            while end < len(rest) and rest[end] in ANSWER_WORDS | BOXES | {":", "!"}:
+                end += 1
+            read.append((" ".join(rest[:end]), "nothing, an instruction"))
+            rest = rest[end:]
+        out = out[:asked + 1] + rest
+    # a statement to judge ('true or false : the bus is fast .', 'circle one : ... true / false', '☐ true ☐ false')
+    judged = out[:4] == ["true", "or", "false", ":"]
+    label = next((i for i in INSTRUCTIONS[5:10] if tuple(out[:len(i)]) == i
+                  and out[len(i):len(i) + 1] in ([":"], ["."])), None)
+    tail = [w for w in out[-5:] if w not in BOXES]
+    if judged or label and tail[-3:] in (["true", "/", "false"], ["true", "false"]) or \
+            out[-1:] != ["?"] and [w for w in out if w not in BOXES][-2:] == ["true", "false"]:
+        body = out[4:] if judged else out[len(label) + 1:] if label else out
+        body = [w for w in body if w not in BOXES]
+        while body and body[-1] in ("true", "false", "/", ".", "?"):
+            body = body[:-1]
+        read.append(("true or false", "is it true that"))
+        out = ["is", "it", "true", "that", *body, "?"]
+    if out[:4] == ["fill", "in", "the", "blank"]:
+        read.append(("fill in the blank", "nothing, an instruction"))
+        out = out[4 + (out[4:5] == [":"]):]
+    blank = next((k for k in range(len(out) - 1) if out[k] == out[k + 1] == "_"), None)
+    if blank is not None:
+        end = blank
+        while end < len(out) and out[end] == "_":
+            end += 1
+        close = out.index(")", end) if out[end:end + 1] == ["("] and ")" in out[end:] else None
+        choices = [w for w in out[end + 1:close] if w not in ("/", ",", "or")] if close else []
+        if len(choices) >= 2:
+            said = [w for c in choices[:-1] for w in (c, ",")][:-1] + ["or", choices[-1]]
+            read.append((" ".join(out[blank:close + 1]), " ".join(said)))
+            out = out[:blank] + said + ["?" if w == "." else w for w in out[close + 1:]]
+    return out, tuple(read)
 
 
 # A speech recogniser's words that sound like the ones said ('is the bus faster then the car', 'sitting their',
@@ -1375,7 +1472,7 @@ STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a"
 
 HEADING_KEPT = {"end", "ends", "finish", "after", "before", "once", "when", "while", "later", "future", "beyond",
                 "first", "last", "moment", "instant", "frame", "frames", "time", "true", "false", "yes", "no"}
-ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally"}
+ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
 ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
 # the red car , when it hits the bus , fast ?'): the grammar says it last
@@ -2245,9 +2342,11 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             k += 1
         if k > 2 and head[k:k + 2] == ["'", "s"] and head[k + 2:k + 3]:
             asked = head[k + 2]
-    if head[:1] and head[0] in ("at", "in", "on", "during") and head[1:2] and head[1] in ASKING and head[2:3]:
-        # 'at what height', 'in which frame'
-        asked = head[2]
+    exactly = 1 + (head[1:2] in (["exactly"], ["precisely"], ["just"], ["about"], ["roughly"], ["around"]))
+    if head[:1] and head[0] in ("at", "in", "on", "during") and head[exactly:exactly + 1] and \
+            head[exactly] in ASKING and head[exactly + 1:exactly + 2]:
+        asked = head[exactly + 1]   # 'at what height', 'in which frame', 'at exactly what second'
+
     what = f"the '{asked}'" if asked else ""
     if head[:1] == ["how"] and head[1:2] and (head[2:3] and head[2] in AUXILIARIES or head[1] in SPATIAL):
         asked, what = head[1], f"how '{head[1]}'"

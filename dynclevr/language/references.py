@@ -38,7 +38,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   # what follows it are read for it ('The red airliner ... is the plane going slower?')
                   "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
                   "lorry": "truck", "van": "minivan", "pushbike": "bicycle",
-                  "jetliner": "airliner",
+                  "jetliner": "airliner", "warplane": "fighter", "war plane": "fighter",
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus",
@@ -129,14 +129,14 @@ def _sounded(letters: str) -> str:
 
 def _heard_name(heard: list[str]) -> str | None:
     letters = "".join("u" if w == "you" else w for w in heard) if len(heard) > 1 else heard[0]   # 's u v'
-
-    if not letters.isalpha() or len(letters) < 3:
+    if not letters.isalpha() or len(letters) < 3 or heard[0] in ("the", "a", "an", "and", "or", "of", "with"):
         return None
     if letters in _HEARD_NAMES:
         return _HEARD_NAMES[letters]
     close = {said for name, said in _HEARD_NAMES.items()
              if len(_sounded(name)) >= 3 and _sounded(name) == _sounded(letters)
-             or len(name) >= 6 and SequenceMatcher(None, letters, name).ratio() >= 0.85}
+             or len(name) >= 6 and abs(len(name) - len(letters)) <= 1
+             and SequenceMatcher(None, letters, name).ratio() >= 0.85}
     return close.pop() if len(close) == 1 else None
 
 
@@ -166,6 +166,107 @@ def heard_as_said(words: list[str], known: set[str]) -> tuple[list[str], tuple[t
             out[k] = HEARD_COLOURS[out[k]]
         k += 1
     return out, tuple(read)
+
+
+# A vehicle named by what it looks like or is for, by those who do not know its name ('the red plane with two sets
+# of wings', 'the bus that takes kids to school', 'the bike built for two', 'the car with the open back', 'the family
+# van', 'the military jet'): the words before its noun and a phrase after it that say one sub-type. Words that only
+# describe ('little', 'skinny', 'chunky') go where a sub-type is said; said alone they stay, for the parser to refuse.
+def _options(*parts) -> list[tuple[str, ...]]:
+    """Every phrase of `parts`, each part a word or a tuple of alternatives ('' for none)."""
+    phrases = [()]
+    for part in parts:
+        alternatives = part if isinstance(part, tuple) else (part,)
+        phrases = [p + tuple(a.split()) for p in phrases for a in alternatives]
+    return phrases
+
+
+_THE = ("the", "a", "an", "")
+DESCRIBED_AFTER = {
+    "biplane": _options("with", ("two", "double", ""), ("sets of", "pairs of", "layers of", ""), "wings"),
+    "double_bus": _options("with", ("two", "2"), ("floors", "decks", "levels", "storeys", "stories")) +
+    _options("with", _THE, ("upstairs", "upper deck", "top deck")),
+    "articulated_bus": _options(("that", "which"), ("bends", "folds", "bend"), ("in the middle", "")) +
+    _options("with", _THE, ("concertina", "hinge", "joint", "bendy"), ("bit", "part", "section", ""),
+             ("in the middle", "")),
+    "school_bus": _options(("that", "which"), ("takes", "carries", "brings", "drives"), ("kids", "children", "pupils"),
+                           "to school") +
+    _options(("that", "which"), "picks", ("kids", "children", "pupils"), "up", ("for school", "")) +
+    _options("for", ("school kids", "schoolkids", "school children", "schoolchildren", "school")),
+    "tandem_bike": _options(("built", "made", "meant", ""), "for", "two", ("riders", "people", "")),
+    "mountain_bike": _options("with", _THE, ("big", ""), ("knobbly", "knobby", "chunky", "fat", "thick"),
+                              ("tyres", "tires"), ("for hills", "")) + [("for", "hills")],
+    "utility_bike": _options("with", _THE, ("big", ""), ("cargo", "luggage", "delivery", ""),
+                             ("rack", "basket", "carrier", "box")),
+    "scooter": _options("you", ("stand", "sit upright", "sit up"), "on") +
+    _options(",", "with", _THE, "flat", "floor", ("for your feet", ""), ",") +
+    _options("with", _THE, "flat", "floor", ("for your feet", "")),
+    "chopper": _options("with", _THE, ("long", ""), ("stretched", "stretched - out", "stretched out", "extended"),
+                        ("front", "front end", "forks")),
+    "truck": _options("with", _THE, "open", ("cargo", ""), ("back", "bed", "box"), ("at the back", "")),
+    "wagon": _options("with", _THE, ("long", "extended"), ("roof", "back")),
+}
+DESCRIBED_BEFORE = {
+    **dict.fromkeys(("winged", "twin-winged"), "biplane"), **dict.fromkeys(("military", "war", "combat", "army"),
+                                                                          "fighter"),
+    **dict.fromkeys(("private", "business"), "jet"), "passenger": "airliner",
+    **dict.fromkeys(("upstairs", "storey", "decked"), "double_bus"), **dict.fromkeys(("bendy", "concertina"),
+                                                                                     "articulated_bus"),
+    **dict.fromkeys(("ordinary", "normal", "plain", "regular", "standard", "everyday", "city"), "{plain}"),
+    **dict.fromkeys(("racing", "racer", "road"), "road_bike"), **dict.fromkeys(("knobbly", "hill", "mountain"),
+                                                                             "mountain_bike"),
+    **dict.fromkeys(("delivery", "cargo", "utility"), "utility_bike"), "stand": "scooter",
+    **dict.fromkeys(("slung",), "chopper"), **dict.fromkeys(("trail", "motocross", "offroad"), "dirtbike"),
+    **dict.fromkeys(("cruising", "touring"), "cruiser"), "boxy": "suv", "estate": "wagon", "family": "minivan",
+}
+PLAIN = {"bus": "regular_bus", "car": "sedan"}   # an ordinary bus or car
+_NAME_PAIRS = {tuple(v.split("_")) for v in SUBTYPES if "_" in v}
+SIZES = {"little", "small", "big", "large", "tiny", "huge"}
+DESCRIBING = SIZES | {"skinny", "thin", "long", "low", "chunky", "sleek", "old", "fashioned", "double", "two", "-",
+                      "up"}
+DESCRIBED_NOUNS = {"aeroplane": "aeroplane", "jet": "aeroplane", "airliner": "aeroplane", "bus": "bus",
+                   "bike": "bicycle", "bicycle": "bicycle", "motorbike": "motorbike", "car": "car", "minivan": "car"}
+
+
+def described_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """['the', 'red', 'aeroplane', 'with', 'two', 'sets', 'of', 'wings'] -> ['the', 'red', 'biplane']: a vehicle
+    described by what it looks like or is for, where the description says one sub-type of the noun's category; with
+    the description read so."""
+    out, read, n = [], [], 0
+    while n < len(words):   # 'off-road', 'off road': one word
+        joined = next((m for m in (3, 2) if words[n:n + m] in (["off", "-", "road"], ["off", "road"])), 0)
+        out.append("offroad" if joined else words[n])
+        n += joined or 1
+    n = 0
+    while n < len(out):
+        category = DESCRIBED_NOUNS.get(out[n])
+        if category is None:
+            n += 1
+            continue
+        start = n - (n > 0 and (out[n - 1], out[n]) in _NAME_PAIRS)   # 'road bike', 'regular bus'
+        j = start
+        while j > 0 and (out[j - 1] in DESCRIBED_BEFORE or out[j - 1] in DESCRIBING or out[j - 1] in COLOR_NAMES):
+            j -= 1
+        colours = [w for w in out[j:start] if w in COLOR_NAMES]
+        before = [w for w in out[j:start] if w not in COLOR_NAMES]
+        after = next(((len(p), t) for t, ps in DESCRIBED_AFTER.items() for p in sorted(ps, key=len, reverse=True)
+                      if p and tuple(out[n + 1:n + 1 + len(p)]) == p and SUBTYPES[t][0] == category), (0, None))
+        said = {PLAIN.get(out[n], "") if t == "{plain}" else t for t in map(DESCRIBED_BEFORE.get, before) if t}
+        said = {t for t in said | {after[1]} if t in SUBTYPES and SUBTYPES[t][0] == category}
+        named = "_".join(out[start:n + 1]) if start < n else out[n]
+        # a sub-type's own name keeps it where the words only describe ('the skinny purple road bike')
+        # (but not a size alone: 'the big red sedan' describes it by a size none has; a bus or a plane is big)
+        plain = DESCRIBING - SIZES | ({"big", "large", "huge"} if category in ("bus", "aeroplane") else set())
+        said = said or ({named} if named in SUBTYPES and set(before) <= plain else set())
+        if len(colours) > 1 or len(said) != 1 or not (before or after[0]):
+            n += 1
+            continue
+        t = said.pop()
+        new = colours + t.split("_")
+        read.append((" ".join(out[j:n + 1 + after[0]]), " ".join(new)))
+        out[j:n + 1 + after[0]] = new
+        n = j + len(new)
+    return (out, tuple(read)) if read else (words, ())
 
 
 def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
