@@ -27,7 +27,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     homophones_as_said, worksheet_as_said,
+                                     homophones_as_said, worksheet_as_said, impact_said_first,
                                      idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
                                      condition_subject, condition_subject_first, floating_plane_as_vehicle,
                                      impact_like, imperative_as_stated, inserted_time_last,
@@ -2110,3 +2110,26 @@ def test_a_vehicle_described_by_its_looks_is_its_sub_type_and_a_colour_said_furt
     parser = QuestionParser.load()
     assert_refused(parser, {"Does the pink little stand-up motorbike speed up at the start?": "pink",
                             "At exactly what second does the yellow military jet hit the blue bus?": "when"})
+
+
+def test_a_heading_an_apology_a_vehicle_named_again_a_claim_and_a_wondered_question_are_read():
+    assert asides_dropped(tokenize("For my accident-reconstruction class: at the instant the red truck and the blue "
+                                   "wagon collide, is the truck standing still?"))[0] == \
+        tokenize("at the instant the red truck and the blue wagon collide, is the truck standing still?")
+    # a heading that speaks of a collision the question does not say itself stays
+    kept = tokenize("For my accident class: is the red truck standing still at the start?")
+    assert asides_dropped(kept)[0] == kept
+    assert asides_dropped(tokenize("Sorry if this is a silly question, but does the gray motorbike hit anything?"))[0] \
+        == tokenize("does the gray motorbike hit anything?")
+    assert asides_dropped(tokenize("How fast is the blue suv (the big car on the left) at the start?"))[0] == \
+        tokenize("How fast is the blue suv at the start?")
+    assert asides_dropped(tokenize("Is the green bike stationary at the outset (frame 0)?"))[0] == \
+        tokenize("Is the green bike stationary at the outset?")
+    assert _context_read("My daughter insists the gray tandem bike is accelerating right at the beginning. Is she "
+                         "right?") == "is it true that the gray tandem bike is accelerating right at the beginning ?"
+    assert _context_read("My kid asked what color the thing floating in the air at the beginning is. Any idea?") == \
+        "what color the thing floating in the air at the beginning is ?"
+    assert impact_said_first(tokenize("in the crash was the brown suv going slower than the cyan bus"))[0] == \
+        tokenize("when the brown suv and the cyan bus collide , was the brown suv going slower than the cyan bus")
+    assert tokenize("will the gray chopper collide with something question mark") == \
+        tokenize("will the gray chopper collide with something?")

@@ -281,6 +281,8 @@ class QuestionParser:
         words, corrected = corrections_dropped(words)
         words, context = context_as_question(words, self.known)
         words, after = afterthoughts_read(words, self.known)
+        words, impact = impact_said_first(words)
+        after += impact
         words, owned = owners_dropped(words)
         words, labelled = asides_dropped(words)
         words, inserted = inserted_time_last(words)
@@ -519,7 +521,7 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
              "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
              "greetings", "with"}
-FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"}
+FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
@@ -965,6 +967,60 @@ def _echoed(question: list[str], said: list[str]) -> list[str] | None:
     return [asked[0], *said[:subject[0]], *rest[asked[0] in BE:], "?"]
 
 
+CLAIMING = {"insists", "insisted", "says", "said", "thinks", "thought", "claims", "claimed", "reckons", "swears",
+            "bets", "believes", "told", "tells", "argues", "guessed", "guesses"}
+JUDGING = {"right", "correct", "true", "wrong"}
+WONDERING = {"asked", "asks", "wonders", "wondered", "wondering", "know", "knows", "asking"}
+IDEA_ASKS = (["any", "idea"], ["any", "ideas"], ["do", "you", "know"], ["can", "you", "tell"], ["thoughts"],
+             ["any", "clue"], ["anyone"], ["help"])
+
+
+def impact_said_first(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'in the crash , was the brown suv slower than the cyan truck ?' -> 'when the brown suv and the cyan truck
+    collide , was ...': a collision said first without its pair, where the question names the two vehicles; with
+    the words read so, or the words as they are and ()."""
+    said = _at(words[:6], IMPACT_MOMENTS)
+    if not said or said[0] != 0:
+        return words, ()
+    rest = words[len(said[1]):]
+    rest = rest[(rest[:1] == [","]):]
+    pair = list(dict.fromkeys(r for _, _, r in mentions(rest)))
+    if len(pair) != 2 or not rest or rest[0] not in QUESTION_OPENERS:
+        return words, ()
+    clause = ["when", *_said(pair[0]), "and", *_said(pair[1]), "collide", ","]
+    return clause + rest, ((" ".join(said[1]), " ".join(clause[:-1])),)
+
+
+def _judged(question: list[str], said: list[str]) -> list[str] | None:
+    """Someone's claim asked whether it is right ('My granddaughter insists the yellow double-decker is faster ... .
+    Is she right?' -> 'is it true that the yellow double bus is faster ... ?'); None where it is not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if not (asked and asked[-1] in JUDGING and len(asked) <= 3):
+        return None
+    claim = next((k for k, w in enumerate(said) if w in CLAIMING), None)
+    if claim is None:
+        return None
+    clause = said[claim + 1:]
+    clause = clause[(clause[:1] == ["me"]):]
+    clause = clause[(clause[:1] == ["that"]):]
+    clause = clause[:-1] if clause[-1:] and clause[-1] in SENTENCE_ENDS else clause
+    return ["is", "it", "true", "that", *clause, "?"] if mentions(clause) else None
+
+
+def _wondered(question: list[str], said: list[str]) -> list[str] | None:
+    """A question someone wondered, then asked of the reader ('My kid asked what color the thing floating ... is. Any
+    idea?' -> 'what color the thing floating ... is ?'); None where it is not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if asked not in IDEA_ASKS:
+        return None
+    wh = next((k + 1 for k, w in enumerate(said[:-1]) if w in WONDERING and said[k + 1] in
+               ("what", "which", "how", "whether", "if")), None)
+    if wh is None:
+        return None
+    clause = said[wh:-1] if said[-1] in SENTENCE_ENDS else said[wh:]
+    return (["tell", "me"] if clause[0] in ("whether", "if") else []) + clause + ["?"]
+
+
 def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
     """Where a statement's subject of one vehicle or two joined by 'and' ends, and the vehicles; None where it does
     not open on one."""
@@ -1004,7 +1060,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         return words, ()
     question = words[spans[asked_at][0]:spans[asked_at][1]]
     tail = words[spans[asked_at][1]:]
-    question = _echoed(question, context[-1]) or question
+    question = _echoed(question, context[-1]) or _judged(question, context[-1]) or _wondered(question, context[-1]) \
+        or question
     condition = next((c for c in reversed(conditions) if c), None)
     own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
     # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')
@@ -1399,6 +1456,20 @@ def _decimal(words: list[str], k: int) -> bool:
     return words[k] == "." and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1][:1].isdigit()
 
 
+QUICK_LABELS = {"one", "check", "question", "q", "note", "thing", "query"}
+
+
+def _purpose(heading: list[str], rest: list[str]) -> bool:
+    """Whether a heading before a colon only says who asks or what for, the question after it whole: it names no
+    vehicle and no time, and a collision or a condition it speaks of the question says itself ('For my
+    accident-reconstruction class: at the instant the pickup and the wagon collide, ...')."""
+    return bool(heading) and "?" in rest and bool(OBJECT_WORDS.intersection(rest)) and \
+        not set(heading) & (OBJECT_WORDS | HEADING_KEPT | START_WORDS | FILM_WORDS | FLOATING_WORDS - {"up"}) and \
+        (not asks_impact(heading) or asks_impact(rest)) and \
+        (not (CONDITION_OPENERS | IMAGINING | IMAGINED_SAID | CONDITION_LABELS).intersection(heading)
+         or bool(CONDITION_WORDS.intersection(rest)))
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -1407,9 +1478,13 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     read = []
     while True:
         end = next((k for k, w in enumerate(words) if w in (".", "!", ":") and not _decimal(words, k)), None)
-        if end is None or end + 1 == len(words) or set(words[:end]) & (
+        heading = [w for j, w in enumerate(words[:end or 0]) if not (w == "quick" and words[j + 1:j + 2] and
+                                                                     words[j + 1] in QUICK_LABELS)]   # 'quick one'
+        if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
+            pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
+        elif end is None or end + 1 == len(words) or set(heading) & (
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
-                | FLOATING_WORDS | STATIC_SAID) or asks_impact(words[:end]):   # one that says what is asked stays
+                | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading):   # one that says what is asked stays
             break
         # and so does a heading that says when or how to answer ('at the start :', 'true or false :')
         if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS):
@@ -1425,12 +1500,29 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
         read.append((" ".join(words[:end + 1]), "nothing, a label"))
         words = words[end + 1:]
+    # an apology or a hedge before the question ('sorry if this is a silly question , but does ...')
+    but = next((k for k in range(1, min(len(words) - 1, 12)) if words[k - 1:k + 1] == [",", "but"]), None)
+    if but and words[but + 1] in QUESTION_OPENERS and not set(words[:but]) & (
+            OBJECT_WORDS | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS | START_WORDS | FLOATING_WORDS) and \
+            not asks_impact(words[:but]):
+        read.append((" ".join(words[:but + 1]), "nothing, a remark"))
+        words = words[but + 1:]
     out, k = [], 0
     while k < len(words):
-        close = next((j for j in range(k + 1, min(k + 6, len(words))) if words[j] == ")"), None) \
+        close = next((j for j in range(k + 1, min(k + 10, len(words))) if words[j] == ")"), None) \
             if words[k] == "(" and out and out[-1] in OBJECT_WORDS else None
-        if close and close > k + 1 and ASIDE_WORDS.issuperset(words[k + 1:close]):
+        # ... or the vehicle named again in other words ('the blue suv ( the big car on the left )')
+        if close and close > k + 1 and (ASIDE_WORDS.issuperset(words[k + 1:close]) or words[k + 1] in DETERMINERS
+                                        and RENAMING.issuperset(words[k + 1:close]) and _coloured_before(out, len(out))
+                                        and set(words[k + 1:close]) & set(COLOR_NAMES) <= set(out[-4:])):
             read.append((" ".join(words[k:close + 1]), "nothing, an aside"))
+            k = close + 1
+            continue
+        # ... or the start said again ('at the outset ( frame 0 )')
+        close = words.index(")", k) if words[k] == "(" and ")" in words[k:k + 5] else None
+        if close and words[k + 1:close] in (*TIME_ZERO, ["the", "start"], ["at", "the", "start"]) and \
+                START_WORDS & set(out):
+            read.append((" ".join(words[k:close + 1]), "nothing, the start said again"))
             k = close + 1
             continue
         out.append(words[k])
@@ -1470,6 +1562,11 @@ STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a"
                  ("not", "at", "all"), ("not", "even", "a", "bit"))
 
 
+RENAMING = ASIDE_WORDS | OBJECT_WORDS | set(COLOR_NAMES) | {"gray", "grey"} | {
+    w for name in EVERYDAY_NAMES for w in name.split()} | {"big", "small", "little", "large", "long", "on", "in", "at",
+                                                          "near", "by", "left", "right", "front", "back", "top",
+                                                          "bottom", "side", "two", "seater", "-", "one", "far",
+                                                          "middle", "centre", "center", "of", "picture", "frame"}
 HEADING_KEPT = {"end", "ends", "finish", "after", "before", "once", "when", "while", "later", "future", "beyond",
                 "first", "last", "moment", "instant", "frame", "frames", "time", "true", "false", "yes", "no"}
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
