@@ -2048,6 +2048,9 @@ def test_a_question_typed_as_code_is_said_as_the_grammar_says_it():
     # a text with no mark of code is left as it is, and a colour is 'the' one only before a vehicle's name
     assert code_as_said("Is the bus red or blue at the start?") == ("Is the bus red or blue at the start?", ())
     assert code_as_said("is the bus red or blue at t=0?")[0] == "is the bus red or blue at the start?"
+    # a text longer than any question is left to the parser's bound on words (the patterns are not linear)
+    pasted = "red_sedan.speed " * 2000
+    assert code_as_said(pasted) == (pasted, ())
     parser = QuestionParser.load()
     parse = parser.analyse_batch(["assert blueJet.is_fast at start?"])[0]
     assert " ".join(parse.program) == \

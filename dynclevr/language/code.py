@@ -29,6 +29,7 @@ STATES = {"is_fast": "fast", "fast": "fast", "is_slow": "slow", "slow": "slow", 
           "is_accelerating": "accelerating", "accelerating": "accelerating"}
 HAS = {**dict.fromkeys(SPEED_NAMES, "speed"), "v0": "speed at the start", **dict.fromkeys(DIRECTION_NAMES, "direction"),
        "color": "colour", "colour": "colour", "type": "type"}
+MAX_CHARS = 1000
 _TIME = r"(?:\s*(?:@|at)?\s*t\s*=\s*(?:0|zero|start)\b|\s*@\s*start\b|\s+at\s+start\b)"
 _VEHICLE = r"(?:the )?((?:" + _COLOURS + r") [a-z ]*?)"   # a vehicle's name, as `_names` leaves it
 _PAIR = r"the (?:" + _COLOURS + r") [^,:?.=>]+? and the (?:" + _COLOURS + r") [^,:?.=>]+? collide\b"   # `_calls`'
@@ -147,9 +148,11 @@ def _selected(text: str) -> str:
 def code_as_said(text: str) -> tuple[str, tuple[tuple[str, str], ...]]:
     """A question typed as code said as the grammar says it, with what was read so; the text as it is and () where
     it shows no mark of code."""
-    if not isinstance(text, str) or not _CODE.search(text):
+    # (a text longer than any question is left to the parser's own bound on words: these patterns are not linear)
+    if not isinstance(text, str) or len(text) > MAX_CHARS or not _CODE.search(text):
         return text, ()
-    said = re.sub(r"^\s*(?://+|#+)\s*", "", text)                                  # a comment's mark before it
+    said = re.sub(r"\s+", " ", text)
+    said = re.sub(r"^\s*(?://+|#+)\s*", "", said)                                  # a comment's mark before it
     said = re.sub(r"(?<=[?.!])\s*(?://|#).*$|\s+(?://|#)\s*[a-z ]*$", "", said)    # ... and a comment after it
     said = re.sub(r"(?:->|=>)\s*(?:bool|boolean)\b\s*\??", "?", said)
     said = re.sub(r"(?:->|=>)\s*\{\s*(\w+)\s*,\s*(\w+)\s*,\s*(\w+)\s*\}", r": \1, \2 or \3", said)

@@ -29,5 +29,7 @@ def tokenize(text: str) -> list[str]:
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
     text = _MENTION.sub(" ", text)
-    text = re.sub(r"\s*\bquestion mark\s*$", "?", text)   # dictated
+    said = text.rstrip()
+    if said.endswith(" question mark") or said == "question mark":   # dictated
+        text = said[:-len("question mark")].rstrip() + "?"
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]
