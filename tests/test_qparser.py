@@ -2136,3 +2136,10 @@ def test_a_heading_an_apology_a_vehicle_named_again_a_claim_and_a_wondered_quest
         tokenize("when the brown suv and the cyan bus collide , was the brown suv going slower than the cyan bus")
     assert tokenize("will the gray chopper collide with something question mark") == \
         tokenize("will the gray chopper collide with something?")
+
+
+def test_a_question_read_whole_with_its_context_asks_as_its_last_sentence_asks():
+    # the hand-written set's one wrong reading: the decoder read the context's plane and asked whether it floats
+    assert_refused(QuestionParser.load(), {
+        "one of the planes looks like its floating up in the air at the start what color is it": "color",
+        "one of the planes is floating up in the air at the start. what color is it?": "color"})

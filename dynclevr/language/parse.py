@@ -3532,6 +3532,15 @@ def form_unasked(words: list[str], program: list[str]) -> str:
     grammar's yes/no question, and so is 'what would happen if ...'."""
     if OPS[operation(program[-1])].output is not bool:
         return ""
+    # a question after its context, read whole ('One of the planes is floating ... . What color is it?'), asks as its
+    # last sentence asks too, or where speech without stops has its question ('... at the start what color is it')
+    spans = _sentence_spans(words)
+    run_on = _run_on_question(words) if len(spans) == 1 else None
+    asked = words[spans[-1][0]:] if len(spans) > 1 and words[-1] == "?" else words[run_on:] if run_on else None
+    return _form_unasked(words, program) or (_form_unasked(asked, program) if asked else "")
+
+
+def _form_unasked(words: list[str], program: list[str]) -> str:
     head = _head(words)
     if any(head[:len(i)] == i for i in ASKING_FOR) and not {"whether", "if"} & set(head):
         return f"the question asks for something ('{head[0]}'), but its nearest reading asks yes or no"
