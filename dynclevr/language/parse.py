@@ -944,8 +944,6 @@ def _thing_first(sentence: list[str], known) -> bool:
         and said[2] != "of"   # 'the top of the frame' is a place
 
 
-BE = {"is", "was", "are", "were"}
-ECHO_AUXILIARIES = BE | {"do", "does", "did", "will", "would", "can", "could"}
 ECHO_CLOSERS = {"tho", "though", "really", "actually", "then", "now", "?", "!"} | CHAT
 
 
@@ -953,8 +951,9 @@ def _echoed(question: list[str], said: list[str]) -> list[str] | None:
     """A question that only echoes the statement before it, asked of it ('the cyan chopper and the gray wagon crash
     after the clip is over . will they tho ?' -> 'will the cyan chopper and the gray wagon crash after the clip is
     over ?', 'the red car is fast . is it ?'); None where it does not."""
+    be, others = COPULAS - {"s", "'"}, {"do", "does", "did", "will", "would", "can", "could"}
     asked = [w for w in question if w not in ECHO_CLOSERS]
-    if len(asked) != 2 or asked[0] not in ECHO_AUXILIARIES or asked[1] not in ("it", "they", "he", "she"):
+    if len(asked) != 2 or asked[0] not in be | others or asked[1] not in ("it", "they", "he", "she"):
         return None
     said = said[said.index(":") + 1:] if ":" in said else said
     said = said[:-1] if said[-1:] and said[-1] in SENTENCE_ENDS else said
@@ -962,9 +961,9 @@ def _echoed(question: list[str], said: list[str]) -> list[str] | None:
     if subject is None or (asked[1] == "they") != (len(subject[1]) == 2) or not said[subject[0]:]:
         return None
     rest = said[subject[0]:]
-    if (asked[0] in BE) != (rest[0] in BE) or rest[0] in ECHO_AUXILIARIES - BE:
+    if (asked[0] in be) != (rest[0] in be) or rest[0] in others:
         return None
-    return [asked[0], *said[:subject[0]], *rest[asked[0] in BE:], "?"]
+    return [asked[0], *said[:subject[0]], *rest[asked[0] in be:], "?"]
 
 
 CLAIMING = {"insists", "insisted", "says", "said", "thinks", "thought", "claims", "claimed", "reckons", "swears",
@@ -1324,10 +1323,6 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 
 OWNERS = {"my", "our", "your"}
 TOYS = {"toy", "toys", "model", "little"}
-# 'the big yellow school bus', 'the huge cyan airliner': a bus or a plane is big by its kind, which picks none out (a
-# size said of a car or a bike, 'the big red sedan', describes the vehicle by a size none has: refused, LOOKS)
-BIG = {"big", "huge", "giant", "large", "massive", "enormous"}
-BIG_KINDS = {"bus", "aeroplane"}
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1335,13 +1330,7 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
     words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
-    kinds = {start: ref for start, _, ref in mentions(words)}
     while k < len(words):
-        if words[k] in BIG and out[-1:] in (["the"], ["a"], ["this"], ["that"]) and k + 1 in kinds and \
-                len(kinds[k + 1]) > 1 and CATEGORY_OF.get(kinds[k + 1][-1]) in BIG_KINDS:
-            read.append((words[k], "nothing, a bus or a plane is big"))
-            k += 1
-            continue
         j = k + (words[k] in OWNERS)
         while words[j:j + 1] and words[j] in TOYS:
             j += 1

@@ -222,7 +222,7 @@ DESCRIBED_BEFORE = {
 }
 PLAIN = {"bus": "regular_bus", "car": "sedan"}   # an ordinary bus or car
 _NAME_PAIRS = {tuple(v.split("_")) for v in SUBTYPES if "_" in v}
-SIZES = {"little", "small", "big", "large", "tiny", "huge"}
+SIZES = {"little", "small", "big", "large", "tiny", "huge", "giant", "massive", "enormous"}
 DESCRIBING = SIZES | {"skinny", "thin", "long", "low", "chunky", "sleek", "old", "fashioned", "double", "two", "-",
                       "up"}
 DESCRIBED_NOUNS = {"aeroplane": "aeroplane", "jet": "aeroplane", "airliner": "aeroplane", "bus": "bus",
@@ -256,8 +256,10 @@ def described_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
         said = {t for t in said | {after[1]} if t in SUBTYPES and SUBTYPES[t][0] == category}
         named = "_".join(out[start:n + 1]) if start < n else out[n]
         # a sub-type's own name keeps it where the words only describe ('the skinny purple road bike')
-        # (but not a size alone: 'the big red sedan' describes it by a size none has; a bus or a plane is big)
-        plain = DESCRIBING - SIZES | ({"big", "large", "huge"} if category in ("bus", "aeroplane") else set())
+        # (but not a size alone: 'the big red sedan' describes it by a size none has; a bus or a plane is big by its
+        # kind, which picks none out: 'the big yellow school bus', 'the yellow big airliner')
+        plain = DESCRIBING - SIZES | (SIZES - {"little", "small", "tiny"} if category in ("bus", "aeroplane")
+                                      else set())
         said = said or ({named} if named in SUBTYPES and set(before) <= plain else set())
         if len(colours) > 1 or len(said) != 1 or not (before or after[0]):
             n += 1
