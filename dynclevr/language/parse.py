@@ -250,7 +250,8 @@ class QuestionParser:
             or what_happens(read, c.program) or attribute_unsaid(said, read, c.program)
             or collision_unread(said, c.program) or uncompared(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
-            or comparison_imagined(read, c.program) or motion_unread(said, c.program)
+            or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
+            or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
             or acceleration_unread(said, c.program)) else c
@@ -714,7 +715,7 @@ STATING = {"assume", "assuming", "consider", "think"}
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
-                    "whatif"}
+                    "whatif", "twist"}
 IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
                    "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
@@ -760,12 +761,15 @@ def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
     """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis after a statement
     closes it ('the bike seems to dodge everything... does it'), after a word or two ('well... is it') or a word
     that cannot end one ('which...') none; a point
-    after a letter ('i.e.') or between digits closes none."""
+    after a letter ('i.e.') or between digits closes none; a semicolon before a question closes one ('a plane is
+    hanging in the air ; which colour is ...')."""
     spans, start = [], 0
     for k, w in enumerate(words):
         before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
         said = [v for v in words[start:k] if v != "."]
-        if w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
+        if w == ";" and (after in QUESTION_OPENERS or after in ASKING):
+            pass
+        elif w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
                 before == "." and (len(said) < 3 or said[-1] in STATEMENT_ENDS_NOT)   # 'crash , which... is it'
                 or len(before) == 1 and before.isalpha()
                 or before.isdigit() and after[:1].isdigit()):
@@ -823,11 +827,36 @@ def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[
         return None
     if out[subject:subject + 1] and out[subject] in STATES_SAID:
         out[subject:subject] = ["had", "been"]
+    elif out[subject:subject + 1] and (done := PARTICIPLES.get(out[subject])):
+        out[subject:subject + 1] = ["had", done]   # 'the tandem starts off slowly': 'had started off slowly'
     zero = _at(out, (("t", "=", "0"), ("t", "0"), ("time", "zero"), ("t", "=", "zero")))   # 'from t=0'
     if zero:
         out[zero[0]:zero[0] + len(zero[1])] = ["the", "start"]
     change_end = _at(out[subject:], CHANGE_ENDS)
     return out[:subject + change_end[0]] + ["."] if change_end else out + ["."]
+
+
+# A condition's verb as the grammar says it imagined ('if it had started'); the decoder read 'suppose the bike starts
+# slowly' as a question about now
+PARTICIPLES = {"is": "been", "was": "been", "goes": "gone", "went": "gone", "comes": "come", "came": "come",
+               "begins": "begun", "began": "begun", "keeps": "kept", "kept": "kept", "drives": "driven",
+               "drove": "driven", "rides": "ridden", "rode": "ridden", "flies": "flown", "flew": "flown",
+               "sits": "sat", "sat": "sat", "stands": "stood", "stood": "stood", "runs": "run", "ran": "run",
+               "speeds": "sped", "sped": "sped", "stays": "stayed", "stayed": "stayed"}
+REGULAR_VERBS = ("start", "move", "travel", "float", "hover", "accelerate", "remain", "roll", "cruise", "crawl", "zoom",
+                 "race", "idle", "wait", "rest", "drift", "coast")
+PARTICIPLES.update({form: v + ("d" if v.endswith("e") else "ed") for v in REGULAR_VERBS
+                    for form in (v + "s", v + ("d" if v.endswith("e") else "ed"))})
+
+
+IMAGINED_BACK = tuple((p, d, n) for p in ("in", "within") for d in ("that", "this", "such", "the") for n in (
+    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate"))
+
+
+def _imagining_only(sentence: list[str]) -> bool:
+    """Whether a sentence says only that what follows is imagined ('What if?', 'Hypothetically...'): no question of
+    its own, however it ends."""
+    return set(sentence) - {"?", "!", ".", ",", ":", "-"} <= IMAGINED_SAID | CONDITION_LABELS | {"what", "so", "ok"}
 
 
 def _unnamed(sentence: list[str]) -> bool:
@@ -1051,13 +1080,20 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         out, read = context_as_question(words[:j] + ["."] + asked, known)
         return (out, read) if read else (words, ())
     context = [words[a:b] for a, b in spans[:asked_at]]
+    question = words[spans[asked_at][0]:spans[asked_at][1]]
     conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
                                           and not mentions(context[j - 1]))) for j, s in enumerate(context)]
-    if any(c is None and not _stated(s) and (s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or "if" in s and
-                                                                              s[s.index("if") - 1] not in WHETHER))
-           for s, c in zip(context, conditions)):
+    # 'In that world, does it ...?': where no sentence imagines, the sentence before is what is imagined
+    back = _at(question[:4], IMAGINED_BACK)
+    back = back and back[0] == 0 and not any(conditions) and back[1]
+    if back:
+        question = question[len(back) + (question[len(back):len(back) + 1] == [","]):]
+        conditions[-1] = _condition_said(context[-1], True)
+    if any(c is None and not _stated(s) and not _imagining_only(s) and (
+            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s)
+                                             or "if" in s and s[s.index("if") - 1] not in WHETHER))
+           for s, c in zip(context, conditions)) or back and not conditions[-1]:
         return words, ()
-    question = words[spans[asked_at][0]:spans[asked_at][1]]
     tail = words[spans[asked_at][1]:]
     question = _echoed(question, context[-1]) or _judged(question, context[-1]) or _wondered(question, context[-1]) \
         or question
@@ -1185,8 +1221,8 @@ AFTER_CLOSERS = {",", ".", "!", "i", "mean", "meant", "that", "is", "please", "t
 NOT_SAID = (("not",), ("instead", "of"), ("rather", "than"))
 SUBTYPE_FIRST = {v.split("_")[0]: tuple(v.split("_")) for v in SUBTYPES if "_" in v}   # 'the regular one'
 CATEGORY_OF = {**{v: c for v, (c, *_) in SUBTYPES.items()}, **{c: c for c, *_ in SUBTYPES.values()}}
-ASKED_PROPERTY = {"type": "shape", "kind": "shape", "sort": "shape", "model": "shape", "colour": "color",
-                  "color": "color"}
+SHAPE_ASKED = ("type", "kind", "sort", "shape", "model", "category", "class")   # the words that ask a vehicle's type
+ASKED_PROPERTY = {**dict.fromkeys(SHAPE_ASKED, "shape"), "colour": "color", "color": "color"}
 
 
 # colours no catalogue colour is (references.COLOUR_SHADES reads those that are one)
@@ -1593,10 +1629,12 @@ def _coloured_before(words: list[str], k: int) -> bool:
 def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'what kind of plane is ...' -> 'what type of plane is ...': the grammar asks a vehicle's kind or sort only of a
     'vehicle', its type of any noun (the decoder read 'what kind of plane is floating?' as whether it floats). With
-    the words read so, or the words as they are and ()."""
+    the words read so, or the words as they are and (). 'the category of' and 'the class of' ask it too ('identify
+    the category of the object that floats' was read as its colour)."""
     for k in range(1, len(words) - 2):
         if words[k - 1] in ASKING and words[k] in ("kind", "sort") and words[k + 1] == "of" and \
-                words[k + 2] in NAMING and words[k + 2] not in COLOR_NAMES:
+                words[k + 2] in NAMING and words[k + 2] not in COLOR_NAMES or \
+                words[k - 1] in ASKING | {"the"} and words[k] in ("category", "class") and words[k + 1] == "of":
             return words[:k] + ["type"] + words[k + 1:], ((f"{words[k]} of", "type of"),)
     return words, ()
 
@@ -2380,7 +2418,6 @@ ENGINE_WORDS = {"engine", "motor", "power", "throttle"}   # 'its engine off': no
 # heading'): a word there the parser does not know is the property asked, and no other word tells the decoder what
 # it is ('what is the mass of the jet' read as a collision partner's colour, 'how heavy is it' as its speed).
 ASKING = {"what", "which"}
-TELLING = (["tell", "me"], ["describe"], ["give", "me"])
 COPULAS = {"is", "was", "are", "were", "s", "'"}
 AUXILIARIES = COPULAS | {"does", "did", "do"}
 BARE_MENTION = {"a", "an", "any", "some", "the", "in", "this", "video", "clip", "scene", "?", "."}
@@ -2418,7 +2455,7 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             asked = rest[1]
         elif rest[1:2] and rest[1] in AUXILIARIES or rest[1:2] == ["of"] and rest[0] in PARTS:
             asked = rest[0]   # 'what colour is', 'what part of the bus'
-    for opener in TELLING:
+    for opener in ASKING_FOR:
         if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
                 head[len(opener) + 2:len(opener) + 3] == ["of"]:
             asked = head[len(opener) + 1]
@@ -3027,6 +3064,33 @@ def comparison_imagined(words: list[str], program: list[str]) -> str:
             "static, slow or fast, or accelerating")
 
 
+# The words that say which way two speeds compare: a comparative ('faster', 'at a lower speed', 'a greater velocity'),
+# or 'more' / 'less' before a word of pace ('less quickly', 'more speed')
+COMPARED_SAID = {**dict.fromkeys(("faster", "quicker", "speedier", "swifter", "higher", "greater", "superior",
+                                  "outpaces", "outpace", "outpacing", "outruns", "outrun", "outrunning"), 1),
+                 **dict.fromkeys(("slower", "lower", "lesser", "inferior"), -1)}
+PACE_SIGN = {**dict.fromkeys(("fast", "quick", "quickly", "rapid", "rapidly", "speedy", "speedily", "swiftly"), 1),
+             **dict.fromkeys(("slow", "slowly"), -1), **dict.fromkeys(("speed", "velocity", "pace"), 1)}
+
+
+def comparison_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading comparing two speeds is not the question's ('' when it is): no word says which way they compare
+    ('is the chopper's speed inferior to the minivan's?', 'is the SUV the slowpoke?' were read as faster; the decoder
+    guesses a side when the comparison is said in words it does not know), or every word that says it says the other
+    way."""
+    if not program or operation(program[-1]) not in SPEED_COMPARISONS:
+        return ""
+    asked = 1 if operation(program[-1]) == "faster_velocity" else -1
+    signs = [COMPARED_SAID[w] for w in words if w in COMPARED_SAID] + [
+        PACE_SIGN[b] * (1 if a == "more" else -1) for a, b in zip(words, words[1:]) if a in ("more", "less")
+        and b in PACE_SIGN]
+    if asked in signs:
+        return ""
+    return ("the question compares two speeds in words the parser does not read as faster or slower" if not signs else
+            "the question compares the speeds the other way round than its nearest reading: ask whether one is "
+            "faster (or slower) than the other")
+
+
 # a cause asked ('did it hit the bus because it was fast?' was read as whether it was fast)
 CAUSES = {"because", "due", "reason", "reasons"}
 CAUSING = {"made", "makes", "caused", "causes", "cause", "led", "leads", "lead"}   # 'what made it turn?'
@@ -3399,7 +3463,17 @@ FLOATING_WORDS = {"floating", "float", "floats", "floated", "air", "airborne", "
 def floating_unsaid(words: list[str], program: list[str]) -> str:
     """Why a reading of floating is not the question's ('' when it is): the question, as read, says nothing of it
     ('if the bus had stayed still, ...' was read as had it stayed in the air)."""
-    if not FLOATING_OPERATIONS.intersection(map(operation, program)) or FLOATING_WORDS.intersection(words):
+    if not FLOATING_OPERATIONS.intersection(map(operation, program)):
+        return ""
+    # a ground vehicle said 'flying' goes fast ('the dirtbike comes flying out of the gate' was read as had it
+    # floated); the vehicle floating is the program's first
+    first = program[:program.index("unique")] if "unique" in program else []
+    grounded = next((t[len("filter_attributes["):-1] for t in first if t.startswith("filter_attributes[")
+                     and CATEGORY_OF.get(t[len("filter_attributes["):-1], "aeroplane") != "aeroplane"), None)
+    if grounded and FLOATING_WORDS.intersection(words) == {"flying"}:
+        return (f"the question says the {grounded.replace('_', ' ')} is 'flying', which a vehicle on the ground is "
+                "only as fast: ask whether it is fast, or floating")
+    if FLOATING_WORDS.intersection(words):
         return ""
     return ("the question says nothing of floating, but its nearest reading asks about it: ask whether the vehicle "
             "is floating, or static, slow or fast")
@@ -3466,7 +3540,7 @@ def motion_unfiltered(words: list[str], program: list[str]) -> str:
 ASKED_QUERIES = {**{w: "query_moving_velocity" for w in ("speed", "velocity")},
                  **{w: "query_moving_direction" for w in ("direction", "heading")},
                  **{w: "query_attributes[color]" for w in ("color", "colour")},
-                 **{w: "query_attributes[shape]" for w in ("type", "kind", "sort", "shape", "model")}}
+                 **{w: "query_attributes[shape]" for w in SHAPE_ASKED}}
 PARTNER_SAID = {"that", "which", "who"}
 # the grammar's words for accelerating: 'how quickly is it speeding up?' asks how much it accelerates
 ACCELERATION_SAID = tuple(tokenize(phrase) for key in ("ACCELERATING", "ACCELERATE") for pool in ("seen", "heldout")
