@@ -340,6 +340,10 @@ class QuestionParser:
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])) or \
                 said[:1] == ["count"] or any(said[k:k + 3] == ["the", "number", "of"] for k in range(len(said))):
             return [], "the question asks for a count ('how many'), which no question here answers", read_as, said
+        lasting = next((w for w in said if w in DURATIONS), None)
+        if lasting:
+            return [], f"the question asks how long something lasts ('{lasting}'), which no question here answers", \
+                read_as, said
         counted = next((" ".join(said[k:k + n]) for k, a in enumerate(said) for n in (2, 3)
                         if (a.isdigit() or a in NUMBERS) and said[k + n - 1:k + n] and said[k + n - 1] in PLURALS
                         and (n == 2 or said[k + 1] in ("other", "more", "different", "separate"))), None)
@@ -487,6 +491,7 @@ class QuestionParser:
 
 
 # How often a thing happens ('twice', 'more than once', 'three times'): a count, which no program makes
+DURATIONS = {"duration", "durations", "lasts", "lasted", "lasting"}   # 'the duration for which it stays parked'
 REPEATS = (["twice"], ["thrice"], ["again"], ["more", "than", "once"], ["repeatedly"], ["multiple", "times"],
            ["several", "times"], ["many", "times"], ["at", "most"], ["only", "once"], ["just", "once"],
            *(["exactly", n] for n in ("once", "one", "two", "2", "1")))
@@ -1136,7 +1141,10 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         if place is not None:
             at = PLACES_SAID[place]
             others = [r for r in fullest if not _named(r, mentions(out[:k] + out[k + len(place):]))]
-            meant = fullest[at] if at is not None and len(fullest) == 2 else others[0] if len(others) == 1 else None
+            # 'the first' and 'the second' of two; 'the other' of the one not named ('the second vehicle it hits'
+            # after one vehicle is its second partner)
+            meant = (fullest[at] if len(fullest) == 2 else None) if at is not None else \
+                others[0] if len(others) == 1 else None
             if meant is None:
                 return words, ()
             read.append((" ".join(place), " ".join(_said(meant))))
@@ -2487,7 +2495,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     head = _head(words)
     asked, what = _asked(words)
     as_said, what_said = _asked(said)
-    if {asked, as_said} & TIME_ASKED:
+    labelled, _ = _asked(said[len(said) - said[::-1].index(":"):]) if ":" in said else (None, "")
+    if {asked, as_said, labelled} & TIME_ASKED:   # 'Replay time: at what second does ...'
         return ("the question asks when something happens, which no question here asks (they ask about the start, "
                 "a collision or what comes after the video)")
     why = ("which no question here asks" if {asked, as_said} & SPATIAL else "a word the parser does not know"
@@ -2548,6 +2557,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if any(a in TAKING and b == "off" for a, b in zip(said, said[1:])):
         return ("the question asks whether a plane takes off, which no question here asks (they ask whether it is "
                 "floating at the start)")
+    facing = next((w for w in said if w in FACING), None)
+    if facing and not (WHERE_MOTION | {"sets", "starts", "started", "moving"}) & set(said):
+        return (f"the question asks which way a vehicle faces ('{facing}'), which no question here asks (they ask "
+                "which way it moves)")
     pose = next((w for w in said if w in POSE), None) or next(
         (" ".join(said[k:k + 2]) for k, w in enumerate(said) if w in KNOCKING and "over" in said[k + 1:k + 6]), None)
     if pose:
@@ -2800,6 +2813,8 @@ POSE = {"upright", "upside", "overturned", "overturn", "overturns", "toppled", "
         "tips", "capsized", "flipped", "flip", "flips", "flipping", "tilted", "tilting", "leaning"}
 # the ground is no object: 'does the plane hit the ground?', 'touch down' (a landing) read as a collision
 GROUND = {"ground", "floor"}
+# which way a vehicle faces, said without its motion ('which direction is the car facing at the end?')
+FACING = {"facing", "faces", "pointing", "pointed", "points", "oriented", "orientated", "orientation"}
 KNOCKING = {"knock", "knocks", "knocked", "knocking", "keel", "keels", "keeled"}   # '... over': a pose
 LANDING = {"land", "lands", "landed", "landing"}   # said of a plane: 'is it about to land?' (a landing)
 LANES = {"lane", "lanes"}   # 'does it change lanes?': a turn
