@@ -580,6 +580,12 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     if n:
         read.append((" ".join(out[:n]), "nothing, a number"))
         out = out[n:]
+    # an instruction said first ('Answer yes or no: is the jet ...?', 'Yes or no - does ...')
+    lead = next((i for i in INSTRUCTIONS if i[0] in ("answer", "explain", "just", "yes") and tuple(out[:len(i)]) == i
+                 and out[len(i):len(i) + 1] in ([":"], [","], ["."], ["-"]) and out[len(i) + 1:]), None)
+    if lead:
+        read.append((" ".join(out[:len(lead) + 1]), "nothing, an instruction"))
+        out = out[len(lead) + 1:]
     while len(out) > 3 and (out[-1] in ("]", ")") and out[-2] in MARKS and out[-3].isdigit() and out[-4] in ("[", "(")):
         read.append((" ".join(out[-4:]), "nothing, the marks"))
         out = out[:-4]
@@ -1365,8 +1371,8 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return words, ()
 
 
-OWNERS = {"my", "our", "your"}
-TOYS = {"toy", "toys", "model", "little"}
+OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me little bus' as said in Ireland
+TOYS = {"toy", "toys", "model", "little", "wee"}
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1386,7 +1392,7 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             while words[k:k + 1] and words[k] in NAMING:
                 out.append(words[k])
                 k += 1
-            if words[k:k + 1] and words[k] in TOYS - {"little"}:
+            if words[k:k + 1] and words[k] in TOYS - {"little", "wee"}:
                 read.append((words[k], "nothing"))
                 k += 1
             continue
@@ -2301,8 +2307,17 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 # The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
-END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"])
+END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
+               ["given", "that"], ["now", "that"])
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation"}
+# a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
+STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut", "off"], ["cuts", "off"],
+                *([v, p] for v in ("is", "was", "gets", "got") for p in ("stopped", "halted", "paused", "frozen", "cut")),
+                *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
+                *(["'", "s", p] for p in ("stopped", "halted", "paused", "frozen")))
+PART_WAY = (["partway", "through"], ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
+            ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
+            ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
                   ["has", "stopped"], ["comes", "to", "an", "end"],
@@ -2321,9 +2336,11 @@ def _video_end(words: list[str]) -> tuple[int, int] | None:
         j = i + len(opener) + (words[i + len(opener):i + len(opener) + 1] in (["the"], ["this"]))
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
             continue
-        end = next((e for e in END_PREDICATES if words[j + 1:j + 1 + len(e)] == e), None)
+        end = next((e for e in END_PREDICATES + STOPPED_SAID if words[j + 1:j + 1 + len(e)] == e), None)
         if end:
-            return i, j + 1 + len(end)
+            k = j + 1 + len(end)
+            part = next((p for p in PART_WAY if words[k:k + len(p)] == p), [])
+            return i, k + len(part)
     return None
 
 

@@ -39,7 +39,9 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
                   "lorry": "truck", "van": "minivan", "pushbike": "bicycle",
                   "jetliner": "airliner", "warplane": "fighter", "war plane": "fighter",
-                  "chopper bike": "chopper", "cruiser bike": "cruiser",
+                  "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
+                  "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
+                  "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus",
