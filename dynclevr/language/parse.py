@@ -510,7 +510,7 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
                  "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
-                 "evening"} | CHAT
+                 "evening", "sure"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -531,7 +531,9 @@ FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "lite
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
-                         "thanks", "cheers", "tho"} | CHAT
+                         "thanks", "cheers", "tho",
+                         # and the particles regional Englishes close with ('they collide or not, lah?', '..., abi?')
+                         "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah"} | CHAT
 
 
 def _says_nothing(tail: list[str]) -> bool:
@@ -1968,8 +1970,10 @@ IDIOMS = phrase_table({
     **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
     ("manner", "of", "vehicle"): ("kind", "of", "vehicle"),
     # a category by an older name of two words (one word: synonyms.txt)
-    ("motor", "car"): ("car",), ("motor", "cycle"): ("motorbike",), ("push", "bike"): ("bicycle",),
-    ("flying", "machine"): ("aeroplane",),
+    ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
+    ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
+    # acceleration said as a noun ('what kind of vehicle is undergoing acceleration at the start?')
+    **{(verb, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing", "under")},
     # on a screen is in view ('when it first shows up on screen')
     **{("on", *the, "screen"): ("in", "view") for the in ((), ("the",))},
     **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
@@ -2144,10 +2148,17 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 
 
 def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'at t = 0' -> 'at the start'; 'in the first frame in which it is visible' -> 'when it first appears'. With
-    the words read so, or the words as they are and ()."""
+    """'at t = 0' -> 'at the start'; 'in the first frame in which it is visible' -> 'when it first appears';
+    'during the opening moments' -> 'in the opening moments' (a time 'during' the video is refused as another than
+    the start). With the words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
+        if words[k] == "during" and words[k + 1:k + 2] == ["the"] and words[k + 2:k + 3] and \
+                words[k + 2] in START_ADJECTIVES | {"early", "earliest", "very"}:
+            out.append("in")
+            read.append(("during", "in"))
+            k += 1
+            continue
         zero = next((z for z in TIME_ZERO if words[k:k + len(z)] == z), None)
         if zero and out[-1:] in (["at"], ["from"], ["in"]):
             out += ["the", "start"]

@@ -45,7 +45,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus",
-                  **{f"{t.split('_')[0]} bicycle": t.replace("_", " ")
+                  **{f"{t.split('_')[0]} {noun}": t.replace("_", " ") for noun in ("bicycle", "cycle")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a
 # margin (the second nearest at least 1.3 times as far, and within 45), and of that colour's hue by common usage.
