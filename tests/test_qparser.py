@@ -2169,3 +2169,42 @@ def test_a_category_a_question_after_a_semicolon_and_a_condition_labelled_or_poi
     # a ground vehicle 'flying' out of the gate goes fast; it does not float
     assert_refused(parser, {"Run it back with a twist: the blue dirtbike comes flying out of the gate fast from the "
                             "opening frame. Does it collide with the brown bus then?": "flying"})
+
+
+def test_regional_names_an_instruction_first_a_video_stopped_part_way_and_choices_in_brackets():
+    parser = QuestionParser.load()
+    questions = {
+        "Does the brown ute end up crashing into the blue sedan at all?":
+            "Events Objects filter_attributes[brown] filter_attributes[truck] unique filter_collision "
+            "Objects filter_attributes[blue] filter_attributes[sedan] unique filter_collision exist",
+        "What kind of vehicle did the yellow cycle collide with?":
+            "Events Objects filter_attributes[yellow] filter_attributes[bicycle] unique get_all_col_partners unique "
+            "query_attributes[shape]",
+        "Would the wee blue scooter be standing still at the very start at all?":
+            "Objects filter_attributes[blue] filter_attributes[scooter] unique start is_static",
+        "Answer yes or no: is the private jet expected to collide with anything once the video has been stopped?":
+            "futureEvents Objects filter_attributes[jet] unique filter_collision exist",
+        "Given that the video is halted partway through, will the blue school bus subsequently collide with the "
+        "green sedan?": "futureEvents Objects filter_attributes[blue] filter_attributes[school_bus] unique "
+                        "filter_collision Objects filter_attributes[green] filter_attributes[sedan] unique "
+                        "filter_collision exist",
+        "In which direction is the cyan city bike heading during the opening moments of the video?":
+            "Objects filter_attributes[cyan] filter_attributes[utility_bike] unique start query_moving_direction",
+        "Identify the speed class (static, slow, or fast) of the green SUV at the moment it makes contact with the "
+        "yellow double-decker.": "Objects filter_attributes[green] filter_attributes[suv] unique Events Objects "
+                                 "filter_attributes[green] filter_attributes[suv] unique filter_collision Objects "
+                                 "filter_attributes[yellow] filter_attributes[double_bus] unique filter_collision "
+                                 "unique get_frame query_moving_velocity",
+        "Imagine the green one never budges, stuck stock-still from the first frame. Does it end up colliding with "
+        "the yellow one?": "Objects filter_attributes[green] unique Counterfactual_static Objects "
+                           "filter_attributes[green] unique filter_collision Objects filter_attributes[yellow] unique "
+                           "filter_collision exist",
+        "Sure, was the airliner going slower than the brown sedan when the pair of them bumped into each other?":
+            "Objects filter_attributes[airliner] unique Objects filter_attributes[brown] filter_attributes[sedan] "
+            "unique Events Objects filter_attributes[airliner] unique filter_collision Objects "
+            "filter_attributes[brown] filter_attributes[sedan] unique filter_collision unique get_frame "
+            "slower_velocity"}
+    for (text, program), read in zip(questions.items(), parser.parse_batch(list(questions))):
+        assert read is not None and " ".join(read) == program, text
+    # a factual 'never moves' stays a negation; only a condition reads it as staying still
+    assert parser.parse("Does the green car never move at the start?") is None

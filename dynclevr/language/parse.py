@@ -838,10 +838,13 @@ def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[
         out.index("they") + 1 if "they" in out else None
     if subject is None:
         return None
+    subject += out[subject:subject + 1] == ["one"]   # 'the green one'
     if out[subject:subject + 1] and out[subject] in STATES_SAID:
         out[subject:subject] = ["had", "been"]
     elif out[subject:subject + 1] and (done := PARTICIPLES.get(out[subject])):
         out[subject:subject + 1] = ["had", done]   # 'the tandem starts off slowly': 'had started off slowly'
+    elif out[subject:subject + 1] == ["never"] and out[subject + 1:subject + 2] and out[subject + 1] in UNMOVED:
+        out[subject:subject + 2] = ["had", "stayed", "still"]   # 'imagine the green one never budges'
     zero = _at(out, (("t", "=", "0"), ("t", "0"), ("time", "zero"), ("t", "=", "zero")))   # 'from t=0'
     if zero:
         out[zero[0]:zero[0] + len(zero[1])] = ["the", "start"]
@@ -856,6 +859,7 @@ PARTICIPLES = {"is": "been", "was": "been", "goes": "gone", "went": "gone", "com
                "drove": "driven", "rides": "ridden", "rode": "ridden", "flies": "flown", "flew": "flown",
                "sits": "sat", "sat": "sat", "stands": "stood", "stood": "stood", "runs": "run", "ran": "run",
                "speeds": "sped", "sped": "sped", "stays": "stayed", "stayed": "stayed"}
+UNMOVED = {"budges", "budged", "budge", "moves", "moved", "move"}   # after 'never'
 REGULAR_VERBS = ("start", "move", "travel", "float", "hover", "accelerate", "remain", "roll", "cruise", "crawl", "zoom",
                  "race", "idle", "wait", "rest", "drift", "coast")
 PARTICIPLES.update({form: v + ("d" if v.endswith("e") else "ed") for v in REGULAR_VERBS
@@ -1463,6 +1467,13 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
                 out.insert(k, "and")
                 read.append((f"{out[k - 1]} {out[k + 1]}", f"{out[k - 1]} and {out[k + 1]}"))
             k += 1
+    # choices in brackets inside the question ('identify the speed (static, slow, or fast) of the suv when ...')
+    a = out.index("(") if "(" in out else None
+    b = out.index(")", a) if a is not None and ")" in out[a:] else None
+    if b is not None and out[b + 1:] not in ([], ["?"], ["."]) and set(out[a + 1:b]) <= SLASHED | {",", "or", "/"} \
+            and len(set(out[a + 1:b]) & SLASHED) >= 2:
+        read.append((" ".join(out[a:b + 1]), "nothing, the choices"))
+        out = out[:a] + out[b + 1:]
     if "(" in out and ")" in out[out.index("("):] and any(w == "/" for w, _ in read):
         a = out.index("(")
         b = out.index(")", a)
@@ -1972,6 +1983,7 @@ IDIOMS = phrase_table({
     # a category by an older name of two words (one word: synonyms.txt)
     ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
     ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
+    ("stock", "-", "still"): ("still",), ("stock", "still"): ("still",),
     # acceleration said as a noun ('what kind of vehicle is undergoing acceleration at the start?')
     **{(verb, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing", "under")},
     # on a screen is in view ('when it first shows up on screen')
@@ -3884,7 +3896,7 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
-             for very in ((), ("very",)) for e in ("end", "finish", "close")] + \
+             for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
     [[p, "the", a, *few, f] for p in ("in", "at", "during") for a in ("last", "final", "closing")
      for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments")]
