@@ -2208,3 +2208,33 @@ def test_regional_names_an_instruction_first_a_video_stopped_part_way_and_choice
         assert read is not None and " ".join(read) == program, text
     # a factual 'never moves' stays a negation; only a condition reads it as staying still
     assert parser.parse("Does the green car never move at the start?") is None
+
+
+def test_a_physics_class_a_simulation_a_scenario_and_a_colour_in_a_clause_are_read():
+    parser = QuestionParser.load()
+    questions = {
+        "What type of vehicle is at rest under the initial conditions?":
+            "Objects start filter_static unique query_attributes[shape]",
+        "At t = 0, is the purple biplane not under the influence of gravity?":
+            "Objects filter_attributes[purple] filter_attributes[biplane] unique start is_floating",
+        "Intervention: set the gray chopper's initial speed to slow. Does the gray chopper collide with the blue SUV?":
+            "Objects filter_attributes[gray] filter_attributes[chopper] unique Counterfactual_moving_slow Objects "
+            "filter_attributes[gray] filter_attributes[chopper] unique filter_collision Objects "
+            "filter_attributes[blue] filter_attributes[suv] unique filter_collision exist",
+        "Which colour is the actor in the fast speed bin at t0?":
+            "Objects start filter_moving_velocity[fast] unique query_attributes[color]",
+        "In the predicted rollout after the cutoff, do the cyan SUV and the gray city bus collide?":
+            "futureEvents Objects filter_attributes[cyan] filter_attributes[suv] unique filter_collision Objects "
+            "filter_attributes[gray] filter_attributes[regular_bus] unique filter_collision exist",
+        "Given the clip, when it starts, then how fast is the red sedan moving: static, slow or fast?":
+            "Objects filter_attributes[red] filter_attributes[sedan] unique start query_moving_velocity",
+        "Consider the bicycle, which is brown. Is it being ridden slowly in the opening moments?":
+            "Objects filter_attributes[brown] filter_attributes[bicycle] unique start is_moving_velocity[slow]",
+        "With what speed (static, slow, or fast) does the yellow fighter jet enter the frame?":
+            "Objects filter_attributes[yellow] filter_attributes[fighter] unique Objects filter_attributes[yellow] "
+            "filter_attributes[fighter] unique come_in_frame query_moving_velocity"}
+    for (text, program), read in zip(questions.items(), parser.parse_batch(list(questions))):
+        assert read is not None and " ".join(read) == program, text
+    assert_refused(parser, {"Is the red biplane still airborne at the final timestep?": "end",
+                            '{"target": "grey airliner", "ask": "how high above the ground is it?"}': "high",
+                            "Given the clip, when it ends, then how fast is the red sedan moving?": "end"})

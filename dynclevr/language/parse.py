@@ -278,8 +278,12 @@ class QuestionParser:
         shorthand = coded + tuple(held.items()) + printed + shorthand + heard + sounded
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
-        named += looked
+        words, clause = colour_clause_as_named(words)
+        named += looked + clause
         words, corrected = corrections_dropped(words)
+        words, setting = settings_as_imagined(words)
+        words, scenario = scenario_as_asked(words)
+        corrected += setting + scenario
         words, context = context_as_question(words, self.known)
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
@@ -389,7 +393,8 @@ class QuestionParser:
         if alike:
             return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or said[:1] == ["explain"] or \
+        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or \
+                said[:1] == ["explain"] and said[1:2] not in (["whether"], ["if"]) or \
                 any(a == "what" and b in CAUSING for a, b in zip(said, said[1:])):
             return [], "the question asks why, which no question here answers", read_as, said
         unasked = unknown_property(words, self.known, said)
@@ -398,8 +403,11 @@ class QuestionParser:
         # 'how hard does it hit the bus?' was read as whether it does ('hard' fixed to 'had'); a slip ('how fsat')
         # reads as a speed
         manner = next((b for a, b in zip(said, said[1:]) if a == "how" and b not in HOW_ASKED | AUXILIARIES
-                       | SPEED_CLASS_WORDS), None)
-        if manner and not any(a == "how" and b in SPEED_CLASS_WORDS for a, b in zip(words, words[1:])):
+                       | SPEED_CLASS_WORDS), None) or next(   # 'how high above the ground is it?': a height
+            (b for a, b, c in zip(said, said[1:], said[2:] + [""]) if a == "how" and b in ("high", "low", "tall")
+             and c not in SPEED_NOUNS), None)
+        if manner and (manner in ("high", "low", "tall") or not any(a == "how" and b in SPEED_CLASS_WORDS
+                                                                    for a, b in zip(words, words[1:]))):
             return [], (f"the question asks how '{manner}', which no question here asks (they ask how fast a vehicle "
                         "moves, which way, its colour or type, and about its collisions)"), read_as, said
         unknown = [w for w in words if w not in self.known]
@@ -728,7 +736,7 @@ STATING = {"assume", "assuming", "consider", "think"}
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
-                    "whatif", "twist"}
+                    "whatif", "twist", "cf"}
 IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
                    "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
@@ -1381,6 +1389,93 @@ OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me 
 TOYS = {"toy", "toys", "model", "little", "wee"}
 
 
+def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the bicycle , which is brown ,' -> 'the brown bicycle'; 'the biplane that is blue' -> 'the blue biplane': a
+    colour said in a clause after its vehicle (the decoder read the vehicle without it). With the words read so,
+    or the words as they are and ()."""
+    out, read, k = list(words), [], 0
+    while k < len(out):
+        j = k
+        while j < len(out) and out[j] in NAMING and out[j] not in COLOR_NAMES:
+            j += 1
+        clause = j + (out[j:j + 1] == [","])
+        if j > k and (k == 0 or out[k - 1] not in COLOR_NAMES) and out[clause:clause + 1] and \
+                out[clause] in ("which", "that", "who") and out[clause + 1:clause + 2] in (["is"], ["was"]) and \
+                out[clause + 2:clause + 3] and out[clause + 2] in COLOR_NAMES:
+            end = clause + 3 + (out[clause + 3:clause + 4] == [","] and out[j:j + 1] == [","])
+            read.append((" ".join(out[k:end]), " ".join([out[clause + 2], *out[k:j]])))
+            out[k:end] = [out[clause + 2], *out[k:j]]
+            k += j - k + 1
+        else:
+            k = max(j, k + 1)
+    return (out, tuple(read)) if read else (words, ())
+
+
+SET_VERBS = {"set", "sets", "setting", "initialise", "initialised", "initialize", "initialized", "reset", "change",
+             "changed", "changing"}
+SET_VALUES = {"static": "static", "stationary": "static", "zero": "static", "0": "static", "slow": "slow",
+              "low": "slow", "fast": "fast", "high": "fast"}
+SPEED_NOUNS = {"speed", "velocity", "pace"}
+
+
+def settings_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """An intervention said as a setting ('set the gray chopper's initial speed to slow', 'the sedan initialised in
+    the fast speed bin') as the grammar's condition: 'the gray chopper had been slow from the start'. With the words
+    read so, or the words as they are and ()."""
+    for k, w in enumerate(words):
+        if w not in SET_VERBS:
+            continue
+        a = k + 1 + (words[k + 1:k + 2] == ["the"])
+        b = a
+        while b < len(words) and words[b] in NAMING:
+            b += 1
+        c = b + 2 * (words[b:b + 2] == ["'", "s"])
+        c += words[c:c + 1] and words[c] in ("initial", "starting", "start")
+        value = None
+        if b > a and words[c:c + 1] and words[c] in SPEED_NOUNS and words[c + 1:c + 2] == ["to"]:
+            value, end = words[c + 2:c + 3], c + 3
+        elif k and words[k - 1] in NAMING and words[k + 1:k + 2] in (["to"], ["in"], ["into"], ["as"]):
+            # 'the brown sedan initialised in the fast speed bin'
+            b = k - (words[k - 1:k] == ["was"])
+            a = b
+            while a and words[a - 1] in NAMING:
+                a -= 1
+            k = a - (a and words[a - 1] == "the")
+            value = words[b + 2 + (words[b + 2:b + 3] == ["the"]):][:1]
+            end = b + 3 + (words[b + 2:b + 3] == ["the"])
+        elif b > a and c == b and words[b:b + 1] == ["to"]:   # 'set the sedan to slow'
+            value, end = words[b + 1:b + 2], b + 2
+        if not value or value[0] not in SET_VALUES:
+            continue
+        while words[end:end + 1] and words[end] in SPEED_NOUNS | {"bin", "bucket", "class", "category", "speeds"}:
+            end += 1
+        said = ["the", *words[a:b], "had", "been", SET_VALUES[value[0]], "from", "the", "start"]
+        end += 3 * (words[end:end + 3] == said[-3:])
+        k -= bool(k) and words[k - 1] in ("we", "you", "i", "they")   # 'if we set ...'
+        return words[:k] + said + words[end:], ((" ".join(words[k:end]), " ".join(said)),)
+    return words, ()
+
+
+def scenario_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A tester's scenario ('given the clip , when it starts , then how fast is the red sedan ?') as the question it
+    asks ('at the start , how fast is the red sedan ?'): the clip given says nothing, 'when it starts' (or ends) is
+    the video's time, and 'then' opens the question. With the words read so, or the words as they are and ()."""
+    if words[:2] != ["given", "the"] or words[2:3] and words[2] not in FILM_WORDS or words[3:4] != [","]:
+        return words, ()
+    out, read = words[4:], [(" ".join(words[:4]), "nothing, a scenario")]
+    when = next((m for m in (2, 3) if out[:1] == ["when"] and out[m:m + 1] and out[m] in START_WORDS | END_SAID
+                 and out[1:m] in (["it"], ["the", words[2]]) and out[m + 1:m + 2] == [","]), None)
+    if when:
+        time = ["at", "the", "start" if out[when] in START_WORDS else "end"]
+        read.append((" ".join(out[:when + 1]), " ".join(time)))
+        out = time + out[when + 1:]
+    then = next((k for k in range(1, len(out)) if out[k - 1] == "," and out[k] == "then"), None)
+    if then is not None:
+        read.append(("then", "nothing"))
+        out = out[:then] + out[then + 1:]
+    return out, tuple(read)
+
+
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
     ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
@@ -1620,7 +1715,8 @@ RENAMING = ASIDE_WORDS | OBJECT_WORDS | set(COLOR_NAMES) | {"gray", "grey"} | {
                                                           "bottom", "side", "two", "seater", "-", "one", "far",
                                                           "middle", "centre", "center", "of", "picture", "frame"}
 HEADING_KEPT = {"end", "ends", "finish", "after", "before", "once", "when", "while", "later", "future", "beyond",
-                "first", "last", "moment", "instant", "frame", "frames", "time", "true", "false", "yes", "no"}
+                "first", "last", "moment", "instant", "frame", "frames", "time", "true", "false", "yes", "no",
+                "past", "predicted", "rollout", "cutoff"}
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
 ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
@@ -1984,6 +2080,25 @@ IDIOMS = phrase_table({
     ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
     ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
     ("stock", "-", "still"): ("still",), ("stock", "still"): ("still",),
+    # a physics class's and a simulation's words for the start, floating and collisions
+    **{p: _START for p in (("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
+                           ("at", "the", "first", "timestep"), ("at", "the", "first", "time", "step"),
+                           ("at", "the", "initial", "timestep"), ("at", "the", "first", "time", "-", "step"),
+                           ("in", "the", "initial", "conditions"))},
+    **{(*no, "the", "influence", "of", "gravity"): ("floating",) for no in (("not", "under"), ("free", "from"),
+                                                                             ("free", "of"), ("outside"))},
+    ("unaffected", "by", "gravity"): ("floating",), ("free", "of", "gravity"): ("floating",),
+    ("contact", "event"): ("collision",), ("contact", "events"): ("collisions",),
+    **{(have, "zero", v): (stand, "still") for v in ("velocity", "speed") for have, stand in (
+        ("have", "stand"), ("has", "stands"), ("had", "stood"), ("having", "standing"))},
+    **{(w, "zero", v): ("static",) for v in ("velocity", "speed") for w in ("at", "with")},
+    # a speed class said as a simulation's bin ('the actor in the fast speed bin', 'does it fall in the slow bin')
+    **{(*fall, p, "the", c, *n, b): (*verb, moving if fall else c)
+       for c, moving in (("static", "static"), ("slow", "slowly"), ("fast", "fast"))
+       for n in ((), ("speed",), ("velocity",)) for b in ("bin", "bucket", "class", "category") for p in ("in", "into")
+       for fall, verb in (((), ()), (("fall",), ("move",)), (("falls",), ("moves",)))},
+    **{(be, passed, "by"): (be, "slower", "than") for be in ("is", "was", "be", "being")
+       for passed in ("outpaced", "outrun", "outran", "overtaken", "outstripped")},
     # acceleration said as a noun ('what kind of vehicle is undergoing acceleration at the start?')
     **{(verb, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing", "under")},
     # on a screen is in view ('when it first shows up on screen')
@@ -2008,6 +2123,7 @@ IDIOMS = phrase_table({
     **{(enter, *seen): (come, "into", "view") for enter, come in (("enters", "comes"), ("entered", "came"),
                                                                   ("enter", "come"), ("entering", "coming"))
        for seen in (("the", "field", "of", "view"), ("the", "camera", "'", "s", "field", "of", "view"),
+                    ("the", "frame"), ("the", "shot"), ("the", "image"),
                     ("first", "in", "the", "view"), ("first", "into", "the", "view"), ("first", "into", "view"))},
     **{(come, "first", "into"): ("first", come, "into") for come in ("comes", "came", "come", "coming")},
     **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
@@ -2330,12 +2446,14 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 # The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
+END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
                ["given", "that"], ["now", "that"])
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut", "off"], ["cuts", "off"],
-                *([v, p] for v in ("is", "was", "gets", "got") for p in ("stopped", "halted", "paused", "frozen", "cut")),
+                *([v, p] for v in ("is", "was", "gets", "got")
+                  for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["'", "s", p] for p in ("stopped", "halted", "paused", "frozen")))
 PART_WAY = (["partway", "through"], ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
@@ -2348,6 +2466,19 @@ END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "co
                   ["is", "finish"], ["is", "end"], ["is", "ended"], ["end"], ["finish"], ["ended"], ["finished"],
                   ["over"], ["wraps", "up"], ["winds", "down"],
                   *(["'", "s", e] for e in ("over", "done", "finished", "ended", "through")))
+
+
+# where a simulation's or an engineer's video stops ('in the predicted rollout after the cutoff', 'past the stop point')
+CUT_POINTS = tuple([*roll, p, "the", *c] for roll in ((), ("in", "the", "predicted", "rollout"),
+                                                     ("in", "the", "rollout"), ("predicted", "rollout"))
+                   for p in ("after", "past", "beyond") for c in (("cutoff",), ("cut", "-", "off"), ("cut", "off"),
+                                                                   ("stop", "point"), ("stopping", "point"),
+                                                                   ("cut", "point"), ("cut",)))
+
+
+def _at_cut(words: list[str]) -> tuple[int, int] | None:
+    at = _at(words, sorted(map(tuple, CUT_POINTS), key=len, reverse=True))
+    return (at[0], at[0] + len(at[1])) if at else None
 
 
 def _video_end(words: list[str]) -> tuple[int, int] | None:
@@ -2378,7 +2509,7 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     """'once the video is over, does it hit ...' -> 'after the video ends, does it hit ...', in a question about
     collisions (the only ones asked after the video; of any other it asks at the video's end, which
     `unknown_property` refuses). With the words read so, or the words as they are and ()."""
-    where = _video_end(words)
+    where = _video_end(words) or _at_cut(words)
     if not where or not asks_impact(words):
         return words, ()
     i, k = where
@@ -3899,7 +4030,8 @@ END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "nea
              for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
     [[p, "the", a, *few, f] for p in ("in", "at", "during") for a in ("last", "final", "closing")
-     for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments")]
+     for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments",
+                                                         "timestep", "timesteps")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
 
