@@ -2166,6 +2166,10 @@ def test_a_category_a_question_after_a_semicolon_and_a_condition_labelled_or_poi
         "The red car is parked at the start. In that case, does it hit the bus?"])
     assert category[-1] == "query_attributes[shape]" and after_semicolon[-1] == "query_attributes[color]"
     assert "Counterfactual_moving_slow" in what_if and "Counterfactual_static" in that_world
+    # a condition's semicolon keeps its question: 'the jet' is not the airliner of the sentence before
+    assert " ".join(parser.parse("Suppose the airliner had started out slow; would it still hit the jet?")) == \
+        "Objects filter_attributes[airliner] unique Counterfactual_moving_slow Objects filter_attributes[airliner] " \
+        "unique filter_collision Objects filter_attributes[jet] unique filter_collision exist"
     # a ground vehicle 'flying' out of the gate goes fast; it does not float
     assert_refused(parser, {"Run it back with a twist: the blue dirtbike comes flying out of the gate fast from the "
                             "opening frame. Does it collide with the brown bus then?": "flying"})

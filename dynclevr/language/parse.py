@@ -783,12 +783,13 @@ def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
     closes it ('the bike seems to dodge everything... does it'), after a word or two ('well... is it') or a word
     that cannot end one ('which...') none; a point
     after a letter ('i.e.') or between digits closes none; a semicolon before a question closes one ('a plane is
-    hanging in the air ; which colour is ...')."""
+    hanging in the air ; which colour is ...'), except after a condition ('suppose it had ... ; would it ...')."""
     spans, start = [], 0
     for k, w in enumerate(words):
         before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
         said = [v for v in words[start:k] if v != "."]
-        if w == ";" and (after in QUESTION_OPENERS or after in ASKING):
+        if w == ";" and (after in QUESTION_OPENERS or after in ASKING) and not \
+                (IMAGINED_SAID | {"if", "had"}) & set(words[start:k]):   # not a condition's ('suppose ... ; would')
             pass
         elif w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
                 before == "." and (len(said) < 3 or said[-1] in STATEMENT_ENDS_NOT)   # 'crash , which... is it'
