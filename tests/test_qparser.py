@@ -2242,3 +2242,20 @@ def test_a_physics_class_a_simulation_a_scenario_and_a_colour_in_a_clause_are_re
     assert_refused(parser, {"Is the red biplane still airborne at the final timestep?": "end",
                             '{"target": "grey airliner", "ask": "how high above the ground is it?"}': "high",
                             "Given the clip, when it ends, then how fast is the red sedan moving?": "end"})
+
+
+def test_a_reading_must_read_what_is_imagined_and_what_floats():
+    parser = QuestionParser.load()
+    # each was read as a question about the video as it is (the final measure's wrong readings)
+    assert_refused(parser, {"brown motorbike starting slow instead, it hits the gray car or not?": "instead",
+                            "cf: gray one starts slow instead -> does gray collide w/ the pickup?": "instead",
+                            "imagine the chopper begins fast. does it collide with the bus then": "imagine",
+                            "quick check, plane floating at the beginning or not?": "floating",
+                            "How fast is the school bus moving in the very last frame?": "end"})
+    floating, later, wagon = parser.parse_batch([
+        "When the clip begins, is the private jet floating rather than sitting on the ground?",
+        "given the clip is cut off mid-way, do the fighter jet and the sedan end up colliding afterwards?",
+        "Suppose the grey estate wagon had stayed parked from the start - would it have hit the yellow sedan?"])
+    assert floating[-1] == "is_floating" and later[0] == "futureEvents"
+    assert wagon[:3] == ["Objects", "filter_attributes[gray]", "filter_attributes[wagon]"]
+    assert "Counterfactual_static" in wagon

@@ -251,6 +251,7 @@ class QuestionParser:
             or collision_unread(said, c.program) or uncompared(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
+            or imagining_unread(said, c.program) or floating_unread(said, c.program)
             or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
@@ -1696,6 +1697,15 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if gloss and (FLOATING_WORDS & set(out[:k]) if gloss in GROUND_GLOSSES else "not" in out[:k - 1]):
             read.append((out[k - 1] + " " + " ".join(gloss), "nothing, said again"))
             out[k - 1:k + len(gloss) + (out[k - 1] == "(")] = []
+    # the ground a floating vehicle is not on, said as the other choice ('floating rather than sitting on the ground')
+    for k in reversed(range(1, len(out) - 3)):
+        other = next((o for o in (["rather", "than"], ["instead", "of"]) if out[k:k + 2] == o), None)
+        j = k + 2 + (out[k + 2:k + 3] != [] and out[k + 2] in RESTING)
+        if other and out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) and \
+                FLOATING_WORDS & set(out[:k]):
+            end = j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])
+            read.append((" ".join(out[k:end]), "nothing, said again"))
+            out[k - (out[k - 1] == ","):end] = []
     # a condition's consequence closed by 'then' ('Would the bike crash into the dirt bike then?'); not the 'then' of
     # a moment, read from the context (`context_as_question`)
     if out[-2:] == ["then", "?"] and {"would", "if", "had", "suppose", "imagine", "were"} & set(out):
@@ -1704,6 +1714,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return out, tuple(read)
 
 
+RESTING = {"sitting", "resting", "standing", "being", "parked", "lying", "staying", "sat", "stood"}
 GROUND_GLOSSES = tuple((*n, t, s) for n in (("not", "touching"), ("not", "on")) for t in ("the", "any")
                        for s in ("floor", "ground")) + (("off", "the", "ground"), ("off", "the", "floor"))
 STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a", "little"), ("not", "an", "inch"),
@@ -2081,6 +2092,7 @@ IDIOMS = phrase_table({
     ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
     ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
     ("stock", "-", "still"): ("still",), ("stock", "still"): ("still",),
+    ("in", "mid", "-", "air"): ("in", "the", "air"), ("in", "midair"): ("in", "the", "air"),
     # a physics class's and a simulation's words for the start, floating and collisions
     **{p: _START for p in (("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
                            ("at", "the", "first", "timestep"), ("at", "the", "first", "time", "step"),
@@ -2449,15 +2461,16 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
 END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
-               ["given", "that"], ["now", "that"])
+               ["given", "that"], ["given"], ["now", "that"], ["with"])
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut", "off"], ["cuts", "off"],
                 *([v, p] for v in ("is", "was", "gets", "got")
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
+                *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
                 *(["'", "s", p] for p in ("stopped", "halted", "paused", "frozen")))
-PART_WAY = (["partway", "through"], ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
+PART_WAY = (["mid", "-", "way"], ["mid", "-", "way", "through"], ["partway", "through"], ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
             ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
@@ -2491,7 +2504,8 @@ def _video_end(words: list[str]) -> tuple[int, int] | None:
         j = i + len(opener) + (words[i + len(opener):i + len(opener) + 1] in (["the"], ["this"]))
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
             continue
-        end = next((e for e in END_PREDICATES + STOPPED_SAID if words[j + 1:j + 1 + len(e)] == e), None)
+        end = next((e for e in sorted(END_PREDICATES + STOPPED_SAID, key=len, reverse=True)
+                    if words[j + 1:j + 1 + len(e)] == e), None)
         if end:
             k = j + 1 + len(end)
             part = next((p for p in PART_WAY if words[k:k + len(p)] == p), [])
@@ -3420,6 +3434,43 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
             "here does: each imagines one vehicle's motion changed")
 
 
+# the words that say a question imagines its video otherwise (a label, an opener or 'instead')
+IMAGINING_SAID = {"imagine", "imagining", "suppose", "supposing", "pretend", "hypothetically", "hypothetical",
+                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif"}
+
+
+def imagining_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of what happened is not the question's ('' when it is): the question imagines otherwise ('brown
+    motorbike starting slow instead, it hits the gray car?', 'cf: gray one starts slow instead -> ...' were read as
+    whether it is slow at the collision), and no counterfactual was read. Only a reading about collisions, as every
+    counterfactual is ('Picture this: ... is it crawling at the start?' imagines nothing), and not of the future
+    ('suppose the clip went on for longer')."""
+    if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program or \
+            "futureEvents" in program:
+        return ""
+    said = next((w for w in words if w in IMAGINING_SAID), None) or \
+        next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None)
+    if said is None:
+        return ""
+    return (f"the question imagines otherwise ('{said}'), but its nearest reading asks what happens in the video: "
+            "ask as 'if X had been ... from the start, would it hit Y?'")
+
+
+# the words of floating a reading must read ('plane floating at the beginning or not' was read as fast)
+AFLOAT_WORDS = {"floating", "float", "floats", "floated", "hovering", "hover", "hovers", "hovered", "airborne",
+                "aloft"}
+
+
+def floating_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question says a vehicle floats, and the reading
+    reads no floating."""
+    said = next((w for w in words if w in AFLOAT_WORDS), None)
+    if said is None or FLOATING_OPERATIONS.intersection(map(operation, program)):
+        return ""
+    return (f"the question says '{said}', but its nearest reading reads no floating: ask whether the vehicle is "
+            "floating, or what it would have hit had it floated")
+
+
 def otherwise_compared(words: list[str], read: list[str]) -> str:
     """A question (`words`; `read`: its typos fixed) of some other comparison or manner ('' when none): what a
     collision was like, how far vehicles move, a vehicle against itself at another time, what it carries, either of
@@ -4030,7 +4081,8 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
              for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
-    [[p, "the", a, *few, f] for p in ("in", "at", "during") for a in ("last", "final", "closing")
+    [[p, "the", *very, a, *few, f] for p in ("in", "at", "during") for very in ((), ("very",))
+     for a in ("last", "final", "closing")
      for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments",
                                                          "timestep", "timesteps")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",

@@ -29,7 +29,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "city bus": "regular bus", "tandem": "tandem bike", "bi plane": "biplane", "air liner": "airliner",
                   "passenger jet": "airliner", "passenger plane": "airliner", "passenger aeroplane": "airliner",
                   "passenger aircraft": "airliner", "fighter jet": "fighter", "pickup truck": "truck",
-                  "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon",
+                  "pick up truck": "truck", "station wagon": "wagon", "estate car": "wagon", "estate wagon": "wagon",
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
                   "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
                   "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
