@@ -245,3 +245,20 @@ def test_a_data_dir_of_the_older_layout_says_what_to_rerun_then_upgrades(run, tm
         rel = p.relative_to(data)
         if "-" not in str(rel):
             assert (old / rel).read_bytes() == p.read_bytes(), rel
+
+
+def test_a_change_to_the_question_parsers_rules_reruns_the_answers(tmp_path, monkeypatch):
+    """The answer stage's cache key holds the parser's rules and lexicons and the executor (`answer.READING`), so a
+    rule changed without a stage version bump cannot leave a split's answers stale; its evaluation corpora are not
+    in it."""
+    from dynclevr.stages import answer
+
+    names = {p.name for p in answer.READING}
+    assert {"parse.py", "references.py", "synonyms.txt", "wordnet.txt", "programs.py"} <= names
+    assert not {"handwritten.txt", "out_of_scope.txt"} & names
+    rule = tmp_path / "parse.py"
+    rule.write_text("RULE = 1\n")
+    monkeypatch.setattr(answer, "READING", [rule])
+    before = answer.reading_digest()
+    rule.write_text("RULE = 2\n")
+    assert answer.reading_digest() != before

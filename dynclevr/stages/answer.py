@@ -10,6 +10,7 @@ answers-noprior.parquet, ... Split-level tables stay out of answers/, so that th
 
 from __future__ import annotations
 
+import hashlib
 import math
 from functools import lru_cache
 from pathlib import Path
@@ -127,13 +128,28 @@ def finalize(store, cfg, scenes: list[str]) -> list[Path]:
     return [answers, path]
 
 
+# What reads a question and runs its program: the question parser's rules and lexicons (not the corpora it is only
+# evaluated on) and the executor. A change to either reruns the answers; before, a stage version bumped by hand was
+# the only guard, and a parser rule could leave a split's answers stale.
+READING = sorted([*(p for p in (Path(__file__).parents[1] / "language").glob("*") if p.suffix in (".py", ".txt")
+                    and p.name not in ("handwritten.txt", "out_of_scope.txt")),
+                  Path(__file__).parents[1] / "questions" / "programs.py"])
+
+
+def reading_digest() -> str:
+    h = hashlib.sha256()
+    for p in READING:
+        h.update(p.name.encode() + b"\0" + file_digest(p).encode())
+    return h.hexdigest()
+
+
 def _extra(store, cfg) -> dict[str, str]:
     # The parser's weights themselves, not their manifest nor the blind baseline beside them (the report's): a
     # retrain that gives the same bytes reruns nothing.
     q = store.split_file("questions.parquet")
     weights = sorted(p for p in (WEIGHTS_DIR / "qparser").glob("*") if p.name not in ("manifest.json", "blind.json"))
     return {"questions": file_digest(q) if q.exists() else "missing",
-            **{f"qparser/{p.name}": file_digest(p) for p in weights}}
+            **{f"qparser/{p.name}": file_digest(p) for p in weights}, "reading": reading_digest()}
 
 
 # 5: the question parser reads a word after a whole object description as the sentence's (language/parse.py);
