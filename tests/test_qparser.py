@@ -23,7 +23,7 @@ from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_s
 from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
-                                     afterthoughts_read, context_as_question, corrections_dropped,
+                                     afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -1711,11 +1711,13 @@ def test_spoken_questions_their_fillers_tags_and_slang_read_as_the_grammar_says_
                "Is the green articulated charabanc accelerating at the start?",
                "what's the license plate on the purple school bus lol", "what colour is the boat floating on the water",
                "purple scooter speed end of video",
-               "The purple scooter, it collide with something in the video?",
                "Who's driving the purple school bus?", "In which direction does purple scooter move at end of video?",
                "Which vehicle was at fault in the collision between the purple scooter and the purple school bus?"]
     for text, parse in zip(refused, parser.analyse_batch(refused)):
         assert parse.program is None, (text, parse.program)
+    # once refused: the vehicle said first and then 'it' is asked about (`dislocated_as_asked`), in the video
+    assert " ".join(parser.parse("The purple scooter, it collide with something in the video?")) == \
+        f"Events {scooter} filter_collision exist"
 
 
 def test_collision_idioms_and_a_translators_wording_read_and_their_wrong_readings_refused():
@@ -2259,3 +2261,16 @@ def test_a_reading_must_read_what_is_imagined_and_what_floats():
     assert floating[-1] == "is_floating" and later[0] == "futureEvents"
     assert wagon[:3] == ["Objects", "filter_attributes[gray]", "filter_attributes[wagon]"]
     assert "Counterfactual_static" in wagon
+
+
+def test_vehicles_said_first_then_asked_as_they_or_it_and_lagging_behind():
+    assert dislocated_as_asked(tokenize("Blue minivan and green chopper, they crash into each other?"))[0] == \
+        tokenize("do Blue minivan and green chopper crash into each other?")
+    assert dislocated_as_asked(tokenize("The green sedan, it collide with something in the video?"))[0] == \
+        tokenize("does The green sedan collide with something in the video?")
+    assert dislocated_as_asked(tokenize("The red sedan, is it fast?"))[0] == tokenize("The red sedan, is it fast?")
+    parser = QuestionParser.load()
+    lagging, together = parser.parse_batch([
+        "Is the blue airliner lagging behind the purple suv in speed at the beginning?",
+        "Blue minivan and green chopper, they crash together?"])
+    assert lagging[-1] == "slower_velocity" and together[-1] == "exist" and "Events" in together

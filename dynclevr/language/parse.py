@@ -285,6 +285,8 @@ class QuestionParser:
         words, setting = settings_as_imagined(words)
         words, scenario = scenario_as_asked(words)
         corrected += setting + scenario
+        words, dislocated = dislocated_as_asked(words)
+        corrected += dislocated
         words, context = context_as_question(words, self.known)
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
@@ -536,7 +538,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
              "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
              "greetings", "with"}
-FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically"}
+FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
+           "honestly"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
@@ -1086,6 +1089,26 @@ def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
     if len(runs) > 1 and said[end:runs[1][0]] in (["and"], ["and", "the"], ["and", "a"]):
         end, named = runs[1][1], named + [runs[1][2]]
     return end, named
+
+
+DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "was", "have", "had"}
+
+
+def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'blue minivan and green chopper , they collide ?' -> 'do blue minivan and green chopper collide ?', and 'the
+    sedan , it is fast ?' -> 'is the sedan fast ?': the vehicles said first, then asked about as 'they' or 'it' in
+    a statement with a question mark. With the words read so, or the words as they are and ()."""
+    subject = coordinated_subject(words) if words[-1:] == ["?"] else None
+    if subject is None:
+        return words, ()
+    end, named = subject
+    pronoun = ["they"] if len(named) == 2 else ["it"]
+    if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
+        return words, ()
+    verb, rest = words[end + 2], words[end + 3:]
+    said = [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
+        ["do" if len(named) == 2 else "does", *words[:end], verb, *rest]
+    return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
 
 
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2092,6 +2115,14 @@ IDIOMS = phrase_table({
     ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
     ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
     ("stock", "-", "still"): ("still",), ("stock", "still"): ("still",),
+    # falling behind in speed ('is the airliner lagging behind the suv at the beginning?')
+    **{(lag, "behind"): (moving, "slower", "than") for lag, moving in (
+        ("lagging", "moving"), ("lags", "moves"), ("lagged", "moved"), ("trailing", "moving"), ("trails", "moves"),
+        ("trailed", "moved"))},
+    **{p: _START for p in (("right", "off", "the", "gun"), ("off", "the", "gun"), ("from", "the", "gun"))},
+    **{(crash, "together"): (collide,) for crash, collide in (
+        ("crash", "collide"), ("crashes", "collides"), ("crashed", "collided"), ("smash", "collide"),
+        ("bump", "collide"), ("come", "collide"), ("came", "collided"))},
     ("in", "mid", "-", "air"): ("in", "the", "air"), ("in", "midair"): ("in", "the", "air"),
     # a physics class's and a simulation's words for the start, floating and collisions
     **{p: _START for p in (("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
@@ -2470,7 +2501,8 @@ STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
                 *(["'", "s", p] for p in ("stopped", "halted", "paused", "frozen")))
-PART_WAY = (["mid", "-", "way"], ["mid", "-", "way", "through"], ["partway", "through"], ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
+PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
+            ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
             ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
