@@ -24,6 +24,7 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
+                                     hedges_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -2274,3 +2275,22 @@ def test_vehicles_said_first_then_asked_as_they_or_it_and_lagging_behind():
         "Is the blue airliner lagging behind the purple suv in speed at the beginning?",
         "Blue minivan and green chopper, they crash together?"])
     assert lagging[-1] == "slower_velocity" and together[-1] == "exist" and "Events" in together
+
+
+def test_a_doubt_said_before_or_after_the_question_is_dropped():
+    assert hedges_dropped(tokenize("Not sure, but did the sedan hit the bus?"))[0] == \
+        tokenize("did the sedan hit the bus?")
+    assert hedges_dropped(tokenize("Was the grey chopper slower than the green sedan, or am I misremembering?"))[0] \
+        == tokenize("Was the grey chopper slower than the green sedan?")
+    assert hedges_dropped(tokenize("The bus was parked at the start; is that right?"))[0] == \
+        tokenize("The bus was parked at the start, is that right?")
+    # what is said first that names a vehicle, a time or what is asked is no doubt ('I noticed something hovering')
+    for kept in ("I noticed something hovering in the air at the beginning, which colour was it?",
+                 "In which direction, may I ask, is the yellow motorbike proceeding at the beginning?",
+                 "When I watch the red car, is it fast?"):
+        assert hedges_dropped(tokenize(kept)) == (tokenize(kept), ())
+    parser = QuestionParser.load()
+    unsure, right_that = parser.parse_batch([
+        "I could be off here, but when the red one first came into view, would you call it static, slow or fast?",
+        "Am I right that the brown SUV was faster than the blue bike at the very start?"])
+    assert unsure[-2:] == ["come_in_frame", "query_moving_velocity"] and right_that[-1] == "faster_velocity"

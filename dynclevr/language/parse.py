@@ -285,8 +285,9 @@ class QuestionParser:
         words, setting = settings_as_imagined(words)
         words, scenario = scenario_as_asked(words)
         corrected += setting + scenario
+        words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
-        corrected += dislocated
+        corrected += hedged + dislocated
         words, context = context_as_question(words, self.known)
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
@@ -1092,6 +1093,46 @@ def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
 
 
 DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "was", "have", "had"}
+
+
+# A speaker's doubt around the question: said first ('Not sure, but ...', 'I could be off here, but ...', 'Since the
+# clip cuts off, I can't be sure: ...'), or after it (', or am I misremembering?', '; is that right?')
+HEDGE_STARTS = (("not", "sure"), ("not", "certain"), ("unless",), ("maybe",), ("correct", "me"), ("no", "idea"),
+                ("hard", "to", "say"))
+HEDGE_ENDS = ((",", "but"), (",", "so"), (":",), (";",), ("-",), (",",))
+DOUBTING = {"am", "did", "do", "have", "was", "is", "could"}
+# ... and what a doubt said first never says: a question's words, a time, a motion, a vehicle unnamed
+ASKED_IN_DOUBT = {"if", "suppose", "had", "when", "?", "which", "what", "how", "where", "who", "whether", "tell",
+                  "give", "name", "direction", "speed", "colour", "color", "type", "kind", "hover", "hovers",
+                  "hovered", "float", "floats", "floated"}
+
+
+def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'not sure , but did the sedan hit the bus ?' -> 'did the sedan hit the bus ?', 'was it slower , or am i
+    misremembering ?' -> 'was it slower ?', '...; is that right ?' -> '..., is that right ?' (a tag, read as one by
+    `negative_question_as_asked`). A doubt said first names no vehicle. With the words read so, or the words as
+    they are and ()."""
+    out, read = list(words), []
+    ends = [(k, len(e)) for k in range(1, min(len(out), 16)) for e in HEDGE_ENDS if tuple(out[k:k + len(e)]) == e]
+    first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(said[:len(h)] == list(h)
+                                                                          for h in HEDGE_STARTS)
+    undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID
+    cut = max((k + n for k, n in ends if first_person(out[:k]) and not undoubted & set(out[:k])
+               and not asks_impact(out[:k]) and out[k + n:]), default=None)
+    if cut is not None:
+        read.append((" ".join(out[:cut]), "nothing, a doubt"))
+        out = out[cut:]
+    if out[-1:] == ["?"]:
+        doubt = next((k for k in range(1, len(out) - 3) if out[k:k + 2] == [",", "or"] and out[k + 2] in DOUBTING
+                      and "i" in out[k + 2:k + 5] and not NAMING & set(out[k:])), None)
+        if doubt is not None:
+            read.append((" ".join(out[doubt:-1]), "nothing, a doubt"))
+            out = out[:doubt] + ["?"]
+    tag = next((k for k in range(1, len(out) - 2) if out[k] == ";" and list(out[k + 1:-1]) in AGREEING_TAGS), None)
+    if tag is not None and out[-1:] == ["?"]:
+        read.append((";", ","))
+        out[tag] = ","
+    return (out, tuple(read)) if read else (words, ())
 
 
 def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1923,11 +1964,13 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|cou
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
                      r"|(?:my )?[a-z]+ (?:wants|wanted|would like|' d like|needs) to know)"
                      r" (?:, )?(?:please )?")
-# whether a statement holds, asked formally ('Can it be established that ...'): the grammar's 'is it true that'
-CERTAINTY = re.compile(r"^(?:can|could|would) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
+# whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
+# 'is it true that'
+CERTAINTY = re.compile(r"^(?:(?:can|could|would) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
                        r"(?:established|shown|confirmed|verified|determined|"
                        r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
-                       r"demonstrate) (?:that|whether|if) ")
+                       r"demonstrate) (?:that|whether|if)"
+                       r"|(?:am i|are we) (?:right|correct) (?:in thinking |to think |to say )?that) ")
 
 
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1972,7 +2015,9 @@ def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
                   "these", "those", "either", "both", "they", "some", "all"}
 TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
-AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"])
+AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"],
+                 ["is", "that", "right"], ["is", "that", "correct"], ["am", "i", "right"], ["am", "i", "correct"],
+                 ["would", "you", "say", "so"], ["right", "or", "wrong"])
 
 
 def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
