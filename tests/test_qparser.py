@@ -872,10 +872,12 @@ def test_a_near_miss_a_chase_a_size_an_ought_and_a_collision_at_the_start_are_re
     assert_refused(parser, texts)
     # ... but 'the frames that follow' is the future, and a start said of a motion is the motion's
     kept = ["Will the gray car slam into the brown bicycle in the frames that follow?",
-            "In the frames that follow the video, will the red jet hit the cyan truck?",
-            "Does the purple bus, parked at the start, get hit by the red sedan?"]
+            "In the frames that follow the video, will the red jet hit the cyan truck?"]
     for text, parse in zip(kept, parser.analyse_batch(kept)):
         assert parse.program and "filter_collision" in parse.program, text
+    # it was read as had the bus been parked: no condition is said (`condition_unsaid`), so it is not imagined
+    parked = parser.parse("Does the purple bus, parked at the start, get hit by the red sedan?")
+    assert parked is None or not any(t.startswith("Counterfactual") for t in parked)
     assert collision_at_start(tokenize("do they touch at the start?"), "Events X filter_collision exist".split())
     assert not collision_at_start(tokenize("is it parked at the start?"), "Events X filter_collision exist".split())
 
@@ -2294,3 +2296,21 @@ def test_a_doubt_said_before_or_after_the_question_is_dropped():
         "I could be off here, but when the red one first came into view, would you call it static, slow or fast?",
         "Am I right that the brown SUV was faster than the blue bike at the very start?"])
     assert unsure[-2:] == ["come_in_frame", "query_moving_velocity"] and right_that[-1] == "faster_velocity"
+
+
+def test_a_counterfactual_reading_needs_a_condition_and_a_then_its_time():
+    parser = QuestionParser.load()
+    assert_refused(parser, {
+        # read as had the chopper been static: nothing says a condition
+        "Video's been halted partway; from here on, will the blue chopper and the red airliner collide?":
+            "no condition",
+        # read as whether the SUV hits the bike: 'would' after a change said as a fact
+        "Think about this: the SUV's engine is switched on from the very start, so it keeps getting faster. Would "
+        "the SUV hit the red road bike?": "would",
+        # read at the start: the sentence before says when 'then' is
+        "Think about the last moment of the clip. Is the grey station wagon slower than the school bus then?": "end"})
+    assert parser.parse("Will the red fighter jet crash into anything after the video's been stopped?")[0] == \
+        "futureEvents"
+    # a terse condition needs no 'if': 'fast from start'
+    assert "Counterfactual_moving_fast" in parser.parse("cf: blue mountain bike fast from start -> collides w/ "
+                                                        "purple regular bus? y/n")

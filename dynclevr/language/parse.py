@@ -252,6 +252,7 @@ class QuestionParser:
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
             or imagining_unread(said, c.program) or floating_unread(said, c.program)
+            or condition_unsaid(said + [w for a, _ in c.read_as for w in a.split()], c.program)
             or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
@@ -1699,8 +1700,11 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
                 | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading):   # one that says what is asked stays
             break
-        # and so does a heading that says when or how to answer ('at the start :', 'true or false :')
-        if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS):
+        # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
+        # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')
+        if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS) or \
+                words[end] == "." and "then" in words[end + 1:] and \
+                set(words[:end]) & (HEADING_KEPT | START_WORDS) - {"true", "false", "yes", "no"}:
             break
         read.append((" ".join(words[:end + 1]), "nothing, a remark"))
         words = words[end + 1:]
@@ -2545,7 +2549,7 @@ STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
-                *(["'", "s", p] for p in ("stopped", "halted", "paused", "frozen")))
+                *(["'", "s", *been, p] for p in ("stopped", "halted", "paused", "frozen") for been in ((), ("been",))))
 PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
             ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
@@ -3526,11 +3530,30 @@ def imagining_unread(words: list[str], program: list[str]) -> str:
             "futureEvents" in program:
         return ""
     said = next((w for w in words if w in IMAGINING_SAID), None) or \
-        next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None)
+        next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
+        next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
+             None)   # 'the engine is on from the very start. Would the SUV hit the bike?'
     if said is None:
         return ""
     return (f"the question imagines otherwise ('{said}'), but its nearest reading asks what happens in the video: "
             "ask as 'if X had been ... from the start, would it hit Y?'")
+
+
+# the words that make a condition of what follows: a counterfactual reading needs one
+CONDITION_SAID = IMAGINING_SAID | {"if", "had", "were", "would", "assume", "assuming", "say", "picture", "envision",
+                                   "envisage", "imagined", "supposed", "hypothetical", "scenario", "intervention",
+                                   "world", "case", "twist"} | CONDITION_LABELS
+
+
+def condition_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a counterfactual reading is not the question's ('' when it is): nothing in it says a condition, as said or
+    in a label the rules read away ('Video's been halted partway; from here on, will the chopper and the airliner
+    collide?' was read as had the chopper been static)."""
+    if not any(t.startswith("Counterfactual") for t in program) or CONDITION_SAID & set(words) or any(
+            w == "from" and START_WORDS & set(words[k + 1:k + 3]) for k, w in enumerate(words)):   # 'fast from start'
+        return ""
+    return ("the question says no condition, but its nearest reading imagines one: ask 'if X had been ... from the "
+            "start, would it hit Y?'")
 
 
 # the words of floating a reading must read ('plane floating at the beginning or not' was read as fast)
@@ -4158,7 +4181,7 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
              for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
-    [[p, "the", *very, a, *few, f] for p in ("in", "at", "during") for very in ((), ("very",))
+    [[*p, "the", *very, a, *few, f] for p in (("in",), ("at",), ("during",), ()) for very in ((), ("very",))
      for a in ("last", "final", "closing")
      for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments",
                                                          "timestep", "timesteps")]
