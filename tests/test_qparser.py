@@ -2314,3 +2314,13 @@ def test_a_counterfactual_reading_needs_a_condition_and_a_then_its_time():
     # a terse condition needs no 'if': 'fast from start'
     assert "Counterfactual_moving_fast" in parser.parse("cf: blue mountain bike fast from start -> collides w/ "
                                                         "purple regular bus? y/n")
+
+
+def test_a_ships_and_a_radios_words():
+    parser = QuestionParser.load()
+    dead, less, unit = parser.parse_batch([
+        "Confirm the blue fighter jet is dead in the water at the start of the tape, affirmative?",
+        "First moments of the video: is the blue private jet making less way than the grey bus?",
+        "Which colour's the unit running at full speed right at the top of the footage?"])
+    assert dead[-1] == "is_static" and less[-1] == "slower_velocity"
+    assert unit == "Objects start filter_moving_velocity[fast] unique query_attributes[color]".split()

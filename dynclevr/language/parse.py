@@ -523,7 +523,7 @@ TOWARD = {"toward", "towards", "approaching", "nearing"}   # 'heading towards th
 CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
                  "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
-                 "evening", "sure"} | CHAT
+                 "evening", "sure", "roger", "copy"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -547,7 +547,9 @@ INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
                          "thanks", "cheers", "tho",
                          # and the particles regional Englishes close with ('they collide or not, lah?', '..., abi?')
-                         "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah"} | CHAT
+                         "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah",
+                         # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
+                         "affirmative", "roger"} | CHAT
 
 
 def _says_nothing(tail: list[str]) -> bool:
@@ -2168,7 +2170,13 @@ IDIOMS = phrase_table({
     **{(lag, "behind"): (moving, "slower", "than") for lag, moving in (
         ("lagging", "moving"), ("lags", "moves"), ("lagged", "moved"), ("trailing", "moving"), ("trails", "moves"),
         ("trailed", "moved"))},
-    **{p: _START for p in (("right", "off", "the", "gun"), ("off", "the", "gun"), ("from", "the", "gun"))},
+    **{p: _START for p in (("right", "off", "the", "gun"), ("off", "the", "gun"), ("from", "the", "gun"),
+                           ("right", "off", "the", "top"), ("off", "the", "top"),
+                           *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape")))},
+    # a ship's words for moving and standing ('dead in the water', 'making less way than')
+    ("dead", "in", "the", "water"): ("static",), ("making", "way"): ("moving",), ("make", "way"): ("move",),
+    **{("making", more, "way", "than"): ("moving", said, "than") for more, said in (("less", "slower"),
+                                                                                    ("more", "faster"))},
     **{(crash, "together"): (collide,) for crash, collide in (
         ("crash", "collide"), ("crashes", "collides"), ("crashed", "collided"), ("smash", "collide"),
         ("bump", "collide"), ("come", "collide"), ("came", "collided"))},
