@@ -1111,16 +1111,20 @@ ASKED_IN_DOUBT = {"if", "suppose", "had", "when", "?", "which", "what", "how", "
 
 
 def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'not sure , but did the sedan hit the bus ?' -> 'did the sedan hit the bus ?', 'was it slower , or am i
-    misremembering ?' -> 'was it slower ?', '...; is that right ?' -> '..., is that right ?' (a tag, read as one by
-    `negative_question_as_asked`). A doubt said first names no vehicle. With the words read so, or the words as
-    they are and ()."""
+    """'not sure , but did the sedan hit the bus ?' and 'sorry if this is a silly question , but does ...' -> 'did the
+    sedan hit the bus ?', 'does ...'; 'was it slower , or am i misremembering ?' -> 'was it slower ?'; '...; is that
+    right ?' -> '..., is that right ?' (a tag, read as one by `negative_question_as_asked`). A doubt said first names
+    no vehicle. With the words read so, or the words as they are and ()."""
     out, read = list(words), []
     ends = [(k, len(e)) for k in range(1, min(len(out), 16)) for e in HEDGE_ENDS if tuple(out[k:k + len(e)]) == e]
     first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(said[:len(h)] == list(h)
                                                                           for h in HEDGE_STARTS)
     undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID
-    cut = max((k + n for k, n in ends if first_person(out[:k]) and not undoubted & set(out[:k])
+    # an apology before the question needs no 'I' ('sorry if this is a silly question , but does ...')
+    unapologetic = NAMING | GENERIC_NOUNS | START_WORDS | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS
+    apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in QUESTION_OPENERS
+    cut = max((k + n for k, n in ends if (first_person(out[:k]) and not undoubted & set(out[:k])
+                                          or apology(k, n) and not unapologetic & set(out[:k]))
                and not asks_impact(out[:k]) and out[k + n:]), default=None)
     if cut is not None:
         read.append((" ".join(out[:cut]), "nothing, a doubt"))
@@ -1719,13 +1723,6 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
         read.append((" ".join(words[:end + 1]), "nothing, a label"))
         words = words[end + 1:]
-    # an apology or a hedge before the question ('sorry if this is a silly question , but does ...')
-    but = next((k for k in range(1, min(len(words) - 1, 12)) if words[k - 1:k + 1] == [",", "but"]), None)
-    if but and words[but + 1] in QUESTION_OPENERS and not set(words[:but]) & (
-            OBJECT_WORDS | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS | START_WORDS | FLOATING_WORDS) and \
-            not asks_impact(words[:but]):
-        read.append((" ".join(words[:but + 1]), "nothing, a remark"))
-        words = words[but + 1:]
     out, k = [], 0
     while k < len(words):
         close = next((j for j in range(k + 1, min(k + 10, len(words))) if words[j] == ")"), None) \
