@@ -10,11 +10,15 @@ docs/analysis/blind_questions_brief.md.
 import argparse
 from pathlib import Path
 
+from dynclevr import DynclevrError
 from dynclevr.language import evaluate
 from dynclevr.language.parse import QuestionParser
 
 
 def score(path: Path, oos: Path | None) -> None:
+    for p in filter(None, (path, oos)):
+        if not p.is_file():
+            raise SystemExit(f"blind_questions: {p} is no file: give a set in handwritten.txt's format (and --oos)")
     evaluate.HANDWRITTEN_FILE = path
     keyed = evaluate.handwritten()
     parser = QuestionParser.load()
@@ -41,4 +45,7 @@ if __name__ == "__main__":
     ap.add_argument("set", type=Path)
     ap.add_argument("--oos", type=Path)
     args = ap.parse_args()
-    score(args.set, args.oos)
+    try:
+        score(args.set, args.oos)
+    except (DynclevrError, OSError) as e:   # a malformed line or a missing file: one line, not a traceback
+        raise SystemExit(f"blind_questions: {e}") from None
