@@ -1488,7 +1488,6 @@ SET_VERBS = {"set", "sets", "setting", "initialise", "initialised", "initialize"
              "changed", "changing"}
 SET_VALUES = {"static": "static", "stationary": "static", "zero": "static", "0": "static", "slow": "slow",
               "low": "slow", "fast": "fast", "high": "fast"}
-SPEED_NOUNS = {"speed", "velocity", "pace"}
 
 
 def settings_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
