@@ -24,7 +24,7 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
-                                     hedges_dropped,
+                                     hedges_dropped, examination_as_asked, glosses_read,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -2302,8 +2302,6 @@ def test_a_counterfactual_reading_needs_a_condition_and_a_then_its_time():
     parser = QuestionParser.load()
     assert_refused(parser, {
         # read as had the chopper been static: nothing says a condition
-        "Video's been halted partway; from here on, will the blue chopper and the red airliner collide?":
-            "no condition",
         # read as whether the SUV hits the bike: 'would' after a change said as a fact
         "Think about this: the SUV's engine is switched on from the very start, so it keeps getting faster. Would "
         "the SUV hit the red road bike?": "would",
@@ -2324,3 +2322,82 @@ def test_a_ships_and_a_radios_words():
         "Which colour's the unit running at full speed right at the top of the footage?"])
     assert dead[-1] == "is_static" and less[-1] == "slower_velocity"
     assert unit == "Objects start filter_moving_velocity[fast] unique query_attributes[color]".split()
+
+
+def test_a_report_s_abbreviations_and_brackets_are_read():
+    # 'approx.' and 'veh.' end no sentence (the collision said before 'approx.' was lost), 'i.e.' opens a gloss
+    assert tokenize("the approx. speed of the veh. at the start") == \
+        tokenize("the approx speed of the veh at the start")
+    assert tokenize("accelerating (i.e. under power), e.g. now") == [
+        "accelerating", "(", "ie", "under", "power", ")", ",", "eg", "now"]
+    said, read = glosses_read(tokenize("was the truck accelerating (i.e. under engine power) at the outset?"))
+    assert said == tokenize("was the truck accelerating at the outset?") and read[0][1] == "nothing, a gloss"
+    said, _ = glosses_read(tokenize("did the insured vehicle (red sedan) hit the third-party vehicle (blue bus)?"))
+    assert said == tokenize("did the red sedan hit the blue bus?")
+    # a name said before the brackets stays, and a gloss that names a vehicle is no gloss
+    for kept in ("is the red sedan (the car) fast?", "is it fast (i.e. the red sedan)?"):
+        assert glosses_read(tokenize(kept)) == (tokenize(kept), ())
+    parser = QuestionParser.load()
+    impact, veh = parser.parse_batch([
+        "At the point of impact with the grey sedan, what was the approx. speed class (static, slow, fast) of the "
+        "green pickup truck?", "What colour is the veh. that was accelerating at the beginning of the clip?"])
+    assert impact[-3:] == ["unique", "get_frame", "query_moving_velocity"] and "sedan" in " ".join(impact)
+    assert veh == "Objects start filter_accelerating unique query_attributes[color]".split()
+    assert_refused(parser, {"At what approx. height above the ground was the biplane hovering at the start?": "height",
+                            "At approx. what time, in seconds, did the red sedan first hit the blue bus?": "when"})
+
+
+def test_a_witness_s_examination_asks_what_it_puts():
+    said, _ = examination_as_asked(tokenize("I put it to you that the bus was parked. Is that correct?"))
+    assert said == tokenize("is it true that the bus was parked?")
+    said, _ = examination_as_asked(tokenize("You'd concede, wouldn't you, that the bus was parked?"))
+    assert said == tokenize("is it true that the bus was parked?")
+    said, _ = examination_as_asked(tokenize("What type of vehicle, if you know, was travelling fast?"))
+    assert said == tokenize("What type of vehicle was travelling fast?")
+    said, _ = examination_as_asked(tokenize("Explain to the jury how fast the bus was going."))
+    assert said == tokenize("tell me how fast the bus was going.")
+    assert examination_as_asked(tokenize("Is the bus parked? Is that correct?"))[1] == ()   # a question's own tag
+    parser = QuestionParser.load()
+    opening, opinion, record = parser.parse_batch([
+        "Directing your attention to the opening moments of the recording, please characterise the speed of the "
+        "red sedan: stationary, slow or fast?",
+        "In a scenario where the cyan bus had been accelerating from the outset, is it your opinion that the cyan "
+        "bus would have collided with the motorbike?",
+        "Correct me if I'm wrong, but the blue fighter jet was hovering in mid-air at the start of the recording?"])
+    assert opening[-2:] == ["start", "query_moving_velocity"] and "Counterfactual_accelerating" in opinion
+    assert record[-2:] == ["start", "is_floating"]
+
+
+def test_a_video_stopped_said_alone_or_imagined_going_on_is_after_its_end():
+    for text in ("video's cut off early -- does the dirtbike go on to hit the wagon later",
+                 "Had the footage continued past the point where it is cut off, would the scooter hit something?",
+                 "stream froze halfway, are the cyan motorbike and the bus gonna smash after it cuts",
+                 "beyond the truncation point, does the yellow cruiser make contact with anything"):
+        said, read = video_end_as_said(tokenize(text))
+        assert said.count("after") >= 1 and read and all(r == "after the video ends" for _, r in read), text
+        assert "cut" not in said and "cuts" not in said, text
+    # the video said to be over is no future ('the video is over. did ...?' may ask about the video), nor is a
+    # clause of the question's own
+    for kept in ("The video is over. Did the car hit the bus?", "the video stops before they collide, does it?"):
+        assert video_end_as_said(tokenize(kept)) == (tokenize(kept), ())
+    parser = QuestionParser.load()
+    assert parser.parse("Video's been halted partway; from here on, will the blue chopper and the red airliner "
+                        "collide?")[0] == "futureEvents"
+    assert_refused(parser, ["If the video were longer, would the bus hit the car?"])
+
+
+def test_a_game_s_words_spawn_afk_full_send_and_trade_paint():
+    said, _ = idioms_as_said(tokenize("if the purple suv spawned slow would it clip the gray sedan"))
+    assert said == tokenize("if the purple suv started slow would it hit the gray sedan")
+    said, _ = idioms_as_said(tokenize("was it afk from spawn, or did it full send when it spawned"))
+    assert said == tokenize("was it static from the start, or did it fast at the start")
+    parser = QuestionParser.load()
+    paint, speed, turbo = parser.parse_batch([
+        "did the blue bus and the yellow pickup ever trade paint",
+        "speed check on the school bus right at the start of the replay: afk, chill or full send?",
+        "if the blue scooter had turbo on from spawn, would it collide with the brown pickup"])
+    assert paint[0] == "Events" and paint[-1] == "exist" and speed[-2:] == ["start", "query_moving_velocity"]
+    assert "Counterfactual_accelerating" in turbo
+    # 'x' is 'and' only between two vehicles' names
+    assert shorthand_as_said(tokenize("bendy bus x purple car"))[0] == tokenize("bendy bus and purple car")
+    assert shorthand_as_said(tokenize("the 4 x 4")) == (tokenize("the 4 x 4"), ())

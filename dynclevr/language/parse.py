@@ -281,11 +281,14 @@ class QuestionParser:
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
         words, clause = colour_clause_as_named(words)
-        named += looked + clause
+        words, glossed = glosses_read(words)
+        named += looked + clause + glossed
         words, corrected = corrections_dropped(words)
         words, setting = settings_as_imagined(words)
         words, scenario = scenario_as_asked(words)
         corrected += setting + scenario
+        words, examined = examination_as_asked(words)
+        corrected += examined
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
         corrected += hedged + dislocated
@@ -1142,6 +1145,98 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return (out, tuple(read)) if read else (words, ())
 
 
+# A witness examined ('I put it to you that the bus was parked. Is that correct?', 'You'd concede, wouldn't you,
+# that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
+_AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
+_TAGGED = ([], [",", "would", "not", "you", ","], [",", "do", "not", "you", ","], [",", "will", "not", "you", ","])
+CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
+                for verb in _AGREE for tag in _TAGGED),
+              *((*ask, "you", verb, *me, "that") for ask in (["would"], ["do"], ["will"], ["can"], ["could"])
+                for verb in _AGREE for me in ([], ["with", "me"])),
+              *(("i", "put", "it", *to, "that") for to in ([], ["to", "you"])),
+              *(("i", "suggest", *to, "that") for to in ([], ["to", "you"])),
+              *((*be, fair, "to", "say", "that") for be in (["would", "it", "be"], ["is", "it"])
+                for fair in ("accurate", "fair", "correct", "right", "true")),
+              *(("is", "it", "your", view, "that") for view in ("opinion", "view", "evidence", "testimony",
+                                                               "position", "understanding", "belief", "assessment",
+                                                               "contention", "recollection")),
+              *(("is", "it", "not", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
+              *(("is", "not", "it", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
+              ("is", "it", "the", "case", "that")}
+# ... closed by a question of its own ('. Is that correct?', '. Do you agree?'): the statement's question mark
+CONFIRM_ENDS = [[".", *q, "?"] for q in (["is", "that", "correct"], ["is", "that", "right"], ["is", "that", "true"],
+                                         ["is", "that", "so"], ["is", "that", "not", "so"], ["is", "not", "that", "so"],
+                                         ["correct"], ["yes"], ["right"], ["do", "you", "agree"],
+                                         ["would", "you", "agree"], ["agreed"], ["true"])]
+# asides of an examination, which ask nothing ('in your own words', 'if you know', 'for the sake of argument')
+EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know"), ("if", "you", "can"),
+                             ("if", "you", "recall"), ("if", "you", "remember"), ("as", "best", "you", "can"),
+                             *(("to", "the", "best", "of", "your", m) for m in ("knowledge", "recollection",
+                                                                               "memory", "ability")),
+                             ("as", "far", "as", "you", "know"), ("as", "far", "as", "you", "can", "tell"),
+                             ("for", "the", "sake", "of", "argument"), ("for", "argument", "'", "s", "sake"),
+                             *(("in", "your", *expert, view) for expert in ((), ("expert",), ("professional",),
+                                                                           ("honest",), ("considered",))
+                               for view in ("opinion", "view", "assessment", "judgement", "judgment",
+                                            "estimation")),
+                             *(("correct", "me", "if", *i, "wrong", *but) for i in (("i", "'", "m"), ("i", "am"))
+                               for but in ((), (",", "but"), ("but",)))}, key=len, reverse=True)
+# the court said for 'me' ('Tell the court whether ...', 'Explain to the jury how fast ...', 'Walk us through ...')
+AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],
+            ["me"])
+EXAMINATION_ASKS = sorted({*((verb, *a) for verb in ("tell", "show") for a in AUDIENCE if a != ["me"]),
+                           *(("explain", "to", *a) for a in AUDIENCE), *(("walk", *a, "through") for a in AUDIENCE),
+                           *(("describe", "to", *a) for a in AUDIENCE)}, key=len, reverse=True)
+ATTENTION_TO = sorted({(verb, *whose, "attention", "to") for verb in ("directing", "direct", "turning", "turn",
+                                                                    "drawing", "draw")
+                       for whose in (["your"], ["the", "court", "'", "s"], ["the", "jury", "'", "s"])},
+                      key=len, reverse=True)
+
+
+def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'i put it to you that the bus was parked . is that correct ?' -> 'is it true that the bus was parked ?';
+    'explain to the jury how fast ...' -> 'tell me how fast ...'; 'directing your attention to the start , ...' ->
+    'at the start , ...'; asides that ask nothing dropped with their commas ('what type of vehicle , if you know ,
+    was ...'). With the words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        aside = next((a for a in EXAMINATION_ASIDES if tuple(words[k:k + len(a)]) == a), None)
+        if aside:
+            end = k + len(aside)
+            between = out[-1:] == [","] and words[end:end + 1] == [","]
+            read.append((" ".join(words[k - between:end + between]), "nothing, an aside"))
+            out = out[:-1] if between else out
+            k = end + between + (not out and words[end:end + 1] == [","])
+            continue
+        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c), None)
+        asks = next((a for a in EXAMINATION_ASKS if tuple(words[k:k + len(a)]) == a), None)
+        attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
+        if confirm or asks:
+            said = ["is", "it", "true", "that"] if confirm else ["tell", "me"]
+            read.append((" ".join(confirm or asks), " ".join(said)))
+            out += said
+            k += len(confirm or asks)
+        elif attention:
+            at = words[k + len(attention) + 1:k + len(attention) + 2]
+            said = ["at"] if at and at[0] in START_ADJECTIVES | START_WORDS | TIME_SAID else ["look", "at"]
+            read.append((" ".join(attention), " ".join(said)))
+            out += said
+            k += len(attention)
+        else:
+            out.append(words[k])
+            k += 1
+    if read and any(c in ("is it true that", "nothing, an aside") for _, c in read):
+        end = next((e for e in CONFIRM_ENDS if out[-len(e):] == e), None)
+        if end:
+            read.append((" ".join(end), "?"))
+            out = out[:-len(end)] + ["?"]
+    # an explanation asked of how fast or which way is the grammar's 'tell me' ('explain how fast it was going')
+    if out[:2] in (["explain", "how"], ["explain", "what"], ["explain", "which"]):
+        read.append(("explain", "tell me"))
+        out = ["tell", "me", *out[1:]]
+    return (out, tuple(read)) if read else (words, ())
+
+
 def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'blue minivan and green chopper , they collide ?' -> 'do blue minivan and green chopper collide ?', and 'the
     sedan , it is fast ?' -> 'is the sedan fast ?': the vehicles said first, then asked about as 'they' or 'it' in
@@ -1484,6 +1579,39 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
     return (out, tuple(read)) if read else (words, ())
 
 
+GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
+DESCRIBING = {"the", "a", "an", "this", "that"}
+
+
+def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A report's brackets: a gloss ('accelerating (i.e. under engine power)') says again what the words before it
+    say and is dropped, where it names no vehicle; a vehicle named in brackets after a description of it ('the
+    insured vehicle (the red sedan)', 'the third-party vehicle (blue pickup)') is that vehicle, the description
+    dropped. With the words read so, or the words as they are and ()."""
+    out, read, a = list(words), [], 0
+    while "(" in out[a:]:
+        a = out.index("(", a)
+        b = out.index(")", a) if ")" in out[a:] else None
+        if b is None:
+            break
+        inside = out[a + 1:b]
+        name = inside[inside[:1] in (["the"], ["a"], ["an"]):]
+        if any(inside[:len(g)] == g for g in GLOSS_OPENERS) and not NAMING.intersection(inside):
+            read.append((" ".join(out[a:b + 1]), "nothing, a gloss"))
+            out[a:b + 1] = []
+            continue
+        d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DESCRIBING), None)
+        described = out[d + 1:a] if d is not None else []
+        if name and all(w in NAMING for w in name) and any(w in OBJECT_WORDS for w in name) and described and \
+                not set(described) & (OBJECT_WORDS | {"grey", "and", "or", ","}):
+            read.append((" ".join(out[d:b + 1]), " ".join(["the", *name])))
+            out[d:b + 1] = ["the", *name]
+            a = d + 1
+            continue
+        a = b + 1
+    return (out, tuple(read)) if read else (words, ())
+
+
 SET_VERBS = {"set", "sets", "setting", "initialise", "initialised", "initialize", "initialized", "reset", "change",
              "changed", "changing"}
 SET_VALUES = {"static": "static", "stationary": "static", "zero": "static", "0": "static", "slow": "slow",
@@ -1616,8 +1744,9 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         if out[k:k + 2] == ["w", "/"]:
             out[k:k + 2] = ["with"]
             read.append(("w /", "with"))
-        elif out[k] in ("+", "&", "vs", "versus") and 0 < k < len(out) - 1 and out[k - 1].isalnum() and \
-                (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):
+        elif (out[k] in ("+", "&", "vs", "versus") or out[k] == "x" and out[k - 1:k] and out[k - 1] in NAMING and
+              out[k + 1:k + 2] and out[k + 1] in NAMING) and 0 < k < len(out) - 1 and out[k - 1].isalnum() and \
+                (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):   # 'bus x purple car'
             read.append((out[k], "and"))
             out[k:k + 1 + (out[k + 1] == ".")] = ["and"]
         elif out[k] == "/" and 0 < k < len(out) - 1 and {out[k - 1], out[k + 1]} <= SLASHED:
@@ -1851,6 +1980,11 @@ def floating_plane_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[
     for k in range(2, len(words)):
         if words[k] in PLANE_SAID and words[k - 1] in AFLOAT_SAID and words[k - 2] in DETERMINERS:
             return words[:k] + ["vehicle"] + words[k + 1:], ((f"{words[k - 1]} {words[k]}", f"{words[k - 1]} vehicle"),)
+        # 'what kind of aircraft was hovering?' (read as whether one was, where 'is floating' read right)
+        after = words[k + 1 + (words[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"])):][:1]
+        if words[k] in PLANE_SAID and words[k - 2:k] in ([t, "of"] for t in SHAPE_ASKED) and after and \
+                after[0] in AFLOAT_SAID:
+            return words[:k] + ["vehicle"] + words[k + 1:], ((f"of {words[k]}", "of vehicle"),)
     return words, ()
 
 
@@ -2154,7 +2288,7 @@ IDIOMS = phrase_table({
                                                                  "whizz", "whiz", "race")
        for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
     ("hauling",): ("moving", "fast"),
-    ("at", "a", "fast", "clip"): ("fast",),
+    ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",),
     **{p: ("at", "high", "speed") for p in (("at", "a", "great", "speed"), ("at", "great", "speed"))},
     **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
     ("manner", "of", "vehicle"): ("kind", "of", "vehicle"),
@@ -2229,8 +2363,31 @@ IDIOMS = phrase_table({
     # a small collision by its everyday name
     **{("fender", *dash, bender): (crash,) for bender, crash in (("bender", "collision"), ("benders", "collisions"))
        for dash in ((), ("-",))},
-    **{(clip, the): (hit, the) for clip, hit in (("clips", "hits"), ("clipped", "hit"), ("clipping", "hitting"))
-       for the in ("the", "a", "an", "into")},
+    **{(clip, the): (hit, the) for clip, hit in (("clips", "hits"), ("clipped", "hit"), ("clipping", "hitting"),
+                                                 ("clip", "hit")) for the in ("the", "a", "an", "into")},
+    # a game's words: a vehicle spawns at the start, is afk (away from the keyboard: still), full-sends (fast),
+    # trades paint (collides), has its turbo on (accelerating)
+    **{p: _START for p in (("at", "spawn"), ("on", "spawn"), ("off", "spawn"), ("right", "at", "spawn"),
+                           ("at", "the", "spawn"), *((w, "it", spawned) for w in ("when", "as", "once")
+                                                     for spawned in ("spawned", "spawns", "spawn")))},
+    **{(p, *the, "spawn"): (p, "the", "start") for p in ("from", "since") for the in ((), ("the",))},
+    **{(spawn, *how): (start, *how) for spawn, start in (("spawned", "started"), ("spawns", "starts"),
+                                                        ("spawn", "start"), ("spawning", "starting"))
+       for how in (("slow",), ("fast",), ("static",), ("moving",), ("parked",), ("still",), ("floating",),
+                   ("hovering",), ("accelerating",))},
+    ("afk",): ("static",),
+    **{(*at, than, *dash, "speed"): (said,) for than, said in (("lower", "slower"), ("higher", "faster"))
+       for dash in ((), ("-",)) for at in ((), ("at", "a"))},
+    **{("speed", "check", on): ("what", "is", "the", "speed", "of") for on in ("on", "for")},
+    **{("full", send): said for send, said in (("send", ("fast",)), ("sending", ("going", "fast")),
+                                               ("sent", ("gone",)), ("sends", ("goes", "fast")))},
+    **{(trade, "paint"): (collide,) for trade, collide in (("trade", "collide"), ("trades", "collides"),
+                                                          ("traded", "collided"), ("trading", "colliding"))},
+    **{(*had, "turbo", "on"): said for had, said in (((), ("accelerating",)), (("had",), ("had", "been",
+                                                                                           "accelerating")),
+                                                     (("has",), ("is", "accelerating")),
+                                                     (("with",), ("accelerating",)))},
+    **{("w", the): ("with", the) for the in ("the", "a", "an", "anything", "something", "any")},
     **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"),
                                                              ("flying", "moving"), ("flies", "moves"),
                                                              ("flew", "moved"),
@@ -2480,7 +2637,7 @@ SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "p
                  # 'moving fast, slowly, or not at all', 'or standing still'
                  ("not", "at", "all"): "static", ("standing", "still"): "static", ("at", "rest"): "static",
                  ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
-                 ("rapidly",): "fast"}
+                 ("rapidly",): "fast", ("chill",): "slow"}   # a game's chat: 'afk, chill or full send?'
 VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
 DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front", "back")},
                      ("upwards",): "up", ("upward",): "up", ("downwards",): "down", ("downward",): "down",
@@ -2546,9 +2703,13 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
                ["given", "that"], ["given"], ["now", "that"], ["with"])
-FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation"}
+FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
+              "replay", "feed", "tape", "playback", "livestream"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
-STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["cut", "off"], ["cuts", "off"],
+STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"], ["cut", "off"],
+                ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["terminates"], ["terminated"],
+                ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
+                ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
                 *([v, p] for v in ("is", "was", "gets", "got")
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
@@ -2567,12 +2728,40 @@ END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "co
                   *(["'", "s", e] for e in ("over", "done", "finished", "ended", "through")))
 
 
+# the video imagined going on past its end ('had the footage continued past the point where it is cut off, ...'):
+# the time after it, as 'if the video went on' reads (the video otherwise, 'if it were longer', stays refused)
+CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "rolling"], ["gone", "on"], ["went", "on"],
+             ["run", "on"], ["ran", "on"], ["carried", "on"], ["played", "on"], ["not", "stopped"], ["not", "ended"],
+             ["not", "been", "cut", "off"], ["not", "been", "cut"], ["not", "cut", "off"], ["to", "continue"],
+             ["to", "keep", "going"], ["to", "go", "on"], ["to", "run", "on"])
+CONTINUING = (["had"], ["if"], ["were"])
+
+
+def _video_continued(words: list[str]) -> tuple[int, int] | None:
+    """Where a clause imagining the video going on lies ('had the video continued, ...'), to its comma."""
+    for i in range(len(words)):
+        if [words[i]] not in CONTINUING:
+            continue
+        j = i + 1 + (words[i + 1:i + 2] in (["the"], ["this"]))
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
+            continue
+        j += 1 + (words[i] == "if" and words[j + 1:j + 2] == ["had"])
+        going = next((c for c in CONTINUED if words[j:j + len(c)] == c), None)
+        if going and (words[i] == "were") == (going[0] == "to"):
+            k = j + len(going)
+            comma = words.index(",", k) if "," in words[k:k + 12] else k
+            return i, comma
+    return None
+
+
 # where a simulation's or an engineer's video stops ('in the predicted rollout after the cutoff', 'past the stop point')
 CUT_POINTS = tuple([*roll, p, "the", *c] for roll in ((), ("in", "the", "predicted", "rollout"),
                                                      ("in", "the", "rollout"), ("predicted", "rollout"))
                    for p in ("after", "past", "beyond") for c in (("cutoff",), ("cut", "-", "off"), ("cut", "off"),
                                                                    ("stop", "point"), ("stopping", "point"),
-                                                                   ("cut", "point"), ("cut",)))
+                                                                   ("cut", "point"), ("cut",), ("truncation",),
+                                                                   ("truncation", "point"), ("cutoff", "point"),
+                                                                   ("cut", "-", "off", "point"), ("freeze",)))
 
 
 def _at_cut(words: list[str]) -> tuple[int, int] | None:
@@ -2580,21 +2769,33 @@ def _at_cut(words: list[str]) -> tuple[int, int] | None:
     return (at[0], at[0] + len(at[1])) if at else None
 
 
-def _video_end(words: list[str]) -> tuple[int, int] | None:
-    """Where a clause of the video's end lies ('once the video is over'), as (first, past-last) word."""
+CLAUSE_SEPARATORS = {",", "-", ":", ";", "."}
+
+
+def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
+    """Where a clause of the video's end lies ('once the video is over'; a sentence of its own said first, 'stream
+    froze halfway , ...'; 'after it cuts' once the video is named, here or in the words `before`), as (first,
+    past-last) word."""
     for i in range(len(words)):
         opener = next((o for o in END_OPENERS if words[i:i + len(o)] == o), None)
-        if not opener:
+        alone = not opener and (i == 0 or words[i - 1] in CLAUSE_SEPARATORS)
+        if not opener and not alone:
             continue
-        j = i + len(opener) + (words[i + len(opener):i + len(opener) + 1] in (["the"], ["this"]))
-        if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
+        j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (["the"], ["this"]))
+        named = words[j:j + 1] == ["it"] and opener and FILM_WORDS.intersection([*before, *words[:i]])
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
-        end = next((e for e in sorted(END_PREDICATES + STOPPED_SAID, key=len, reverse=True)
+        # said alone, the video stopped ('clip's cut off early , ...'), not ended ('the video is over . did ...?'
+        # may ask about the video)
+        end = next((e for e in sorted(STOPPED_SAID if alone else END_PREDICATES + STOPPED_SAID, key=len, reverse=True)
                     if words[j + 1:j + 1 + len(e)] == e), None)
         if end:
             k = j + 1 + len(end)
             part = next((p for p in PART_WAY if words[k:k + len(p)] == p), [])
-            return i, k + len(part)
+            k += len(part)
+            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS:
+                continue   # 'the video stops before they collide': the clause is the question's own
+            return i, k
     return None
 
 
@@ -2609,13 +2810,17 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     """'once the video is over, does it hit ...' -> 'after the video ends, does it hit ...', in a question about
     collisions (the only ones asked after the video; of any other it asks at the video's end, which
     `unknown_property` refuses). With the words read so, or the words as they are and ()."""
-    where = _video_end(words) or _at_cut(words)
-    if not where or not asks_impact(words):
+    if not asks_impact(words):
         return words, ()
-    i, k = where
-    if words[i:k] == ["after", "the", "video", "ends"]:
-        return words, ()
-    return words[:i] + ["after", "the", "video", "ends"] + words[k:], ((" ".join(words[i:k]), "after the video ends"),)
+    read, start = [], 0
+    while where := _video_end(words[start:], words[:start]) or _video_continued(words[start:]) or \
+            _at_cut(words[start:]):
+        i, k = start + where[0], start + where[1]
+        if words[i:k] != ["after", "the", "video", "ends"]:
+            read.append((" ".join(words[i:k]), "after the video ends"))
+            words = words[:i] + ["after", "the", "video", "ends"] + words[k:]
+        start = i + 4
+    return words, tuple(read)
 
 
 # A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says
@@ -2713,11 +2918,15 @@ SPATIAL = PARTS | frozenset({"distance", "position", "location", "place", "heigh
 TIME_ASKED = frozenset({"when", "frame", "time", "moment", "point", "instant", "second"})   # 'at which frame ...'
 
 
+ROUGHLY = (["exactly"], ["precisely"], ["just"], ["about"], ["roughly"], ["around"])   # 'at about what time'
+
+
 def _head(words: list[str]) -> list[str]:
     """The question's words after a clause of time said first ('at the start , what ...'), else all of them."""
-    # 'at what time , in seconds , does ...' asks at its first words
+    # 'at what time , in seconds , does ...' (or 'at about what time') asks at its first words
+    k = 1 + (words[1:2] in ROUGHLY)
     return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
-        words[1:2] and words[1] in ASKING) else words
+        words[k:k + 1] and words[k] in ASKING) else words
 
 
 def _asked(words: list[str]) -> tuple[str | None, str]:
@@ -2744,10 +2953,12 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             k += 1
         if k > 2 and head[k:k + 2] == ["'", "s"] and head[k + 2:k + 3]:
             asked = head[k + 2]
-    exactly = 1 + (head[1:2] in (["exactly"], ["precisely"], ["just"], ["about"], ["roughly"], ["around"]))
+    exactly = 1 + (head[1:2] in ROUGHLY)
     if head[:1] and head[0] in ("at", "in", "on", "during") and head[exactly:exactly + 1] and \
             head[exactly] in ASKING and head[exactly + 1:exactly + 2]:
-        asked = head[exactly + 1]   # 'at what height', 'in which frame', 'at exactly what second'
+        # 'at what height', 'in which frame', 'at exactly what second', 'at what approx. height'
+        rest = head[exactly + 1 + (head[exactly + 1:exactly + 2] in ROUGHLY):]
+        asked = rest[0] if rest else head[exactly + 1]
 
     what = f"the '{asked}'" if asked else ""
     if head[:1] == ["how"] and head[1:2] and (head[2:3] and head[2] in AUXILIARIES or head[1] in SPATIAL):
@@ -3117,7 +3328,8 @@ FITTINGS = {"license", "licence", "plate", "plates", "registration", "brand", "l
 OTHER_VEHICLES = {"boat", "boats", "ship", "ships", "train", "trains", "tram", "trams", "tractor", "tractors",
                   "helicopter", "helicopters", "drone", "drones", "balloon", "balloons", "rocket", "rockets",
                   "skateboard", "skateboards", "submarine", "yacht", "canoe", "kayak", "horse", "horses", "cart",
-                  "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine"}
+                  "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine",
+                  "locomotive", "locomotives", "glider", "gliders", "hovercraft"}
 # who caused a collision ('which vehicle was at fault in the collision ...' was read as whether they collide)
 FAULT = {"fault", "faults", "blame", "blamed", "blameworthy", "liable", "liability", "guilty", "culpable"}
 # an opinion of a vehicle ('would you recommend the bus?' was read as whether it collides), how the video was made

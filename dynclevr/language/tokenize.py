@@ -20,6 +20,10 @@ _NOT_STEMS = {"wo": "will", "ca": "can"}
 _DROPPED_G = re.compile(r"(?<!')\b([a-z]{2,}in)'(?!s\b)")   # not a quoted word ("the 'spin'")
 # A chat's mention of someone ("@luna which type ...", "... ? @sam"), first or last; '@' alone is a note's 'at'
 _MENTION = re.compile(r"^\s*@[a-z]\w*\s*[,:]?|(?<=\s)@[a-z]\w*(?=\s*(?:[,:!?.]|$))")
+# A report's abbreviations keep their word and lose the full stop, which would end a sentence there ('what was the
+# approx. speed class of the veh.'): 'approx' and 'veh' are read by synonyms.txt; 'i.e.' and 'e.g.' open a gloss
+_ABBREVIATED = re.compile(r"\b(approx|apprx|veh|esp|incl|resp)\.")
+_GLOSS = re.compile(r"\b([ie])\.\s?([eg])\.?(?=[\s,:)]|$)")
 
 
 def tokenize(text: str) -> list[str]:
@@ -29,6 +33,9 @@ def tokenize(text: str) -> list[str]:
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
     text = _MENTION.sub(" ", text)
+    text = _GLOSS.sub(lambda m: " " + m.group(1) + m.group(2) + " " if m.group(1) + m.group(2) in ("ie", "eg")
+                      else m.group(0), text)
+    text = _ABBREVIATED.sub(r"\1", text)
     said = text.rstrip()
     if said.endswith(" question mark") or said == "question mark":   # dictated
         text = said[:-len("question mark")].rstrip() + "?"
