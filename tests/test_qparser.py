@@ -24,7 +24,8 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
-                                     hedges_dropped, examination_as_asked, glosses_read,
+                                     hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
+                                     ordered, type_of_category_as_vehicle,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -2401,3 +2402,76 @@ def test_a_game_s_words_spawn_afk_full_send_and_trade_paint():
     # 'x' is 'and' only between two vehicles' names
     assert shorthand_as_said(tokenize("bendy bus x purple car"))[0] == tokenize("bendy bus and purple car")
     assert shorthand_as_said(tokenize("the 4 x 4")) == (tokenize("the 4 x 4"), ())
+
+
+def test_a_vehicle_no_catalogue_has_is_refused_where_the_question_names_it():
+    parser = QuestionParser.load()
+    assert_refused(parser, {"Does the zamboni collide with the red biplane?": "'the zamboni'",
+                            "Did the red biplane collide with the zamboni?": "'the zamboni'"})
+    # a plane spotter's names are the catalogue's; what a vehicle 'pops into' is no vehicle
+    jumbo, bizjet, shot = parser.parse_batch([
+        "Does the jumbo trade paint with the red biplane at any point in the video?",
+        "At the start, is the blue bizjet hanging in the air?",
+        "How fast is the brown dirt bike ripping when it first pops into the shot?"])
+    assert "filter_attributes[airliner]" in jumbo and "filter_attributes[biplane]" in jumbo
+    assert bizjet[:3] == ["Objects", "filter_attributes[blue]", "filter_attributes[jet]"]
+    assert shot[-2:] == ["come_in_frame", "query_moving_velocity"]
+
+
+def test_a_type_asked_of_what_a_context_describes_and_a_rest_never_said():
+    said, _ = type_of_category_as_vehicle(tokenize("Something is hovering. What kind of aircraft is it?"))
+    assert said == tokenize("Something is hovering. What kind of vehicle is it?")
+    assert type_of_category_as_vehicle(tokenize("What kind of aircraft is it?"))[1] == ()   # no context: no change
+    parser = QuestionParser.load()
+    hovering, sitting, first = parser.parse_batch([
+        "Something is hovering over the road as the feed starts. What kind of aircraft is it?",
+        "Is the green scooter just sitting there when the video starts?",
+        "From the footage, at what speed does the yellow bicycle enter the frame for the first time - static, slow or "
+        "fast?"])
+    assert hovering == "Objects start filter_floating unique query_attributes[shape]".split()
+    assert sitting[-1] == "is_static" and first[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # read as the static one's colour, and a plane's direction: nothing says either
+    assert_refused(parser, {"What colour is it at the start?": "standing still",
+                            "What type of aeroplane is it at the start?": "a speed or a direction",
+                            "Which direction is the green SUV heading at the final whistle?": "end"})
+
+
+def test_an_order_of_collisions_is_refused():
+    assert ordered(tokenize("what does the green suv hit next ?")) and \
+        ordered(tokenize("does the suv hit the bus after the school bus ?"))
+    for kept in ("will they crash after the red suv ends ?", "after the video ends , will the car hit the bus ?"):
+        assert ordered(tokenize(kept)) == ""
+
+
+def test_another_version_of_the_story_is_a_counterfactual():
+    said, _ = told_otherwise_as_imagined(tokenize("In another telling, the bus hovers from the start. Would it hit "
+                                                  "the car?"))
+    assert said == tokenize("imagine the bus hovers from the start. Would it hit the car?")
+    said, _ = told_otherwise_as_imagined(tokenize("Under an alternative ruling where the minivan starts fast, does"))
+    assert said[:4] == ["in", "a", "world", "where"]
+    assert told_otherwise_as_imagined(tokenize("In this story, does the red car hit the bus?"))[1] == ()
+    parser = QuestionParser.load()
+    tale, rewrite, story = parser.parse_batch([
+        "Spin a tale in which the mountain bike begins at full speed. Would the mountain bike run into the cyan one?",
+        "Rewrite the opening so that the yellow station wagon starts out fast. Does the wagon collide with the red one "
+        "in that version?", "In this story, does the red car hit the bus?"])
+    assert "Counterfactual_moving_fast" in tale and "Counterfactual_moving_fast" in rewrite and story[0] == "Events"
+
+
+def test_a_referee_s_a_newsroom_s_and_a_mechanic_s_words():
+    parser = QuestionParser.load()
+    kick, power, carrying, callers, sources, feed, played = parser.parse_batch([
+        "Which kind of vehicle has its engine on and is gathering speed at kick-off?",
+        "On the whistle, was the chopper picking up speed under its own power?",
+        "At the point of contact between the green SUV and the yellow pickup, what speed was the SUV carrying - "
+        "static, slow or fast?",
+        "Callers on line two want to know how quickly the school bus is travelling in the first moments of the clip. "
+        "Stationary, slow or fast?",
+        "Sources tell us the blue motorbike was sitting dead still when the feed began; can we confirm that?",
+        "The feed cuts before the play finishes: will the blue school bus and the grey scooter go on to collide?",
+        "The film stops before the story is finished. Had it played on, would the purple mountain bike and the green "
+        "pickup collide?"])
+    assert kick == "Objects start filter_accelerating unique query_attributes[shape]".split()
+    assert power[-2:] == ["start", "is_accelerating"] and carrying[-2:] == ["get_frame", "query_moving_velocity"]
+    assert callers[-2:] == ["start", "query_moving_velocity"] and sources[-2:] == ["start", "is_static"]
+    assert feed[0] == "futureEvents" and played[0] == "futureEvents"

@@ -286,13 +286,16 @@ class QuestionParser:
         words, corrected = corrections_dropped(words)
         words, setting = settings_as_imagined(words)
         words, scenario = scenario_as_asked(words)
-        corrected += setting + scenario
+        words, told = told_otherwise_as_imagined(words)
+        corrected += setting + scenario + told
         words, examined = examination_as_asked(words)
         corrected += examined
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
         corrected += hedged + dislocated
+        words, kind = type_of_category_as_vehicle(words)
         words, context = context_as_question(words, self.known)
+        context = kind + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
         after += impact
@@ -393,7 +396,7 @@ class QuestionParser:
         ranked = ranking(said) or properties_joined(said) or times_joined(said) or possibility_asked(said) or \
             onset_asked(said) or \
             several_asked(said) or questions_joined(said) or quantified(said) or premised(said) or chained(said) or \
-            speed_measure(said) or checked_attribute(said) or imagined_otherwise(said, words) or \
+            ordered(said) or speed_measure(said) or checked_attribute(said) or imagined_otherwise(said, words) or \
             otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
@@ -418,6 +421,13 @@ class QuestionParser:
                                                                     for a, b in zip(words, words[1:]))):
             return [], (f"the question asks how '{manner}', which no question here asks (they ask how fast a vehicle "
                         "moves, which way, its colour or type, and about its collisions)"), read_as, said
+        # 'does the zamboni hit the bus?': an unknown word that heads a noun phrase names an object no catalogue has
+        # (the decoder read the question as the bus's alone)
+        headed = next((f"{a} {b}" for k, (a, b) in enumerate(zip(words, words[1:])) if a in ("the", "a", "an")
+                       and b not in self.known and _unknown_vehicle(words, k)), None)
+        if headed:
+            return [], (f"the question names '{headed}', which is no vehicle here (they are cars, buses, motorbikes, "
+                        "bicycles and aeroplanes)"), read_as, said
         unknown = [w for w in words if w not in self.known]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as, said
@@ -504,6 +514,24 @@ class QuestionParser:
             return Parse(None, f"the question names the {' and the '.join(unused)}, but no question family here "
                                "reads it that way", p)
         return Parse(tokens, "", p)
+
+
+# where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
+# collision's verb names last ('... made contact with the jumbo?')
+SUBJECT_VERBS = {"hit", "hits", "collide", "collides", "crash", "crashes", "bump", "bumps", "move", "moves", "moving",
+                 "start", "starts", "go", "goes", "going", "accelerate", "accelerates", "accelerating", "float",
+                 "floats", "floating", "fast", "slow", "static", "faster", "slower", "and"}
+PARTNER_WORDS = {"with", "into", "hit", "hits", "hitting", "struck", "strike", "strikes"}
+
+
+def _unknown_vehicle(words: list[str], k: int) -> bool:
+    """Whether the unknown word after the determiner at k is where the question names a vehicle."""
+    after = words[k + 2:k + 3]
+    subject = words[k] == "the" and words[k - 1:k] and words[k - 1] in YES_NO_OPENERS and after and \
+        after[0] in SUBJECT_VERBS
+    partner = words[k - 1:k] and words[k - 1] in PARTNER_WORDS and after in ([], ["?"], ["."], [","]) and \
+        asks_impact(words[:k - 1])   # 'crashes into the zamboni', not 'pops into the shot'
+    return bool(subject or partner)
 
 
 # How often a thing happens ('twice', 'more than once', 'three times'): a count, which no program makes
@@ -887,7 +915,8 @@ PARTICIPLES.update({form: v + ("d" if v.endswith("e") else "ed") for v in REGULA
 
 
 IMAGINED_BACK = tuple((p, d, n) for p in ("in", "within") for d in ("that", "this", "such", "the") for n in (
-    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate"))
+    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate", "telling", "retelling",
+    "tale", "story", "ruling", "reality"))
 
 
 def _imagining_only(sentence: list[str]) -> bool:
@@ -1162,12 +1191,20 @@ CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"]
                                                                "contention", "recollection")),
               *(("is", "it", "not", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
               *(("is", "not", "it", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
-              ("is", "it", "the", "case", "that")}
+              ("is", "it", "the", "case", "that"),
+              # a report put to be confirmed ('Sources tell us the bus was parked; can we confirm that?')
+              *((*said, *that) for said in (("sources", "tell", "us"), ("sources", "say"), ("we", "are", "told"),
+                                            ("we", "'", "re", "told"), ("i", "am", "told"), ("i", "'", "m", "told"),
+                                            ("reports", "say"), ("word", "is"), ("rumour", "has", "it"),
+                                            ("rumor", "has", "it")) for that in ((), ("that",)))}
 # ... closed by a question of its own ('. Is that correct?', '. Do you agree?'): the statement's question mark
-CONFIRM_ENDS = [[".", *q, "?"] for q in (["is", "that", "correct"], ["is", "that", "right"], ["is", "that", "true"],
-                                         ["is", "that", "so"], ["is", "that", "not", "so"], ["is", "not", "that", "so"],
-                                         ["correct"], ["yes"], ["right"], ["do", "you", "agree"],
-                                         ["would", "you", "agree"], ["agreed"], ["true"])]
+CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
+                for q in (["is", "that", "correct"], ["is", "that", "right"], ["is", "that", "true"],
+                          ["is", "that", "so"], ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"],
+                          ["yes"], ["right"], ["do", "you", "agree"], ["would", "you", "agree"], ["agreed"], ["true"],
+                          ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
+                          ["can", "anyone", "confirm", "that"], ["is", "that", "accurate"], ["can", "we", "confirm"],
+                          ["can", "you", "confirm"])]
 # asides of an examination, which ask nothing ('in your own words', 'if you know', 'for the sake of argument')
 EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know"), ("if", "you", "can"),
                              ("if", "you", "recall"), ("if", "you", "remember"), ("as", "best", "you", "can"),
@@ -1252,6 +1289,18 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     said = [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
         ["do" if len(named) == 2 else "does", *words[:end], verb, *rest]
     return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
+
+
+def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'... . what kind of aircraft is it ?' -> '... . what kind of vehicle is it ?': the category in a question of
+    the type of what 'it' is names no other object (it was read as a plane of its own, the context's description of
+    'it' lost). With the words read so, or the words as they are and ()."""
+    for k in range(len(words) - 4):
+        if SENTENCE_ENDS.intersection(words[:k]) and words[k] in ("what", "which") and words[k + 1] in SHAPE_ASKED and \
+                words[k + 2] == "of" and words[k + 3] in NOUNS_SAID | PLANE_SAID and \
+                words[k + 4:k + 6] in (["is", "it"], ["was", "it"]):
+            return words[:k + 3] + ["vehicle"] + words[k + 4:], ((f"of {words[k + 3]}", "of vehicle"),)
+    return words, ()
 
 
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1676,6 +1725,51 @@ def scenario_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     return out, tuple(read)
 
 
+# A change told as another version of the story ('In another telling, the airliner hovers from the start. Would
+# ...?', 'Spin a tale in which the bike begins fast.', 'Under an alternative ruling where ...'): the grammar's
+# 'imagine' and 'in a world where' (they were read as what happens in the video)
+OTHERWISE = {"another", "different", "alternative", "alternate", "other"}
+TOLD = {"version", "telling", "retelling", "tale", "story", "ruling", "timeline", "universe", "reality", "world",
+        "account", "cut", "edit"}
+TOLD_OF = (("of", "this", "tale"), ("of", "the", "tale"), ("of", "this", "story"), ("of", "the", "story"),
+           ("of", "events"), *(("of", d, f) for d in ("the", "this") for f in ("video", "clip", "footage", "replay")))
+TELLING = {("spin", "a", "tale"), ("tell", "a", "tale"), ("tell", "a", "story"), ("write", "a", "story"),
+           ("picture", "a", "story"), ("imagine", "a", "story"), ("imagine", "a", "version"),
+           ("imagine", "a", "tale"), *((r, *the, o) for r in ("rewrite", "retell", "redo", "rerun", "replay")
+                                       for the in ((), ("the",), ("this",))
+                                       for o in ("opening", "story", "start", "beginning", "tale", "clip", "video",
+                                                 "scene", "footage"))}
+WHICH = (("in", "which"), ("where",), ("so", "that"), ("such", "that"))
+
+
+def told_otherwise_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'in another telling , the bus is parked from the start . would ...' -> 'imagine the bus is parked ...';
+    'under an alternative ruling where ...' -> 'in a world where ...'; 'spin a tale in which ...' -> 'imagine ...'.
+    With the words read so, or the words as they are and ()."""
+    j = next((len(t) for t in TELLING if tuple(words[:len(t)]) == t), 0)
+    if j:
+        which = next((w for w in WHICH if tuple(words[j:j + len(w)]) == w), None)
+        if which:
+            end = j + len(which)
+            return ["imagine", *words[end:]], ((" ".join(words[:end]), "imagine"),)
+        return words, ()
+    if words[:1] not in (["in"], ["under"]):
+        return words, ()
+    k = 1 + (words[1:2] in (["a"], ["an"], ["some"]))
+    other = words[k:k + 1] and words[k] in OTHERWISE
+    k += bool(other)
+    if not other or not words[k:k + 1] or words[k] not in TOLD:
+        return words, ()
+    k += 1 + next((len(o) for o in TOLD_OF if tuple(words[k + 1:k + 1 + len(o)]) == o), 0)
+    which = next((w for w in WHICH if tuple(words[k:k + len(w)]) == w), None)
+    if which:
+        end = k + len(which)
+        return ["in", "a", "world", "where", *words[end:]], ((" ".join(words[:end]), "in a world where"),)
+    if words[k:k + 1] == [","]:
+        return ["imagine", *words[k + 1:]], ((" ".join(words[:k + 1]), "imagine"),)
+    return words, ()
+
+
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
     ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
@@ -1685,7 +1779,9 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         j = k + (words[k] in OWNERS)
         while words[j:j + 1] and words[j] in TOYS:
             j += 1
-        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])):
+        # ('the red little jet': after the colour too, fondness, not CLEVR's size)
+        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])
+                                                                or out[-1:] and out[-1] in COLOR_NAMES):
             said = ["the"] if words[k] in OWNERS else []
             read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
             out += said
@@ -1775,6 +1871,13 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         b = out.index(")", a)
         if out[b + 1:] in ([], ["?"], ["."]):
             out = [*out[:a], ":", *out[a + 1:b], *out[b + 1:]]
+    # choices said as a sentence of their own ('How fast is the bus at the start. Stationary, slow or fast?'): the
+    # question's own (the last sentence was read as the question)
+    stop = max((k for k, w in enumerate(out[:-1]) if w in (".", "?")), default=None)
+    if stop and out[-1:] == ["?"] and "or" in out[stop + 1:] and \
+            set(out[stop + 1:-1]) <= SLASHED | {",", "or"} and len(set(out[stop + 1:-1]) & SLASHED) >= 2:
+        read.append((out[stop], ":"))
+        out = [*out[:stop], ":", *out[stop + 1:]]
     if not read:
         return words, ()
     return out, tuple(dict.fromkeys(read))
@@ -2004,6 +2107,10 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     phrase before ', but' ('not sure about this one , but'), where a question follows it and the preamble sets no
     condition and no time ('thinking only about the moment they collide ,' says when). With the preamble read as
     nothing, or the words as they are and ()."""
+    # 'from the footage , at what speed ...': where the question looks, which is the video (the start was read)
+    j = 1 + (words[1:2] in (["the"], ["this"]))
+    if words[:1] == ["from"] and words[j:j + 2] and words[j] in FILM_WORDS and words[j + 1] == ",":
+        return words[j + 2:], ((" ".join(words[:j + 2]), "nothing, a preamble"),)
     k = next((k for k, w in enumerate(words) if w == "," and words[k + 1 + (words[k + 1:k + 2] == ["but"]):][:1]
               and words[k + 1 + (words[k + 1:k + 2] == ["but"])] in QUESTION_OPENERS), None)
     if k is None:
@@ -2098,7 +2205,8 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|cou
                      r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
-                     r"|(?:my )?[a-z]+ (?:wants|wanted|would like|' d like|needs) to know)"
+                     r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know"
+                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were) (?:asking|wondering))"
                      r" (?:, )?(?:please )?")
 # whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
 # 'is it true that'
@@ -2376,6 +2484,21 @@ IDIOMS = phrase_table({
        for how in (("slow",), ("fast",), ("static",), ("moving",), ("parked",), ("still",), ("floating",),
                    ("hovering",), ("accelerating",))},
     ("afk",): ("static",),
+    # a referee's start ('at kick-off', 'on the whistle'), an engine's power, a clause's start ('as things get under
+    # way'), a stop said 'dead still'
+    **{(*at, *kick): (("from", "the", "start") if at[:1] == ("from",) else _START)
+       for at in (("at",), ("at", "the"), ("right", "at", "the"), ("right", "at"), ("from",), ("from", "the"))
+       for kick in (("kick", "-", "off"), ("kickoff",), ("kick", "off"))},
+    **{p: _START for p in (("on", "the", "whistle"), ("at", "the", "whistle"), ("at", "the", "opening", "whistle"),
+                           ("at", "the", "first", "whistle"), ("on", "the", "opening", "whistle"))},
+    **{("under", *own, "power"): ("with", "its", "engine", "on") for own in ((), ("its", "own"), ("engine",),
+                                                                              ("its", "engine's"))},
+    **{(w, "things", get, *way): _START for w in ("as", "when") for get in ("get", "got", "are", "were")
+       for way in (("under", "way"), ("underway",))},
+    ("dead", "still"): ("still",),
+    **{(t, p): (c, p) for t, c in (("tangle", "collide"), ("tangles", "collides"), ("tangled", "collided"))
+       for p in (",", "?", ".")},
+    ("going", "back", "over"): ("looking", "at"),
     **{(*at, than, *dash, "speed"): (said,) for than, said in (("lower", "slower"), ("higher", "faster"))
        for dash in ((), ("-",)) for at in ((), ("at", "a"))},
     **{("speed", "check", on): ("what", "is", "the", "speed", "of") for on in ("on", "for")},
@@ -2491,6 +2614,9 @@ IDIOMS = phrase_table({
 
 
 IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # said first: 'imagine' (not 'the picture')
+COMING = ("comes", "come", "came", "coming")
+SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
+APPEARING = ("appears", "appear", "appeared", "appearing")
 
 
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2521,6 +2647,22 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if k is not None:
             read += ((f"{out[k]} {out[k + 1]}", "been static"),)
             out[k:k + 2] = ["been", "static"]
+    # 'what speed was the suv carrying' is the speed it moves at (refused as what a vehicle carries)
+    for k in range(1, len(out)):
+        if out[k] in SPEED_CARRIED and "speed" in out[:k] and out[k + 1:k + 2] in ([], ["?"], ["-"], [","], ["."],
+                                                                                    [":"]):
+            read += ((out[k], SPEED_CARRIED[out[k]]),)
+            out[k] = SPEED_CARRIED[out[k]]
+    # 'when it comes into view for the first time' is the grammar's 'when it first comes into view' (it was read as
+    # the start)
+    for k in range(len(out)):
+        if out[k:k + 4] == ["for", "the", "first", "time"]:
+            seen = next((n for n in (4, 3, 2, 1) if k >= n and (out[k - n:k] in (
+                [c, "into", "view"] for c in COMING) or out[k - n:k] in ([a] for a in APPEARING))), None)
+            if seen:
+                read += ((f"{' '.join(out[k - seen:k])} for the first time", f"first {' '.join(out[k - seen:k])}"),)
+                out[k - seen:k + 4] = ["first", *out[k - seen:k]]
+                break
     # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
     # accelerating, the grammar's 'speeding up')
     speeding = [k for k, w in enumerate(out) if w == "speeding" and out[k + 1:k + 2] not in (["up"], ["along"])]
@@ -2707,7 +2849,7 @@ FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequenc
               "replay", "feed", "tape", "playback", "livestream"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"], ["cut", "off"],
-                ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["terminates"], ["terminated"],
+                ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
                 ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
                 ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
                 *([v, p] for v in ("is", "was", "gets", "got")
@@ -2737,13 +2879,17 @@ CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "ro
 CONTINUING = (["had"], ["if"], ["were"])
 
 
-def _video_continued(words: list[str]) -> tuple[int, int] | None:
-    """Where a clause imagining the video going on lies ('had the video continued, ...'), to its comma."""
+def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
+    """Where a clause imagining the video going on lies ('had the video continued, ...'; 'had it played on' once the
+    video is named, here or in the words `before`), to its comma."""
     for i in range(len(words)):
         if [words[i]] not in CONTINUING:
             continue
         j = i + 1 + (words[i + 1:i + 2] in (["the"], ["this"]))
-        if words[j:j + 1] == [] or words[j] not in FILM_WORDS:
+        # ('had it played on': only a video plays)
+        named = words[j:j + 1] == ["it"] and (FILM_WORDS.intersection([*before, *words[:i]])
+                                              or words[j + 1:j + 3] == ["played", "on"])
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
         j += 1 + (words[i] == "if" and words[j + 1:j + 2] == ["had"])
         going = next((c for c in CONTINUED if words[j:j + len(c)] == c), None)
@@ -2770,6 +2916,7 @@ def _at_cut(words: list[str]) -> tuple[int, int] | None:
 
 
 CLAUSE_SEPARATORS = {",", "-", ":", ";", "."}
+FILM_KINDS = {"broadcast", "camera", "live", "video", "traffic", "tv", "news", "security", "dashcam"}
 
 
 def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
@@ -2782,6 +2929,7 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
         if not opener and not alone:
             continue
         j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (["the"], ["this"]))
+        j += words[j:j + 1] != [] and words[j] in FILM_KINDS and words[j + 1:j + 2] != [] and words[j + 1] in FILM_WORDS
         named = words[j:j + 1] == ["it"] and opener and FILM_WORDS.intersection([*before, *words[:i]])
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
@@ -2793,6 +2941,10 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
             k = j + 1 + len(end)
             part = next((p for p in PART_WAY if words[k:k + len(p)] == p), [])
             k += len(part)
+            # '... before the play finishes ,': what the video stopped before
+            sep = next((m for m in range(k + 1, min(k + 9, len(words))) if words[m] in CLAUSE_SEPARATORS), None)
+            if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]):
+                k = sep
             if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS:
                 continue   # 'the video stops before they collide': the clause is the question's own
             return i, k
@@ -2813,7 +2965,7 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     if not asks_impact(words):
         return words, ()
     read, start = [], 0
-    while where := _video_end(words[start:], words[:start]) or _video_continued(words[start:]) or \
+    while where := _video_end(words[start:], words[:start]) or _video_continued(words[start:], words[:start]) or \
             _at_cut(words[start:]):
         i, k = start + where[0], start + where[1]
         if words[i:k] != ["after", "the", "video", "ends"]:
@@ -3137,6 +3289,10 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     if ops & REST_OPERATIONS and (SPEED_CLASS_WORDS - COMPARISONS - {"still"}).intersection(words) and \
             not (REST_WORDS | NEGATIONS).intersection(words):
         return "the question asks a speed (slow or fast), but its nearest reading asks whether the vehicle is static"
+    # 'what colour is it at the start?' was read as the colour of the static one
+    if ops & REST_OPERATIONS and not (REST_WORDS | NEGATIONS | UNMOVED | RESTING).intersection(words):
+        return ("the question says nothing of standing still, but its nearest reading asks about it: ask whether the "
+                "vehicle is static, slow or fast")
     for k, w in enumerate(words):
         if w not in NEGATIONS or offered(words, k):
             continue
@@ -3863,6 +4019,21 @@ def premised(words: list[str]) -> str:
             "a counterfactual ('if X had been ..., would ...')")
 
 
+def ordered(words: list[str]) -> str:
+    """An order of collisions or of vehicles ('what does it hit next', 'after the school bus'), or ''."""
+    said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 1)
+                 if words[k + 1] == "next" and words[k].startswith(IMPACT_STEMS)), None) or \
+        next((" ".join(words[k:k + 2 + j]) for k in range(len(words) - 2) if words[k] in ("after", "before")
+              and words[k + 1] in DETERMINERS for j in (3, 2, 1) if words[k + 1 + j:k + 2 + j] and
+              words[k + 1 + j] in OBJECT_WORDS - set(COLOR_NAMES) and all(
+                  w in OBJECT_WORDS for w in words[k + 2:k + 1 + j])
+              and words[k + 2 + j:k + 3 + j] in ([], ["?"], ["."], [","])), None)   # not 'after the bus ends'
+    if said is None:
+        return ""
+    return (f"the question asks about an order of collisions or vehicles ('{said}'), which no question here asks: "
+            "ask whether they collide")
+
+
 def chained(words: list[str]) -> str:
     """A vehicle described through another described vehicle ('the vehicle hit by the vehicle that hits the bus'),
     or ''."""
@@ -3953,6 +4124,12 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")
+    # 'what type of aeroplane is it at the start?' read as its direction: a type or colour asked is no motion
+    kind = head[1] if head[:1] in (["what"], ["which"]) and head[1:2] and head[1] in ATTRIBUTE_NOUNS else None
+    if kind and head[2:4] != ["of", "speed"] and operation(program[-1]) in ("query_moving_velocity",
+                                                                              "query_moving_direction"):
+        return (f"the question asks the {kind}, but its nearest reading asks a speed or a direction: no question here "
+                "reads it")
     # 'which vehicle hits the bus first?' read as the bus's direction: a vehicle asked for is its colour or type
     if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
             operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):
@@ -4400,7 +4577,9 @@ END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "nea
     [[*p, "the", *very, a, *few, f] for p in (("in",), ("at",), ("during",), ()) for very in ((), ("very",))
      for a in ("last", "final", "closing")
      for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments",
-                                                         "timestep", "timesteps")]
+                                                         "timestep", "timesteps", "instant", "instants", "stage",
+                                                         "stages", "part", "whistle", "shot", "shots", "scene",
+                                                         "scenes")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
 

@@ -39,6 +39,9 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
                   "lorry": "truck", "van": "minivan", "pushbike": "bicycle",
                   "jetliner": "airliner", "warplane": "fighter", "war plane": "fighter",
+                  # as plane spotters name them
+                  "jumbo": "airliner", "jumbo jet": "airliner", "bizjet": "jet", "business jet": "jet",
+                  "executive jet": "jet", "corporate jet": "jet",
                   "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
                   "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
