@@ -25,7 +25,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
                                      hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
-                                     ordered, type_of_category_as_vehicle,
+                                     ordered, type_of_category_as_vehicle, digressions_dropped, prompt_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
                                      framing_dropped, future_unread, heading_as_direction, height_as_aloft,
@@ -2475,3 +2475,33 @@ def test_a_referee_s_a_newsroom_s_and_a_mechanic_s_words():
     assert power[-2:] == ["start", "is_accelerating"] and carrying[-2:] == ["get_frame", "query_moving_velocity"]
     assert callers[-2:] == ["start", "query_moving_velocity"] and sources[-2:] == ["start", "is_static"]
     assert feed[0] == "futureEvents" and played[0] == "futureEvents"
+
+
+def test_a_digression_between_commas_and_a_prompt_s_wrapping_are_dropped():
+    said, read = digressions_dropped(tokenize("So, Jen, and this is the part I love, was the red sedan parked?"))
+    assert said == tokenize("was the red sedan parked?") and all(r == "nothing, a digression" for _, r in read)
+    said, _ = digressions_dropped(tokenize("Was the mountain bike motionless when it hit the bus, my dear fellow?"))
+    assert said == tokenize("Was the mountain bike motionless when it hit the bus?")
+    # what says a time, a vehicle, a motion, a number or an instruction stays ('Halfway through,', 'On a scale of 1 to
+    # 10,', 'State the duration,', 'In the initial frames,', 'static, slow or fast')
+    for kept in ("Halfway through, which way is the biplane flying?", "On a scale of 1 to 10, how fast is it?",
+                 "State the duration, in seconds, for which it stays parked.", "is it static, slow, or fast?"):
+        assert digressions_dropped(tokenize(kept)) == (tokenize(kept), ()), kept
+    said, _ = prompt_dropped(tokenize("Act as a physics expert and tell me how fast the bus was going."))
+    assert said == tokenize("tell me how fast the bus was going.")
+    said, _ = prompt_dropped(tokenize("Q: is the bus parked at the start? A (yes/no):"))
+    assert said == tokenize("is the bus parked at the start?")
+    assert prompt_dropped(tokenize("Yes or no only: is the biplane hovering?"))[0] == \
+        tokenize("is the biplane hovering?")
+    parser = QuestionParser.load()
+    pray, hue, wonder = parser.parse_batch([
+        "Of what colour, pray, was the vehicle that dawdled slowly along when the recording began?",
+        "The vehicle hovering at the outset: of what hue was it, pray?",
+        "When the purple one collided with the brown car, at what speed, I wonder, was the purple one moving?"])
+    # 'pray' is no slip of 'gray': a colour is fixed from a slip only before a vehicle's name
+    assert pray == "Objects start filter_moving_velocity[slow] unique query_attributes[color]".split()
+    assert hue == "Objects start filter_floating unique query_attributes[color]".split()
+    assert parser.parse("Is the pred sedan fast at the start?")[1] == "filter_attributes[red]"
+    assert_refused(parser, {"Act as a physics expert and tell me at what second the red sedan hits the bus.": "when",
+                            "What colour is the vehicle that the red sedan passed without touching?": "without",
+                            "Was the blue scooter going slowly as the tape drew to its close?": "end"})

@@ -300,10 +300,14 @@ class QuestionParser:
         words, impact = impact_said_first(words)
         after += impact
         words, owned = owners_dropped(words)
+        words, prompted = prompt_dropped(words)
         words, labelled = asides_dropped(words)
+        labelled = prompted + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)
+        words, digressed = digressions_dropped(words)
+        idioms += digressed
         words, described = description_as_said(words)
         words, typed = type_as_said(words)
         words, afloat = floating_plane_as_vehicle(words)
@@ -344,6 +348,9 @@ class QuestionParser:
                  or (w != words[0] and OBJECT_LEXICON.closest(w)) or (len(w) >= TYPO_LETTERS and self.words.closest(w))
                  or w
                  for w in words if w not in self.known}
+        # a colour only before a vehicle's name ('of what hue was it , pray ?': 'pray' was read as a gray vehicle)
+        fixed = {w: k for w, k in fixed.items() if k not in COLOR_NAMES or any(
+            a == w and b in NAMING | GENERIC | GENERIC_NOUNS for a, b in zip(words, words[1:]))}
         # before 'than' a slip is of a comparative, where it is of one and of other words ('fater': 'after', 'faster')
         fixed.update({w: hits[0] for w, after in zip(words, words[1:]) if w in fixed and after == "than"
                       and len(hits := [h for h in slips(w, self.readable, SPELLINGS) if h in COMPARISONS]) == 1})
@@ -396,8 +403,8 @@ class QuestionParser:
         ranked = ranking(said) or properties_joined(said) or times_joined(said) or possibility_asked(said) or \
             onset_asked(said) or \
             several_asked(said) or questions_joined(said) or quantified(said) or premised(said) or chained(said) or \
-            ordered(said) or speed_measure(said) or checked_attribute(said) or imagined_otherwise(said, words) or \
-            otherwise_compared(said, words)
+            ordered(said) or impact_denied(said) or speed_measure(said) or checked_attribute(said) or \
+            imagined_otherwise(said, words) or otherwise_compared(said, words)
         if ranked:
             return [], ranked, read_as, said
         alike = speeds_alike(said)
@@ -748,6 +755,40 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
             not ADDRESSED & set(words[:k]):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
+
+
+# A digression between commas, or before the first, that says nothing the question could need ('So, Jen, and this
+# is the part I love, was the red sedan ...', 'at what speed, I wonder, was it moving?'): no vehicle, motion,
+# collision, time, place, condition, negation or asking in it.
+def _says_something(span: list[str]) -> bool:
+    return bool(set(span) & SAYING) or asks_impact(span) or any(
+        w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() for w in span)
+
+
+def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
+    the digressions read as nothing, or the words as they are and ()."""
+    commas = [k for k, w in enumerate(words) if w == ","]
+    if not commas:
+        return words, ()
+    drop, read, start = set(), [], 0
+    for c in commas:
+        span = words[start:c]
+        if span and not _says_something(span):
+            drop |= set(range(start, c + 1))
+            read.append(" ".join(span))
+        start = c + 1
+    # ... and after the last comma, before the question mark ('..., my dear fellow?'), where it asks nothing itself
+    # (', is it crawlig?' is the question, its slip not yet read)
+    end = len(words) - (words[-1:] in (["?"], ["."]))
+    if words[start:end] and end - start <= 4 and not _says_something(words[start:end]) and \
+            not (YES_NO_OPENERS | QUESTION_OPENERS | {"it", "they"}).intersection(words[start:end]):
+        drop |= set(range(start - 1, end))
+        read.append(" ".join(words[start:end]))
+    rest = [w for k, w in enumerate(words) if k not in drop]
+    if not read or not _says_something(rest):
+        return words, ()
+    return rest, tuple((r, "nothing, a digression") for r in read)
 
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
@@ -1921,6 +1962,38 @@ def _purpose(heading: list[str], rest: list[str]) -> bool:
          or bool(CONDITION_WORDS.intersection(rest)))
 
 
+# A prompt's wrapping around the question, as people paste it to an assistant ('Act as a mechanic: ...', 'Yes or no
+# only: ...', 'Q: ... ? A (yes/no):'): a role, and a heading of instructions that asks nothing
+PROMPT_WORDS = {"yes", "or", "no", "only", "answer", "respond", "reply", "with", "one", "word", "a", "an", "the",
+                "single", "step", "by", "-", "reasoning", "is", "welcome", "fine", "but", "end", "think", "query",
+                "question", "q", "task", "consider", "hypothetical", "and", "/", "(", ")", "vehicle", "type", "colour",
+                "color", "output", "format", "please", "briefly", "just", "your", "final", "instruction", "prompt",
+                "following", "true", "false", "in", "words", "short", "answers", "aloud", "first", "then"}
+ROLE_ENDS = {"and", ":", ",", "."}
+
+
+def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'act as a physics expert and tell me how fast ...' -> 'tell me how fast ...'; 'yes or no only : is it ...' ->
+    'is it ...'; '... ? a ( yes / no ) :' -> '... ?'. With the wrapping read as nothing, or the words as they are
+    and ()."""
+    out, read = list(words), []
+    if out[:2] == ["act", "as"]:
+        end = next((k for k in range(2, min(len(out), 10)) if out[k] in ROLE_ENDS), None)
+        if end is not None and not OBJECT_WORDS.intersection(out[:end]):
+            read.append((" ".join(out[:end + 1]), "nothing, a role"))
+            out = out[end + 1:]
+    colon = out.index(":") if ":" in out[:12] else None
+    if colon and set(out[:colon]) <= PROMPT_WORDS and out[colon + 1:]:
+        read.append((" ".join(out[:colon + 1]), "nothing, an instruction"))
+        out = out[colon + 1:]
+    asked = max((k for k, w in enumerate(out) if w == "?"), default=None)
+    if asked is not None and out[asked + 1:] and out[asked + 1] == "a" and set(out[asked + 1:]) <= PROMPT_WORDS | {
+            ":"}:
+        read.append((" ".join(out[asked + 1:]), "nothing, an answer's place"))
+        out = out[:asked + 1]
+    return (out, tuple(read)) if read else (words, ())
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -2496,6 +2569,10 @@ IDIOMS = phrase_table({
     **{(w, "things", get, *way): _START for w in ("as", "when") for get in ("get", "got", "are", "were")
        for way in (("under", "way"), ("underway",))},
     ("dead", "still"): ("still",),
+    **{("let", *us, v): (v,) for us in (("us",), ("'", "s")) for v in ("suppose", "assume", "imagine", "pretend")},
+    ("let", "us", "say"): ("suppose",),
+    **{(draw, "to", its, close): (ends,) for draw, ends in (("draws", "ends"), ("drew", "ended"), ("drawing", "ending"))
+       for its in ("its", "a", "an") for close in ("close", "end")},
     **{(t, p): (c, p) for t, c in (("tangle", "collide"), ("tangles", "collides"), ("tangled", "collided"))
        for p in (",", "?", ".")},
     ("going", "back", "over"): ("looking", "at"),
@@ -2844,7 +2921,8 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
 END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
-               ["given", "that"], ["given"], ["now", "that"], ["with"])
+               ["given", "that"], ["given"], ["now", "that"], ["with"],
+               *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")))
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
               "replay", "feed", "tape", "playback", "livestream"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
@@ -2965,8 +3043,11 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     if not asks_impact(words):
         return words, ()
     read, start = [], 0
-    while where := _video_end(words[start:], words[:start]) or _video_continued(words[start:], words[:start]) or \
-            _at_cut(words[start:]):
+    # the clause said first, of the video's end, its going on or its cut ('had the footage continued past the point
+    # where it is cut off, ...' is one clause)
+    while where := min(filter(None, (_video_end(words[start:], words[:start]),
+                                     _video_continued(words[start:], words[:start]), _at_cut(words[start:]))),
+                       default=None):
         i, k = start + where[0], start + where[1]
         if words[i:k] != ["after", "the", "video", "ends"]:
             read.append((" ".join(words[i:k]), "after the video ends"))
@@ -3074,7 +3155,11 @@ ROUGHLY = (["exactly"], ["precisely"], ["just"], ["about"], ["roughly"], ["aroun
 
 
 def _head(words: list[str]) -> list[str]:
-    """The question's words after a clause of time said first ('at the start , what ...'), else all of them."""
+    """The question's words after a clause of time said first ('at the start , what ...'), else all of them; after
+    a request for what follows ('tell me at what second ...' asks as 'at what second ...')."""
+    opener = next((o for o in ASKING_FOR if words[:len(o)] == o and words[len(o):len(o) + 1] in (
+        ["at"], ["in"], ["on"], ["during"])), None)
+    words = words[len(opener):] if opener else words
     # 'at what time , in seconds , does ...' (or 'at about what time') asks at its first words
     k = 1 + (words[1:2] in ROUGHLY)
     return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
@@ -4019,6 +4104,17 @@ def premised(words: list[str]) -> str:
             "a counterfactual ('if X had been ..., would ...')")
 
 
+def impact_denied(words: list[str]) -> str:
+    """A collision said not to happen ('the vehicle it passed without touching'), or '' ('without X moving' is rest,
+    read as such)."""
+    said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 1) if words[k] == "without" and (
+        words[k + 1].startswith(IMPACT_STEMS) or words[k + 1] in ("touching", "touch", "touched"))), None)
+    if said is None:
+        return ""
+    return (f"the question asks about a vehicle passed without a collision ('{said}'), which no question here asks: "
+            "ask whether they collide")
+
+
 def ordered(words: list[str]) -> str:
     """An order of collisions or of vehicles ('what does it hit next', 'after the school bus'), or ''."""
     said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 1)
@@ -4572,7 +4668,7 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
-             for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale")] + \
+             for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale", "ending")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
     [[*p, "the", *very, a, *few, f] for p in (("in",), ("at",), ("during",), ()) for very in ((), ("very",))
      for a in ("last", "final", "closing")
@@ -4582,6 +4678,21 @@ END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "nea
                                                          "scenes")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
+# the words a digression (`digressions_dropped`) never says
+SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS | SPEED_CLASS_WORDS | FLOATING_WORDS
+          | STATIC_SAID | REST_WORDS | START_WORDS | END_SAID | FILM_WORDS | CONDITION_OPENERS | CONDITION_WORDS
+          | IMAGINING | IMAGINED_SAID | TIME_SAID | NEGATIONS | DIRECTION_WORDS | ASKING | set(COLOR_NAMES)
+          | OTHER_COLOURS | PLURALS | QUERY_NOUNS | COMPARING | {"would", "could", "had", "were", "should", "shall"}
+          | {"at", "once", "upon", "how", "why", "where", "who", "whom", "whose", "then", "first", "after", "before",
+             "until", "later", "end", "ends", "way", "each", "other", "both", "either", "anything", "something",
+             "nothing", "same", "instead", "rather", "only", "just", "moment", "instant", "frame", "second", "seconds",
+             "time", "point", "engine", "ground", "air", "sky", "future", "next", "last", "will", "gonna", "going",
+             "frames", "from", "past", "beyond", "freeze", "afterwards", "afterward", "hereafter", "eventually",
+             "through", "scale", "state", "tell", "give", "name", "describe", "identify", "determine", "report",
+             "find", "list"}
+          | {w for t in LATER_TIMES for w in t} | START_ADJECTIVES | DURATIONS | NUMBERS
+          | {"partway", "halfway", "midway", "middle", "stop", "stopped", "halted", "paused", "frozen", "froze",
+             "freezes", "cut", "cuts", "terminates", "terminated", "truncated"})
 
 
 def clause_time(clause: list[str]) -> str | None:
