@@ -2505,3 +2505,22 @@ def test_a_digression_between_commas_and_a_prompt_s_wrapping_are_dropped():
     assert_refused(parser, {"Act as a physics expert and tell me at what second the red sedan hits the bus.": "when",
                             "What colour is the vehicle that the red sedan passed without touching?": "without",
                             "Was the blue scooter going slowly as the tape drew to its close?": "end"})
+
+
+def test_punctuation_said_in_words_a_post_s_labels_and_a_video_stopped_said_first():
+    assert tokenize("the dirt bike comma is it slow full stop") == tokenize("the dirt bike , is it slow .")
+    assert tokenize("did it come to a full stop at the start?")[-6:-1] == ["full", "stop", "at", "the", "start"]
+    assert tokenize("was it moving? #physics #fyp") == tokenize("was it moving?")
+    said, _ = prompt_dropped(tokenize("1/ genuine question: was the red sedan moving at the start?"))
+    assert said == tokenize("was the red sedan moving at the start?")
+    parser = QuestionParser.load()
+    dictated, stopped, show = parser.parse_batch([
+        "which direction was the red double decker going when it hit the blue sedan question mark new line",
+        "thread video stops partway through. does the sedan end up colliding with the green airliner afterwards?",
+        "Ooh, look at the school bus! Right when our show begins, is it parked, puttering along slowly, or zooming "
+        "fast?"])
+    assert dictated[-1] == "query_moving_direction" and stopped[0] == "futureEvents"
+    assert show[-2:] == ["start", "query_moving_velocity"]
+    # 'afterwards' is never within the video; a stop said first is not a question's own clause
+    assert_refused(parser, {"does the sedan collide with the green airliner afterwards?": "afterwards",
+                            "the video stops before they collide, does the red car hit the bus?": "before"})

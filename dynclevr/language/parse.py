@@ -293,16 +293,15 @@ class QuestionParser:
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
         corrected += hedged + dislocated
+        words, prompted = prompt_dropped(words)
         words, kind = type_of_category_as_vehicle(words)
         words, context = context_as_question(words, self.known)
-        context = kind + context
+        context = prompted + kind + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
         after += impact
         words, owned = owners_dropped(words)
-        words, prompted = prompt_dropped(words)
         words, labelled = asides_dropped(words)
-        labelled = prompted + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)
@@ -1385,6 +1384,11 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')
     question = ["it" if w in ("he", "she") else "its" if w == "his" else w for w in question]
     asked = (condition if condition and not own_condition else []) + question
+    # a sentence that says the video stopped ('video stops partway through . does the sedan hit ...?'): the question
+    # asks after its end
+    stopped = next((c for c in context if _video_end(c) and _video_end(c)[0] == 0), None)
+    if stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
+        asked = ["after", "the", "video", "ends", ",", *asked]
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
     # said with a word the parser does not know are not read for it
     said = [[(a, b, r) for a, b, r in _appositions(s) if "not" not in s[max(a - 2, 0):a]] for s in context]
@@ -1966,10 +1970,12 @@ def _purpose(heading: list[str], rest: list[str]) -> bool:
 # only: ...', 'Q: ... ? A (yes/no):'): a role, and a heading of instructions that asks nothing
 PROMPT_WORDS = {"yes", "or", "no", "only", "answer", "respond", "reply", "with", "one", "word", "a", "an", "the",
                 "single", "step", "by", "-", "reasoning", "is", "welcome", "fine", "but", "end", "think", "query",
-                "question", "q", "task", "consider", "hypothetical", "and", "/", "(", ")", "vehicle", "type", "colour",
+                "question", "q", "task", "and", "/", "(", ")", "vehicle", "type", "colour",
                 "color", "output", "format", "please", "briefly", "just", "your", "final", "instruction", "prompt",
                 "following", "true", "false", "in", "words", "short", "answers", "aloud", "first", "then"}
 ROLE_ENDS = {"and", ":", ",", "."}
+POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["honest", "question"],
+               ["serious", "question"], ["asking", "for", "a", "friend"], ["update"], ["edit"])
 
 
 def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1977,6 +1983,11 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     'is it ...'; '... ? a ( yes / no ) :' -> '... ?'. With the wrapping read as nothing, or the words as they are
     and ()."""
     out, read = list(words), []
+    # a post's labels said first ('thread', '1/', 'PSA', 'hot take:', 'genuine question:', 'asking for a friend')
+    while label := next((p for p in POST_LABELS if out[:len(p)] == p), None) or \
+            (out[:2] if out[:1] and out[0].isdigit() and out[1:2] == ["/"] else None):
+        read.append((" ".join(label), "nothing, a label"))
+        out = out[len(label) + (out[len(label):len(label) + 1] == [":"]):]
     if out[:2] == ["act", "as"]:
         end = next((k for k in range(2, min(len(out), 10)) if out[k] in ROLE_ENDS), None)
         if end is not None and not OBJECT_WORDS.intersection(out[:end]):
@@ -2008,8 +2019,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
         elif end is None or end + 1 == len(words) or set(heading) & (
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
-                | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading):   # one that says what is asked stays
-            break
+                | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading) or _video_end(words[:end + 1]):
+            break   # one that says what is asked stays, and one that says the video stopped ('video stops here .')
         # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
         # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')
         if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS) or \
@@ -2273,7 +2284,9 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
 # 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please |kindly )?"
-                     r"(?:tell me|let me know|advise(?: me)?)|do you (?:happen to )?know"
+                     r"(?:tell me|let me know|advise(?: me)?"
+                     r"|describe(?: for me| to me)?(?= (?:which|what|how|whether)))"
+                     r"|do you (?:happen to )?know"
                      r"|i (?:would |' d |want to |need to |should )"
                      r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
@@ -2569,6 +2582,9 @@ IDIOMS = phrase_table({
     **{(w, "things", get, *way): _START for w in ("as", "when") for get in ("get", "got", "are", "were")
        for way in (("under", "way"), ("underway",))},
     ("dead", "still"): ("still",),
+    # a show's start ('right when our show begins')
+    **{(w, our, show, begins): _START for w in ("when", "as") for our in ("our", "the", "this")
+       for show in ("show", "episode", "programme", "program") for begins in ("begins", "starts", "opens")},
     **{("let", *us, v): (v,) for us in (("us",), ("'", "s")) for v in ("suppose", "assume", "imagine", "pretend")},
     ("let", "us", "say"): ("suppose",),
     **{(draw, "to", its, close): (ends,) for draw, ends in (("draws", "ends"), ("drew", "ended"), ("drawing", "ending"))
@@ -2926,7 +2942,8 @@ END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], 
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
               "replay", "feed", "tape", "playback", "livestream"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
-STOPPED_SAID = (["stop"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"], ["cut", "off"],
+STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"],
+                ["cut", "off"],
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
                 ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
                 ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
@@ -3021,7 +3038,8 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
             k += len(part)
             # '... before the play finishes ,': what the video stopped before
             sep = next((m for m in range(k + 1, min(k + 9, len(words))) if words[m] in CLAUSE_SEPARATORS), None)
-            if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]):
+            if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]) and \
+                    not asks_impact(words[k:sep]):
                 k = sep
             if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS:
                 continue   # 'the video stops before they collide': the clause is the question's own
@@ -4517,6 +4535,11 @@ def future_unread(words: list[str], program: list[str]) -> str:
     within = next((" ".join(words[k:k + 2 + (words[k + 1] == "the")]) for k in range(len(words) - 2)
                    if words[k] in ("in", "during", "throughout") and
                    words[k + 1 + (words[k + 1] == "the")] in FILM_WORDS), None)
+    # 'does the sedan hit the airliner afterwards?' read within the video
+    after = next((w for w in words if w in ("afterwards", "afterward", "hereafter", "thereafter")), None)
+    if after and "Events" in program and "futureEvents" not in program:
+        return (f"the question asks '{after}', but its nearest reading asks within the video: ask whether they "
+                "collide after the video ends")
     if "futureEvents" in program and within and not FUTURE_CUES.intersection(words):
         return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
                 "it collides in the video")

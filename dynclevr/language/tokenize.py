@@ -26,6 +26,13 @@ _ABBREVIATED = re.compile(r"\b(approx|apprx|veh|esp|incl|resp)\.")
 _GLOSS = re.compile(r"\b([ie])\.\s?([eg])\.?(?=[\s,:)]|$)")
 
 
+_SAID_MARKS = {"comma": " , ", "question mark": " ? ", "full stop": " . ", "period": " . ", "new line": " ",
+               "new paragraph": " ", "exclamation mark": " ! ", "exclamation point": " ! "}
+_DICTATED = re.compile(r"\b(comma|question mark|new line|new paragraph|exclamation (?:mark|point))\b"
+                       r"|\b(full stop|period)(?=\s*(?:new line|new paragraph)?\s*$)")
+_HASHTAGS = re.compile(r"(?:\s+#[a-z]\w*)+\s*$")
+
+
 def tokenize(text: str) -> list[str]:
     """'Is the grey SUV moving?' -> ['is', 'the', 'gray', 'suv', 'moving', '?']; "isn't" -> ['is', 'not']. Never
     raises on a str."""
@@ -39,4 +46,7 @@ def tokenize(text: str) -> list[str]:
     said = text.rstrip()
     if said.endswith(" question mark") or said == "question mark":   # dictated
         text = said[:-len("question mark")].rstrip() + "?"
+    # punctuation dictated in words ('the dirt bike comma when it ... full stop'), a post's trailing hashtags
+    text = _DICTATED.sub(lambda m: _SAID_MARKS[m.group(1) or m.group(2)], text)
+    text = _HASHTAGS.sub("", text)
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]
