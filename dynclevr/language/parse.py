@@ -43,7 +43,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   as static in `reversed_reading`), or not whether a vehicle is visible (`visibility_unread`); all or every vehicle
   at once (`quantified`), a premise (`premised`), a vehicle described through another described one (`chained`),
   the order in which vehicles appear; a measure of speed or a comparison's degree (`speed_measure`), a colour
-  checked (`checked_attribute`), a collision with scenery ('the wall');
+  checked (`checked_attribute`), a collision with scenery ('the wall'), an order of collisions ('what does it hit
+  next': `ordered`), a collision said not to happen ('passed without touching': `impact_denied`), a rest no word says
+  (`reversed_reading`), 'afterwards' read within the video (`future_unread`);
+- it names a vehicle the catalogue lacks where a question names one ('does the zamboni hit ...': `_unknown_vehicle`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
   copy path (references.py): the sequence model may generalise a sentence, never invent or change an object.
