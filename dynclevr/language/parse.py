@@ -1677,7 +1677,6 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
 
 
 GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
-DESCRIBING = {"the", "a", "an", "this", "that"}
 
 
 def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1697,7 +1696,7 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             read.append((" ".join(out[a:b + 1]), "nothing, a gloss"))
             out[a:b + 1] = []
             continue
-        d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DESCRIBING), None)
+        d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DETERMINERS), None)
         described = out[d + 1:a] if d is not None else []
         if name and all(w in NAMING for w in name) and any(w in OBJECT_WORDS for w in name) and described and \
                 not set(described) & (OBJECT_WORDS | {"grey", "and", "or", ","}):
