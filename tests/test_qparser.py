@@ -25,6 +25,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
                                      hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
+                                     wagers_read, ticket_fields_read, attributes_offered_dropped,
                                      ordered, type_of_category_as_vehicle, digressions_dropped, prompt_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
@@ -2524,3 +2525,83 @@ def test_punctuation_said_in_words_a_post_s_labels_and_a_video_stopped_said_firs
     # 'afterwards' is never within the video; a stop said first is not a question's own clause
     assert_refused(parser, {"does the sedan collide with the green airliner afterwards?": "afterwards",
                             "the video stops before they collide, does the red car hit the bus?": "before"})
+
+
+def test_a_wager_s_stake_is_dropped_and_a_claim_bet_on_is_put_to_be_confirmed():
+    said, read = wagers_read(tokenize("Is the grey fighter jet speeding up at the start? Putting a tenner on yes."))
+    assert said == tokenize("Is the grey fighter jet speeding up at the start?") and read[0][1] == "nothing, a wager"
+    # after the question a stake may name the guess ('My stake's on a motorbike.'); before it, never a vehicle
+    assert wagers_read(tokenize("What type of vehicle is fast? My stake's on a motorbike."))[0] == \
+        tokenize("What type of vehicle is fast?")
+    assert wagers_read(tokenize("Name the colour of whatever is slow at the start and I'll pay out."))[0] == \
+        tokenize("Name the colour of whatever is slow at the start")
+    assert wagers_read(tokenize("I bet the red sedan hits the blue bus. Does it?"))[0] == \
+        tokenize("is it true that the red sedan hits the blue bus ?")
+    assert wagers_read(tokenize("Fiver says the tandem is faster than the bus at the start, do I collect?"))[0] == \
+        tokenize("is it true that the tandem is faster than the bus at the start ?")
+    assert wagers_read(tokenize("With the clip stopped, I'm backing the dirt bike to crash into something. Will it?"))[
+        0] == tokenize("With the clip stopped, is it true that the dirt bike will crash into something ?")
+    assert wagers_read(tokenize("Is the red car parked at the start?")) == (tokenize("Is the red car parked at the "
+                                                                                      "start?"), ())
+    parser = QuestionParser.load()
+    lock, cliff, fiver = parser.parse_batch([
+        "Is it a lock that the blue motorbike is only pootling along slowly at the start?",
+        "Cliffhanger wager: once the clip carries on, do the fighter jet and the bus end up crashing?",
+        "Say the purple one never moved an inch from the beginning; does it collide with the cruiser then? Fiver says "
+        "no."])
+    assert lock[-2:] == ["start", "is_moving_velocity[slow]"] and cliff[0] == "futureEvents"
+    assert "Counterfactual_static" in fiver
+    # a stake dropped leaves a question of no family refused ('at the end')
+    assert_refused(parser, {"Is the green SUV faster than the yellow bike at the end of the clip? Tenner on the SUV.":
+                            "end"})
+
+
+def test_a_ticket_s_fields_and_a_condition_assumed_in_the_present():
+    said, _ = ticket_fields_read(tokenize("Steps: watch clip; Expected: partner identified; Question: what type of "
+                                          "vehicle does the scooter collide with?"))
+    assert said == tokenize("what type of vehicle does the scooter collide with?")
+    said, _ = ticket_fields_read(tokenize("Summary: clip ends early; prediction needed - do the purple bus and the "
+                                          "pickup collide afterwards?"))
+    assert said == tokenize("Summary: clip ends early; do the purple bus and the pickup collide afterwards?")
+    assert ticket_fields_read(tokenize("Steps: is the bus fast?")) == (tokenize("Steps: is the bus fast?"), ())
+    parser = QuestionParser.load()
+    assumed, steps, ended, confirm = parser.parse_batch([
+        "Assume the gray cruiser starts slow. Does the gray cruiser collide with the brown sedan then?",
+        "Steps: assume the gray cruiser starts slow. Expected: collision outcome. Question: would the gray cruiser "
+        "collide with the brown sedan?",
+        "Summary: clip ends early; prediction needed - do the purple bus and the pickup end up colliding afterwards?",
+        "Need confirmation whether the bus is accelerating in the first moments. Field: yes/no."])
+    assert "Counterfactual_moving_slow" in assumed and "Counterfactual_moving_slow" in steps
+    assert ended[0] == "futureEvents" and confirm[-2:] == ["start", "is_accelerating"]
+    # a change assumed and a question of what happens, said in one sentence: refused, never read as what happened
+    assert_refused(parser, {"assume the gray cruiser starts slow; does the gray cruiser collide with the brown sedan "
+                            "then?": "assume"})
+
+
+def test_text_speak_an_elder_s_words_and_choices_offered_for_a_colour_or_a_type():
+    assert tokenize("wat colour is the cruiser n the bus b4 the crash") == \
+        tokenize("what color is the cruiser and the bus before the crash")
+    assert tokenize("is it fast (y/n)")[-3:] == ["/", "n", ")"] and tokenize("the faster 1")[-1] == "one"
+    assert tokenize("at 1 second") == ["at", "1", "second"]
+    said, _ = attributes_offered_dropped(tokenize("At the beginning, which type of aeroplane is it that's floating: an "
+                                                  "airliner, a fighter, a jet or one of those old biplanes?"))
+    assert said == tokenize("At the beginning, which type of aeroplane is it that's floating?")
+    said, _ = glosses_read(tokenize("was the purple town bicycle (utility bike, I think they call it) moving?"))
+    assert said == tokenize("was the purple utility bike moving?")
+    said, _ = glosses_read(tokenize("what is accelerating (accelerating, is that the word?) at the start?"))
+    assert said == tokenize("what is accelerating at the start?")
+    parser = QuestionParser.load()
+    picture, lorry, elder, carry, one = parser.parse_batch([
+        "I wonder if you could tell me how quickly the little red saloon was going when the picture first began: was "
+        "it standing still, dawdling along, or going at a fair lick?",
+        "At the moment the yellow pickup lorry struck the purple SUV, how fast was the pickup travelling?",
+        "Good afternoon. I should very much like to know whether the purple one and the tandem bicycle collide at any "
+        "point. Thank you ever so much.",
+        "If the film were allowed to carry on after where it's cut off, would the pickup collide with anything?",
+        "when the purple cruiser n brown mountain bike crash is the cruiser the faster 1"])
+    assert picture[-2:] == ["start", "query_moving_velocity"] and lorry[-2:] == ["get_frame", "query_moving_velocity"]
+    assert elder[-1] == "exist" and carry[0] == "futureEvents" and one[-1] == "faster_velocity"
+    assert_refused(parser, {
+        "After the video is stopped, which vehicle will the green car run into?": "which vehicle",
+        "the plane floating at the start, zzq colour is it": "color",
+        "is the mountain bike slower , yes or no at the start ?": "slower"})

@@ -292,11 +292,14 @@ class QuestionParser:
         words, told = told_otherwise_as_imagined(words)
         corrected += setting + scenario + told
         words, examined = examination_as_asked(words)
-        corrected += examined
+        words, wagered = wagers_read(words)
+        corrected += examined + wagered
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
         corrected += hedged + dislocated
+        words, ticket = ticket_fields_read(words)
         words, prompted = prompt_dropped(words)
+        prompted = ticket + prompted
         words, kind = type_of_category_as_vehicle(words)
         words, context = context_as_question(words, self.known)
         context = prompted + kind + context
@@ -326,7 +329,9 @@ class QuestionParser:
         words, first = first_frames_as_said(words)
         words, more = comparative_as_said(words)
         words, tail = tail_as_question(words)
+        words, choices = attributes_offered_dropped(words)
         words, offered = alternatives_as_asked(words)
+        offered = choices + offered
         request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms
                    + described + typed + afloat + end + framing + attended + request + stated + negative + asked + aloft
                    + heading + subject + first + more + tail + offered)
@@ -339,6 +344,7 @@ class QuestionParser:
         stand_ins = {w: self._stand_in(w) for w in words if w not in self.known}
         read_as = request + tuple((w, " ".join(k)) for w, k in stand_ins.items() if k != [w])
         words = [k for w in words for k in stand_ins.get(w, [w])]
+        words = [w for j, w in enumerate(words) if not (j and w == words[j - 1] and w in OBJECT_WORDS)]
         # Typos are fixed towards object words, which the copy path must carry exactly, and towards a sentence word
         # only in words of TYPO_LETTERS or more ('acelerating', 'stationery'): a short one has too many neighbours
         # (fixing every word made 'black' 'back' and 'pink' 'pick'; 'sitting' would be 'hitting').
@@ -580,6 +586,7 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
              "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
              "greetings", "with"}
+THANKING = {"thanks", "thank", "cheers", "ta", "many"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
            "honestly"}
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
@@ -737,9 +744,15 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     tail = words[asked + 1:end] if asked is not None else []
     if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4) and _says_nothing(tail):
         end = asked + 1
+    # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
+    thanked = max((j for j in range(k, end - 1) if words[j] == "." and words[j + 1] in THANKING), default=None)
+    if asked is None and thanked is not None and _says_nothing(words[thanked + 1:end]):
+        end = thanked + 1
     # without a question mark, a chat's remark after the question ('..., i missed it', '... ngl cant tell')
     remark = next((j for j in range(k + 3, end) if asked is None and (words[j] in CHAT or words[j - 1] == ","
-                                                                        and words[j] == "i")
+                                                                        and words[j] == "i"
+                                                                        or tuple(words[j:j + 4]) in VIEWER_DOUBTS
+                                                                        or tuple(words[j:j + 3]) in VIEWER_DOUBTS)
                    and len(words[j:end]) <= 6 and _says_nothing(words[j:end])), None)
     if remark:
         end = remark - (words[remark - 1] == ",")
@@ -908,7 +921,9 @@ def _stated(sentence: list[str]) -> bool:
     contact with the jet near the middle.'), with nothing that imagines: a sentence of context, not a condition."""
     said = _opener_said(sentence)
     return bool(said) and said[1][:1] and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
-        w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence)))
+        w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence))
+        or START_WORDS & set(sentence) and SPEED_CLASS_WORDS & set(sentence))   # 'assume the cruiser starts slow'
+
 
 
 def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
@@ -1175,8 +1190,11 @@ DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "w
 
 # A speaker's doubt around the question: said first ('Not sure, but ...', 'I could be off here, but ...', 'Since the
 # clip cuts off, I can't be sure: ...'), or after it (', or am I misremembering?', '; is that right?')
+# a viewer who cannot make it out ('ngl cant tell, ...', '... cant see it rly')
+VIEWER_DOUBTS = tuple((*i, can, "not", see) for i in ((), ("i",)) for can in ("can", "could")
+                      for see in ("tell", "see")) + (("hard", "to", "tell"),)
 HEDGE_STARTS = (("not", "sure"), ("not", "certain"), ("unless",), ("maybe",), ("correct", "me"), ("no", "idea"),
-                ("hard", "to", "say"))
+                ("hard", "to", "say"), *VIEWER_DOUBTS)
 HEDGE_ENDS = ((",", "but"), (",", "so"), (":",), (";",), ("-",), (",",))
 DOUBTING = {"am", "did", "do", "have", "was", "is", "could"}
 # ... and what a doubt said first never says: a question's words, a time, a motion, a vehicle unnamed
@@ -1192,13 +1210,16 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     no vehicle. With the words read so, or the words as they are and ()."""
     out, read = list(words), []
     ends = [(k, len(e)) for k in range(1, min(len(out), 16)) for e in HEDGE_ENDS if tuple(out[k:k + len(e)]) == e]
-    first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(said[:len(h)] == list(h)
+    opened = lambda said: said[next((j for j, w in enumerate(said) if w not in INTERJECTIONS | {","}), len(said)):]
+    first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(opened(said)[:len(h)] == list(h)
                                                                           for h in HEDGE_STARTS)
     undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID
     # an apology before the question needs no 'I' ('sorry if this is a silly question , but does ...')
     unapologetic = NAMING | GENERIC_NOUNS | START_WORDS | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS
     apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in QUESTION_OPENERS
-    cut = max((k + n for k, n in ends if (first_person(out[:k]) and not undoubted & set(out[:k])
+    doubted = lambda said: next((opened(said)[len(v):] for v in VIEWER_DOUBTS if opened(said)[:len(v)] == list(v)),
+                                said)
+    cut = max((k + n for k, n in ends if (first_person(out[:k]) and not undoubted & set(doubted(out[:k]))
                                           or apology(k, n) and not unapologetic & set(out[:k]))
                and not asks_impact(out[:k]) and out[k + n:]), default=None)
     if cut is not None:
@@ -1317,6 +1338,137 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     return (out, tuple(read)) if read else (words, ())
 
 
+# A wager around the question. A stake says nothing the question asks ('I've a tenner on yes.', 'Fiver says no.',
+# '... and I'll pay out', 'Freeze-frame punt:', ', so it's an in-play bet:') and is dropped; a claim bet on ('I bet
+# the sedan hits the bus. Does it?', 'Is it a lock that ...?', 'Fiver says the tandem is faster ..., do I collect?')
+# is put to be confirmed, the grammar's 'is it true that'.
+WAGER_WORDS = {"bet", "bets", "betting", "wager", "wagers", "wagered", "wagering", "stake", "stakes", "staked",
+               "tenner", "fiver", "quid", "bucks", "odds", "punt", "bookie", "bookies", "bookmaker", "favourite",
+               "favorite", "money", "pot", "kitty", "sweepstake", "payout", "cert", "collect", "settles",
+               "backing", "tipping", "wins", "lock"}
+_STAKES = (["a", "fiver"], ["a", "tenner"], ["fiver"], ["tenner"], ["my", "money"], ["money"], ["a", "quid"])
+WAGER_CLAIMS = sorted({*((*i, "bet", *you) for i in (["i"], ["i", "'", "d"], ["i", "'", "ll"], ["i", "would"], [])
+                         for you in ([], ["you"])),
+                       *((*stake, "says") for stake in _STAKES),
+                       *(("is", "it", "a", *lock) for lock in (["lock"], ["sure", "thing"], ["dead", "cert"],
+                                                              ["safe", "bet"], ["done", "deal"])),
+                       ("odds", "-", "on"), ("odds", "on")}, key=len, reverse=True)
+BACKING = [[*i, backing] for i in (["i", "'", "m"], ["i", "am"], []) for backing in ("backing", "tipping")]
+# a wager's stake said before its claim ('Wagering my lunch money that ...', 'I'm betting a fiver that ...')
+WAGERING = {"wagering", "betting", "bet", "wager"}
+# ... closed by the claim's own question ('. Does it?', ', do I collect?')
+WAGER_ENDS = [[end, *q, "?"] for end in (".", ";", ",", "-")
+              for q in (["do", "i", "collect"], ["do", "i", "win"], ["am", "i", "right"], ["yes", "or", "no"],
+                        *([aux, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
+                          for it in ("it", "they")))]
+
+
+def _wagered(words: list[str]) -> bool:
+    return bool(WAGER_WORDS & set(words)) or any(a == "pay" and b == "out" for a, b in zip(words, words[1:]))
+
+
+def wagers_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'was it parked ? i have a tenner on yes .' -> 'was it parked ?'; 'i bet the sedan hits the bus . does it ?'
+    -> 'is it true that the sedan hits the bus ?'. With the words read so, or the words as they are and ()."""
+    if not _wagered(words):
+        return words, ()
+    out, read = list(words), []
+    # the claim bet on, where it opens the question or a sentence of it
+    asked = out.index("?") if "?" in out else len(out)
+    for k in range(asked):
+        if k and out[k - 1] not in SENTENCE_ENDS | {":", ",", ";"}:
+            continue
+        claim = next((c for c in WAGER_CLAIMS if tuple(out[k:k + len(c)]) == c), None)
+        stake = None if claim or out[k:k + 1] == ["what"] else next(
+            (j for j in range(k, min(k + 8, len(out))) if out[j] == "that" and WAGERING & set(out[k:j])
+             and not NAMING & set(out[k:j])), None)
+        backing = next((len(b) for b in BACKING if out[k:k + len(b)] == b), 0)
+        to = next((j for j in range(k + backing + 1, min(k + backing + 7, len(out))) if out[j] == "to"
+                   and NAMING & set(out[k + backing:j])), None) if backing else None
+        if to is not None:   # 'i'm backing the dirt bike to crash into something' -> '... the dirtbike will crash'
+            read.append((" ".join(out[k:to + 1]), "is it true that " + " ".join(out[k + backing:to]) + " will"))
+            out[k:to + 1] = ["is", "it", "true", "that", *out[k + backing:to], "will"]
+            claim = ("is", "it", "true", "that")
+        elif claim or stake is not None:
+            end = k + len(claim) if claim else stake + 1
+            end += out[end:end + 1] == ["that"]
+            read.append((" ".join(out[k:end]), "is it true that"))
+            out[k:end] = ["is", "it", "true", "that"]
+        if claim or stake is not None:
+            close = next((e for e in WAGER_ENDS if out[-len(e):] == e), None)
+            if close:
+                read.append((" ".join(close), "?"))
+                out = out[:-len(close)] + ["?"]
+            elif out[-1:] in (["."], ["!"]):
+                out[-1] = "?"
+            break
+    # the stakes: a part between commas, or a sentence, that names no vehicle, or any sentence after the question's
+    # ('My stake's on a motorbike.': a guess at the answer)
+    kept, start = [], 0
+    parts = [k + 1 for k, w in enumerate(out) if w in SENTENCE_ENDS | {",", ":", ";"}
+             or out[k + 1:k + 3] == ["and", "i"]]   # '... and i'll pay out'
+    parts = sorted(set(parts))
+    for end in parts + [len(out)] * (not parts or parts[-1] != len(out)):
+        part = out[start:end]
+        said = [w for w in part if w not in SENTENCE_ENDS | {",", ":", ";", "and", "but", "so"}]
+        if _wagered(said) and not (NAMING & set(said) and "?" not in kept) and not {"true", "?"} & set(part):
+            read.append((" ".join(part), "nothing, a wager"))
+        else:
+            kept += part
+        start = end
+    kept = kept[:-1] + ["?"] if kept[-1:] == [","] else kept
+    return (kept, tuple(read)) if read and kept else (words, ())
+
+
+# A ticket's or a form's fields around the question ('Steps: watch clip; Expected: partner identified; Question:
+# ...'). What a ticket expects, its priority or status, and a step that only watches the video say nothing the
+# question asks; the other fields' items (a step that sets a condition, a summary that says the clip ends early) are
+# context, a sentence each. A field that asks for the answer ('prediction needed -') says nothing either.
+TICKET_FIELDS = {"question", "q", "steps", "step", "repro", "summary", "issue", "description", "context", "title",
+                 "request", "note", "notes", "ticket", "details", "scenario"}
+TICKET_NOISE = {"expected", "actual", "priority", "severity", "status", "component", "assignee", "reporter",
+                "environment", "version", "eta", "labels", "tags", "result", "outcome", "deliverable", "format"}
+WATCHING = {"watch", "view", "play", "open", "replay", "load", "review", "rewatch"}
+ANSWER_NEEDED = [[asked, needed, *end] for asked in ("prediction", "answer", "response", "confirmation", "input",
+                                                     "clarification", "verdict", "ruling")
+                 for needed in ("needed", "required", "requested", "wanted") for end in ([":"], ["-"], [","], [])]
+
+
+def ticket_fields_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'steps : watch clip ; expected : partner identified ; question : what type ... ?' -> 'what type ... ?';
+    'summary : clip ends early ; prediction needed - do ...' -> 'clip ends early . do ...'. With the fields read so,
+    or the words as they are and ()."""
+    out, read = list(words), []
+    for k in range(len(out)):
+        need = next((n for n in ANSWER_NEEDED if out[k:k + len(n)] == n), None)
+        if need and (k == 0 or out[k - 1] in {";", ".", ",", ":"}):
+            read.append((" ".join(need), "nothing, a ticket's field"))
+            out = out[:k] + out[k + len(need):]
+            break
+    labels = [k for k in range(len(out) - 1) if out[k + 1] == ":" and out[k] in TICKET_FIELDS | TICKET_NOISE
+              and (k == 0 or out[k - 1] in {";", ".", ",", "-", "|"})]
+    if len(labels) < 2:
+        return (out, tuple(read)) if read else (words, ())
+    kept = out[:labels[0]]
+    for k, end in zip(labels, labels[1:] + [len(out)]):
+        field = out[k + 2:end]
+        if out[k] in TICKET_NOISE or not field:
+            read.append((" ".join(out[k:end]), "nothing, a ticket's field"))
+            continue
+        items, start = [], 0
+        for m in [j + 1 for j, w in enumerate(field) if w in (";", "|")] + [len(field)]:
+            item = [w for w in field[start:m] if w not in (";", "|")]
+            start = m
+            if item and item[0] in WATCHING and not NAMING & set(item):
+                read.append((" ".join(item), "nothing, a ticket's step"))
+            elif item:
+                items.append(item + ["."] * (item[-1] not in SENTENCE_ENDS))
+        kept += [w for item in items for w in item]
+        read.append((" ".join(out[k:k + 2]), "nothing, a ticket's label"))
+    # the question's own field last: its words as they are
+    return (kept, tuple(read)) if kept and kept[-1] in SENTENCE_ENDS else (words, ())
+
+
 def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'blue minivan and green chopper , they collide ?' -> 'do blue minivan and green chopper collide ?', and 'the
     sedan , it is fast ?' -> 'is the sedan fast ?': the vehicles said first, then asked about as 'they' or 'it' in
@@ -1389,7 +1541,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     asked = (condition if condition and not own_condition else []) + question
     # a sentence that says the video stopped ('video stops partway through . does the sedan hit ...?'): the question
     # asks after its end
-    stopped = next((c for c in context if _video_end(c) and _video_end(c)[0] == 0), None)
+    stopped = next((c for c in context if (e := _video_end(c)) and (e[0] == 0 or c[e[0] - 1] == ":")), None)
     if stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
         asked = ["after", "the", "video", "ends", ",", *asked]
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
@@ -1677,6 +1829,9 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
 
 
 GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
+# the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
+SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
+            "?"}
 
 
 def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1698,6 +1853,14 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             continue
         d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DETERMINERS), None)
         described = out[d + 1:a] if d is not None else []
+        if SPEAKING & set(inside):   # a speaker's aside: '(the motorbike, i should say)', '(is that the word?)'
+            said = name[:name.index(",")] if "," in name else name
+            named = said and all(w in NAMING for w in said) and any(w in OBJECT_WORDS for w in said) and described
+            colours = [w for w in described if w in COLOR_NAMES]
+            read.append((" ".join(out[d if named else a:b + 1]), " ".join(["the", *colours, *said]) if named
+                         else "nothing, an aside"))
+            out[d if named else a:b + 1] = ["the", *colours, *said] if named else []
+            continue
         if name and all(w in NAMING for w in name) and any(w in OBJECT_WORDS for w in name) and described and \
                 not set(described) & (OBJECT_WORDS | {"grey", "and", "or", ","}):
             read.append((" ".join(out[d:b + 1]), " ".join(["the", *name])))
@@ -2085,9 +2248,10 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     for k in reversed(range(1, len(out) - 3)):
         other = next((o for o in (["rather", "than"], ["instead", "of"]) if out[k:k + 2] == o), None)
         j = k + 2 + (out[k + 2:k + 3] != [] and out[k + 2] in RESTING)
-        if other and out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) and \
+        fall = other and out[k + 2:k + 3] in (["falling"], ["dropping"], ["descending"], ["sinking"])
+        if other and (out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) or fall) and \
                 FLOATING_WORDS & set(out[:k]):
-            end = j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])
+            end = k + 3 if fall else j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])
             read.append((" ".join(out[k:end]), "nothing, said again"))
             out[k - (out[k - 1] == ","):end] = []
     # a condition's consequence closed by 'then' ('Would the bike crash into the dirt bike then?'); not the 'then' of
@@ -2285,16 +2449,27 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
 # 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
 # 'Tell me ...'.
-REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well) (?:, )?)*(?:(?:can|could|would|will) you (?:please |kindly )?"
+REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
+                     r"(?:(?:can|could|would|will) you (?:please |kindly )?"
                      r"(?:tell me|let me know|advise(?: me)?"
                      r"|describe(?: for me| to me)?(?= (?:which|what|how|whether)))"
                      r"|do you (?:happen to )?know"
-                     r"|i (?:would |' d |want to |need to |should )"
-                     r"(?:like to |love to )?know|i (?:am |' m |was )?wondering|i wonder"
+                     r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
+                     r"(?:like to |love to )?know"
+                     r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
+                     r"(?:possibly |kindly |please )?(?:tell me|let me know|say)"
+                     r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
+                     r"(?:settle|answer|help me with|clear up) (?:something|a question|a little question|a matter)"
+                     r"(?: for me)?(?: :)?"
+                     r"|i (?:am |' m |was )?wondering|i wonder|tell me(?= ,)"
+                     r"|(?:would|could|will|can) you be able to (?:tell me|say|tell)"
+                     r"|(?:can|could|would|will) you (?:please |kindly )?tell (?:an?|this|your) (?:old |elderly |poor )?"
+                     r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
                      r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know"
-                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were) (?:asking|wondering))"
+                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were) (?:asking|wondering)"
+                     r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how))"
                      r" (?:, )?(?:please )?")
 # whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
 # 'is it true that'
@@ -2302,7 +2477,10 @@ CERTAINTY = re.compile(r"^(?:(?:can|could|would) (?:it|one|we|you) (?:please |ki
                        r"(?:established|shown|confirmed|verified|determined|"
                        r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
                        r"demonstrate) (?:that|whether|if)"
-                       r"|(?:am i|are we) (?:right|correct) (?:in thinking |to think |to say )?that) ")
+                       r"|(?:am i|are we) (?:right|correct) (?:in thinking |to think |to say )?that"
+                       # a ticket's ('Need confirmation whether ...', 'Please verify that ...')
+                       r"|(?:please )?(?:(?:i |we )?need (?:to )?)?(?:confirm|verify|confirmation|verification)"
+                       r"(?: of| on| as to)? (?:that|whether|if)) ")
 
 
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2478,7 +2656,19 @@ IDIOMS = phrase_table({
     **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
                               ("at", "a", "good", "clip"), ("at", "a", "fair", "clip"), ("at", "quite", "a", "clip"),
                               ("like", "a", "rocket"), ("like", "the", "wind"),
-                              ("like", "a", "bat", "out", "of", "hell"))},
+                              ("like", "a", "bat", "out", "of", "hell"), ("at", "full", "pelt"), ("full", "pelt"))},
+    **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
+        ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
+    # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'
+    **{("the", "picture", *v): ("the", "video", *v) for v in (
+        ("began",), ("begins",), ("started",), ("starts",), ("opened",), ("opens",), ("first", "began"),
+        ("first", "started"), ("stopped",), ("stops",), ("halted",), ("ended",), ("ends",), ("has",), ("is",), ("was",),
+        ("froze",), ("freezes",), ("cuts",), ("cut",))},
+    # the video going on, a bettor's or a commentator's ('once the clip carries on', 'when the action resumes')
+    **{(when, "the", film, *resumes): ("after", "the", "video", "ends") for when in ("once", "when", "after")
+       for film in ("video", "clip", "footage", "film", "tape", "recording", "feed", "action", "play")
+       for resumes in (("resumes",), ("carries", "on"), ("continues",), ("picks", "up", "again"), ("restarts",),
+                       ("starts", "again"), ("plays", "on"), ("rolls", "on"), ("goes", "on"), ("keeps", "going"))},
     **{(verb + ending, "along"): (moving, "fast") for verb in ("tear", "belt", "bomb", "barrel", "bowl", "motor",
                                                                  "pelt", "streak", "rocket", "haul", "scream", "zoom",
                                                                  "whizz", "whiz", "race")
@@ -2902,6 +3092,20 @@ def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
                key=lambda hit: hit[1], default=None)
 
 
+def attributes_offered_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'what sort of aeroplane is hovering at the start , airliner , fighter , jet or biplane ?' -> '... at the start
+    ?': the colours or types offered to choose from by a question asking for one, which its answer names anyway.
+    With the choices read as nothing, or the words as they are and ()."""
+    if words[-1:] != ["?"] or not ATTRIBUTE_NOUNS & set(words[:8]) or not {"what", "which"} & set(words[:6]):
+        return words, ()
+    for k in (j for j, w in enumerate(words) if w in (",", ":")):
+        listed = words[k + 1:-1]
+        names = [w for w in listed if w not in {",", "or", "a", "an", "the", "one", "of", "those", "these", "old"}]
+        if "or" in listed and len(names) >= 2 and all(w in OBJECT_WORDS or w[:-1] in OBJECT_WORDS for w in names):
+            return words[:k] + ["?"], ((" ".join(words[k:-1]), "nothing, the choices offered"),)
+    return words, ()
+
+
 def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?', 'is it going left or right?'
     -> 'is it going front, back, left, right, up or down?': speed classes or directions offered as alternatives ask
@@ -2945,6 +3149,7 @@ FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequenc
               "replay", "feed", "tape", "playback", "livestream"}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"],
+                *([e, early] for e in ("ends", "ended", "finishes", "finished") for early in ("early", "abruptly")),
                 ["cut", "off"],
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
                 ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
@@ -2957,6 +3162,7 @@ STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["froz
 PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
             ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
+            ["part", "of", "the", "way", "through"], ["part", "of", "the", "way"],
             ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
@@ -2972,7 +3178,10 @@ END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "co
 CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "rolling"], ["gone", "on"], ["went", "on"],
              ["run", "on"], ["ran", "on"], ["carried", "on"], ["played", "on"], ["not", "stopped"], ["not", "ended"],
              ["not", "been", "cut", "off"], ["not", "been", "cut"], ["not", "cut", "off"], ["to", "continue"],
-             ["to", "keep", "going"], ["to", "go", "on"], ["to", "run", "on"])
+             ["to", "keep", "going"], ["to", "go", "on"], ["to", "run", "on"], ["to", "carry", "on"],
+             *([let, *to] for let in ("allowed", "left") for to in (["to", "carry", "on"], ["to", "continue"],
+                                                                   ["to", "run", "on"], ["to", "play", "on"],
+                                                                   ["to", "run"], ["to", "go", "on"])))
 CONTINUING = (["had"], ["if"], ["were"])
 
 
@@ -2989,8 +3198,10 @@ def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
         j += 1 + (words[i] == "if" and words[j + 1:j + 2] == ["had"])
+        were = words[i] == "were" or words[i] == "if" and words[j:j + 1] == ["were"]   # 'if the film were allowed to'
+        j += words[i] == "if" and words[j:j + 1] == ["were"]
         going = next((c for c in CONTINUED if words[j:j + len(c)] == c), None)
-        if going and (words[i] == "were") == (going[0] == "to"):
+        if going and were == (going[0] in ("to", "allowed", "left")):
             k = j + len(going)
             comma = words.index(",", k) if "," in words[k:k + 12] else k
             return i, comma
@@ -3722,10 +3933,17 @@ def collision_unread(words: list[str], program: list[str]) -> str:
 GOING = {"go", "goes", "going", "went"}   # 'pushing it to go faster'
 
 
+SPEED_READINGS = {"is_accelerating", "filter_accelerating", "query_moving_velocity", "is_moving_velocity",
+                  "filter_moving_velocity"}
+
+
 def uncompared(words: list[str], program: list[str]) -> str:
-    """Why a reading of accelerating is not the question's ('' when it is): it says 'faster' of nothing ('is the red
-    car faster?' was read as accelerating; 'getting faster', 'faster and faster' are)."""
-    if not {"is_accelerating", "filter_accelerating"}.intersection(map(operation, program)):
+    """Why a reading of accelerating or of a speed is not the question's ('' when it is): it says 'faster' of nothing
+    ('is the red car faster?' was read as accelerating, 'is it slower, yes or no at the start?' as its speed; 'getting
+    faster', 'faster and faster' are accelerating)."""
+    ops = set(map(operation, program))
+    if not SPEED_READINGS & ops or {"faster_velocity", "slower_velocity"} & ops or \
+            any(t.startswith("Counterfactual") for t in program):
         return ""
     said = next((w for k, w in enumerate(words) if w in COMPARISONS and not (k and words[k - 1] in BECOMING | GOING)
                  and words[k + 1:k + 2] != ["and"]), None)
@@ -4006,7 +4224,7 @@ def imagining_unread(words: list[str], program: list[str]) -> str:
     if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program or \
             "futureEvents" in program:
         return ""
-    said = next((w for w in words if w in IMAGINING_SAID), None) or \
+    said = next((w for w in words if w in IMAGINING_SAID | {"assume", "assuming"}), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
         next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
              None)   # 'the engine is on from the very start. Would the SUV hit the bike?'
@@ -4246,6 +4464,18 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
                                                                               "query_moving_direction"):
         return (f"the question asks the {kind}, but its nearest reading asks a speed or a direction: no question here "
                 "reads it")
+    # '..., zzq colour is it' read as whether the plane floats: a colour or type asked of 'it' is no yes or no
+    asked = next((a for a, b, c in zip(words, words[1:], words[2:]) if a in ATTRIBUTE_NOUNS and b in ("is", "was")
+                  and c in ("it", "that", "this", "they")), None)
+    if asked and returns is not str and "or" not in words:
+        return (f"the question asks the {asked}, but its nearest reading asks yes or no: no question here reads "
+                "it")
+    # 'after the video ends , which vehicle will the green car run into ?' read as whether it hits anything
+    which = next((words[j + 1] for j in range(len(words) - 1) if words[j] in ("which", "what") and (
+        j == 0 or words[j - 1] == ",") and (words[j + 1] in OBJECT_WORDS or words[j + 1] in GENERIC_NOUNS)), None)
+    # ('which one is faster , is it the sedan ?' asks whether the sedan is)
+    if which and returns is not str and not {"faster_velocity", "slower_velocity"} & set(map(operation, program)):
+        return f"the question asks which {which}, but its nearest reading asks yes or no: no question here reads it"
     # 'which vehicle hits the bus first?' read as the bus's direction: a vehicle asked for is its colour or type
     if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
             operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):

@@ -47,7 +47,9 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
                   # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
-                  "school omnibus": "school bus",
+                  "school omnibus": "school bus", "city omnibus": "regular bus", "bendy omnibus": "articulated bus",
+                  "town bike": "utility bike", "town bicycle": "utility bike", "scrambler": "dirtbike",
+                  "pickup lorry": "truck",
                   **{f"{t.split('_')[0]} {noun}": t.replace("_", " ") for noun in ("bicycle", "cycle")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a

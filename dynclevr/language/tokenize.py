@@ -10,7 +10,9 @@ _TOKEN = re.compile(r"[a-z0-9]+|[^\sa-z0-9]")
 SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane": "aeroplane",
              "airplanes": "aeroplanes", "motorcycle": "motorbike", "motorcycles": "motorbikes",
              "u": "you", "ur": "your", "thru": "through",   # and a phone's ('can u tell me')
-             "vid": "video", "spd": "speed", "dir": "direction", "@": "at"}   # and a note's ('spd @ start')
+             "vid": "video", "spd": "speed", "dir": "direction", "@": "at",   # and a note's ('spd @ start')
+             "wat": "what", "wut": "what", "wht": "what", "rly": "really", "secs": "seconds",
+             "b4": "before", "smth": "something", "sth": "something", "bc": "because"}   # and a text's
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 # Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
@@ -31,6 +33,10 @@ _SAID_MARKS = {"comma": " , ", "question mark": " ? ", "full stop": " . ", "peri
 _DICTATED = re.compile(r"\b(comma|question mark|new line|new paragraph|exclamation (?:mark|point))\b"
                        r"|\b(full stop|period)(?=\s*(?:new line|new paragraph)?\s*$)")
 _HASHTAGS = re.compile(r"(?:\s+#[a-z]\w*)+\s*$")
+_AND = re.compile(r"(?<=[a-z] )n(?= [a-z])")   # a text's 'n' between words ('the sedan n the bus'), not 'y/n'
+# a text's '1' for 'one' where it names a vehicle ('the faster 1', 'the red 1'), never a number of something
+_ONE = re.compile(r"\b(the|that|this|which|faster|slower|other|gray|grey|red|blue|green|brown|purple|cyan|yellow)"
+                  r"\s+1\b(?!\s*(?:s\b|sec|second|frame|minute|m\b|km|mph|%))")
 
 
 def tokenize(text: str) -> list[str]:
@@ -49,4 +55,6 @@ def tokenize(text: str) -> list[str]:
     # punctuation dictated in words ('the dirt bike comma when it ... full stop'), a post's trailing hashtags
     text = _DICTATED.sub(lambda m: _SAID_MARKS[m.group(1) or m.group(2)], text)
     text = _HASHTAGS.sub("", text)
+    text = _ONE.sub(r"\1 one", text)
+    text = _AND.sub("and", text)
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]
