@@ -26,6 +26,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
                                      hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
                                      wagers_read, ticket_fields_read, attributes_offered_dropped,
+                                     requested_as_asked, preamble_dropped, corrections_starred,
                                      ordered, type_of_category_as_vehicle, digressions_dropped, prompt_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
@@ -2605,3 +2606,43 @@ def test_text_speak_an_elder_s_words_and_choices_offered_for_a_colour_or_a_type(
         "After the video is stopped, which vehicle will the green car run into?": "which vehicle",
         "the plane floating at the start, zzq colour is it": "color",
         "is the mountain bike slower , yes or no at the start ?": "slower"})
+
+
+def test_a_request_in_a_third_person_s_words_an_office_s_preamble_and_a_correction_after_the_question():
+    said, _ = requested_as_asked(tokenize("The authors should clarify how fast the red sedan is travelling?"))
+    assert said == tokenize("tell me how fast the red sedan is travelling?")
+    said, _ = requested_as_asked(tokenize("Reviewer 4 seeks confirmation that the scooter is slow at the start."))
+    assert said == tokenize("is it true that the scooter is slow at the start.")
+    said, read = requested_as_asked(tokenize("It is not evident from the footage whether the blue motorbike is "
+                                             "stationary at the start; confirmation is requested."))
+    assert said == tokenize("tell me whether the blue motorbike is stationary at the start.")
+    assert read[-1][1] == "nothing, a remark"
+    # never a condition ('provided that'), nor a vehicle's own words ('dead certain the biplane ...')
+    for kept in ("Provided that the gray bus stays parked, does the green scooter hit it?",
+                 "Dead certain the biplane's hovering in the air at the start?"):
+        assert requested_as_asked(tokenize(kept)) == (tokenize(kept), ()), kept
+    said, _ = preamble_dropped(tokenize("per the brief from leadership, what colour is the vehicle floating?"))
+    assert said == tokenize("what colour is the vehicle floating?")
+    said, _ = preamble_dropped(tokenize("Because obviously a school bus has nowhere to be: is the yellow school bus "
+                                        "parked at the start?"))
+    assert said == tokenize("is the yellow school bus parked at the start?")
+    for kept in ("In the final frame, is the green biplane in the air?", "Hypothetically: the red jet stays still.",
+                 "Because the bus is slow: is it parked?"):
+        assert preamble_dropped(tokenize(kept)) == (tokenize(kept), ()), kept
+    readable = QuestionParser.load().readable
+    assert corrections_starred(tokenize("What direction is the green bust going? bus*"), readable)[0] == \
+        tokenize("What direction is the green bus going?")
+    assert corrections_starred(tokenize("if the grey sedate (sedan!!) had started"), readable)[0] == \
+        tokenize("if the grey sedan had started")
+    assert corrections_starred(tokenize("is the red car fast? (yes)"), readable)[0] == tokenize("is the red car fast? "
+                                                                                                "(yes)")
+    parser = QuestionParser.load()
+    fact, cut, people = parser.parse_batch([
+        "One wonders whether the chopper is in fact standing still when it comes into contact with the blue minivan.",
+        "once the video's cut off is the brown fighter jet gonna collie with anything",
+        "What type of vehicle did the people bus hit? *purple"])
+    assert fact[-1] == "is_static" and cut[0] == "futureEvents" and "filter_attributes[purple]" in people
+    assert_refused(parser, {
+        "Can we get clarity on whether the pickup and the purple thing end up bumping into each other?": "after it",
+        "Please state the height above the ground at which the grey airliner hovers.": "height",
+        "does the red car cut off the blue bus?": "cut off"})

@@ -276,11 +276,12 @@ class QuestionParser:
         held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
+        words, starred = corrections_starred(words, self.readable)
         words, printed = worksheet_as_said(words)
         words, shorthand = shorthand_as_said(words)
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
-        shorthand = coded + tuple(held.items()) + printed + shorthand + heard + sounded
+        shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
         words, clause = colour_clause_as_named(words)
@@ -293,6 +294,8 @@ class QuestionParser:
         corrected += setting + scenario + told
         words, examined = examination_as_asked(words)
         words, wagered = wagers_read(words)
+        words, requested = requested_as_asked(words)
+        wagered += requested
         corrected += examined + wagered
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
@@ -318,6 +321,8 @@ class QuestionParser:
         words, afloat = floating_plane_as_vehicle(words)
         words, end = video_end_as_said(words)
         words, framing = framing_dropped(words)
+        words, preamble = preamble_dropped(words)
+        framing += preamble
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
         words, stated = imperative_as_stated(words)
@@ -742,7 +747,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # a vehicle, a time, a motion or a collision
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
-    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4) and _says_nothing(tail):
+    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail):
         end = asked + 1
     # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
     thanked = max((j for j in range(k, end - 1) if words[j] == "." and words[j + 1] in THANKING), default=None)
@@ -1338,6 +1343,71 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     return (out, tuple(read)) if read else (words, ())
 
 
+# A request put in a third person's or a report's words ('The authors should clarify how fast ...', 'Reviewer 3 would
+# like to know how quickly ...', 'It is not evident from the footage whether ...', 'Action item: confirm how fast
+# ...'): a preamble that names no vehicle and sets no condition, ending on a verb of asking or of what is unknown,
+# then what is asked. Read as the grammar's 'tell me' (or 'is it true that' before 'that'); a clause said before it
+# ('Given that the clip is cut short, ...') stays. A remark after it that says nothing ('; confirmation is
+# requested.', 'The submission does not say.', '; could the authors comment?') is dropped.
+REQUESTING = {"clarify", "clarified", "state", "stated", "specify", "specified", "report", "reported", "confirm",
+              "confirmed", "indicate", "indicated", "explain", "explained", "establish", "established", "determine",
+              "determined", "know", "advise", "predict", "enquire", "enquires", "inquire", "inquires", "ask", "asks",
+              "seek", "seeks", "request", "requests", "requested", "speculate", "forecast", "evident", "clear",
+              "obvious", "unclear", "sure", "certain", "tell", "verify", "verified", "document", "documented"}
+_REQUESTED = ("whether", "if", "how", "what", "which", "that", "the")
+CONFIRMING_VERBS = {"confirm", "confirmed", "verify", "verified", "establish", "established"}
+OBJECT_TAKING = CONFIRMING_VERBS | {"state", "report", "specify", "clarify", "indicate", "determine", "explain",
+                                    "predict", "forecast", "document"}
+_ASKED_FOR = (["confirmation"], ["clarification"], ["a", "statement", "of"], ["confirmation", "of"])
+_ASKED_AS = (["as", "to"], ["on"], ["from", "the", "footage"], ["from", "the", "video"], ["from", "the", "clip"],
+             ["in", "the", "footage"], ["in", "the", "video"])
+# (nor a question of its own: 'what is the motion state of ...')
+_NOT_PREAMBLE = {"if", "had", "suppose", "imagine", "when", "after", "before", "were", "?", ".", "!", ";", "what",
+                 "which", "how", "where", "who", "why"}
+
+
+def _requested_at(words: list[str], k: int) -> int | None:
+    """Where what is asked begins after a verb of asking at words[k] ('clarify how', 'seeks confirmation that',
+    'not evident from the footage whether'), or None."""
+    j = k + 1
+    for skip in (_ASKED_FOR, _ASKED_AS):
+        j += next((len(s) for s in skip if words[j:j + len(s)] == s), 0)
+    # 'report the speed of', never 'ask the authors'; 'not evident whether', never 'dead certain the ...'
+    asked = _REQUESTED[:5] + ("that",) * (j > k + 1 or words[k] in CONFIRMING_VERBS) + \
+        ("the",) * (words[k] in OBJECT_TAKING)
+    return j if words[j:j + 1] and words[j] in asked else None
+
+
+def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the authors should clarify how fast the red sedan is ...' -> 'tell me how fast the red sedan is ...';
+    'reviewer 4 seeks confirmation that the scooter is ...' -> 'is it true that the scooter is ...'. With the words
+    read so, or the words as they are and ()."""
+    for k in range(min(len(words), 24)):
+        if words[k] not in REQUESTING or not _requested_at(words, k) or \
+                k and words[k - 1] in DETERMINERS | {"its", "their", "motion", "kinetic"}:   # 'the motion state of'
+            continue
+        first = max((j + 1 for j in range(k) if words[j] in (",", "-", ":")), default=0)
+        before = words[:first]   # nothing, or a clause that says the video stopped ('given that the clip is cut short ,')
+        if not NAMING & set(words[:k]) and not _NOT_PREAMBLE & set(words[first:k]) and k - first <= 10 and \
+                (not _says_something(before) or FILM_WORDS & set(before)) and (k > first or words[k] not in ("tell", "state", "know")
+                                                              and words[_requested_at(words, k)] != "the"):
+            break
+    else:
+        return words, ()
+    j = _requested_at(words, k)
+    confirmed = words[j] == "that" or words[j] == "the" and words[k] in CONFIRMING_VERBS
+    said = ["is", "it", "true", "that"] if confirmed else ["tell", "me"]
+    out = words[:first] + said + words[j + (words[j] == "that"):]
+    read = [(" ".join(words[first:j + (words[j] == "that")]), " ".join(said))]
+    # the remark after it
+    cut = max((m for m in range(len(out) - 1) if out[m] in (";", ".", "?")), default=None)
+    tail = out[cut + 1:] if cut is not None else []
+    if tail and len(tail) <= 8 and _says_nothing([w for w in tail if w not in ("?", ".")]):
+        read.append((" ".join(out[cut:]), "nothing, a remark"))
+        out = out[:cut] + ["."]
+    return out, tuple(read)
+
+
 # A wager around the question. A stake says nothing the question asks ('I've a tenner on yes.', 'Fiver says no.',
 # '... and I'll pay out', 'Freeze-frame punt:', ', so it's an in-play bet:') and is dropped; a claim bet on ('I bet
 # the sedan hits the bus. Does it?', 'Is it a lock that ...?', 'Fiver says the tandem is faster ..., do I collect?')
@@ -1829,6 +1899,8 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
 
 
 GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
+CHOICES_SAID = {"static", "stationary", "parked", "still", "moving", "slow", "slowly", "fast", "quick", "quickly",
+                "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down"}
 # the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
 SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
             "?"}
@@ -1853,6 +1925,10 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             continue
         d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DETERMINERS), None)
         described = out[d + 1:a] if d is not None else []
+        if "or" in inside and set(inside) <= CHOICES_SAID:   # '(static, slow or fast)': what its answer is anyway
+            read.append((" ".join(out[a:b + 1]), "nothing, the choices offered"))
+            out[a:b + 1] = []
+            continue
         if SPEAKING & set(inside):   # a speaker's aside: '(the motorbike, i should say)', '(is that the word?)'
             said = name[:name.index(",")] if "," in name else name
             named = said and all(w in NAMING for w in said) and any(w in OBJECT_WORDS for w in said) and described
@@ -2022,6 +2098,50 @@ def _decoration(word: str) -> bool:
 def _complete(words: list[str], k: int) -> bool:
     """Whether a vehicle's name that begins with the colour at k goes on with a sub-type or category."""
     return words[k + 1:k + 2] != [] and words[k + 1] in NAMING and words[k + 1] not in COLOR_NAMES
+
+
+# A word autocorrect changed, put right after the question as a phone's user does ('Is the green sub static? *SUV',
+# '... bust ...? bus*', '... (cyan)', '... meant collided') or in brackets after it ('the red bruiser (cruiser)'): the
+# word said wrong is the one the correction is most like; only a word the parser reads corrects, and only one it is
+# like (half its letters at least).
+STARRED = (["*", None], [None, "*"], ["(", None, ")"], ["meant", None], ["i", "meant", None], ["*", "*", None])
+
+
+def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the green sub statistic when the video starts ? * static' -> 'is the green sub static when the video
+    starts ?'; 'the red bruiser ( cruiser )' -> 'the red cruiser'. With the words read so, or the words as they are
+    and ()."""
+    end = len(words) - sum(1 for w in reversed(words) if w in ("!", ".")) if words else 0
+    while end and words[end - 1] in ("!", "."):
+        end -= 1
+    for form in STARRED:
+        tail = words[end - len(form):end] if end >= len(form) else []
+        if len(tail) != len(form) or any(f is not None and f != w for f, w in zip(form, tail)):
+            continue
+        said = tail[form.index(None)]
+        before = words[:end - len(form)]
+        if said not in readable or not said.isalpha() or said in before or not before:
+            continue
+        like = lambda w: SequenceMatcher(None, w, said).ratio()
+        unread = [(like(w), k) for k, w in enumerate(before) if w.isalpha() and w not in readable and like(w) >= 0.5]
+        candidates = unread or [(like(w), k) for k, w in enumerate(before) if w.isalpha() and len(w) > 2
+                                and w not in DETERMINERS and like(w) >= 0.6]
+        if not candidates:
+            continue
+        _, k = max(candidates)
+        out = [*before[:k], said, *before[k + 1:]]
+        return out, ((f"{before[k]} ... {' '.join(tail)}", said),)
+    # in brackets after the word ('the grey sedate (sedan!!)')
+    for k in range(1, len(words) - 2):
+        if words[k] == "(" and words[k + 2:k + 3] in ([")"], ["!"]) and words[k + 1] in readable and \
+                words[k - 1] not in readable and words[k - 1].isalpha() and \
+                SequenceMatcher(None, words[k - 1], words[k + 1]).ratio() >= 0.5:
+            close = words.index(")", k) if ")" in words[k:k + 5] else None
+            if close is None or any(w != "!" for w in words[k + 2:close]):
+                continue
+            return [*words[:k - 1], words[k + 1], *words[close + 1:]], \
+                ((" ".join(words[k - 1:close + 1]), words[k + 1]),)
+    return words, ()
 
 
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2376,11 +2496,43 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     return main, ((" ".join(words[:k]), "nothing, a preamble"),)
 
 
+# A preamble before a colon or a dash (or a comma, before the question's opener) that says nothing the question needs:
+# an office's ('Looping in the wider group -', 'Per the brief from leadership,', 'FYI, need a yes/no for the deck:'),
+# or a reason given in jest ('Because obviously a school bus has nowhere to be:', 'As if gravity were optional:'),
+# where the question names its own vehicles.
+REASONS = (["because"], ["cause"], ["cos"], ["since"], ["as", "if"], ["given", "how"])
+TAGGING = {"right", "yeah", "innit", "eh"}
+
+
+def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'per the brief from leadership , what colour is ...' -> 'what colour is ...'. With the preamble read as
+    nothing, or the words as they are and ()."""
+    # (a reason's tag closes it: 'because slowing down solves everything , right ? if ...')
+    k = next((k for k in range(1, min(len(words) - 1, 16)) if words[k] in (":", "-") or words[k] == "," and (
+        words[k + 1] in QUESTION_OPENERS or words[k + 1] == "which") or words[k] == "?" and words[k - 1] in TAGGING),
+             None)
+    if k is None:
+        return words, ()
+    pre, main = words[:k], words[k + 1:]
+    named = mentions(main) and (not {"it", "they"} & set(main) or not NAMING & set(pre))
+    reason = any(pre[:len(r)] == r for r in REASONS) and named and not {"had", "?"} & set(pre)
+    pre = pre[2 + (pre[2:3] == [","]):] if pre[:2] == ["going", "forward"] else pre   # an office's 'going forward'
+    # ('need a yes / no for the deck :', 'per the brief from leadership ,'; not 'in the final frame ,')
+    said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")]
+    quiet = words[k] != "?" and not _says_something(said) and not (
+        STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom"}) & set(said) or set(pre) <= TAGGING
+    if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
+                                                  or named):
+        return words, ()
+    return main, ((" ".join(words[:k + 1]), "nothing, a preamble"),)
+
+
 # A first sentence or phrase that points at an object ('Watch the yellow bus. Does it hit anything?', 'How about the
 # blue bus, is it fast?', 'This is about the red sedan. Does it ...', 'There is a red sedan in the video. Is it ...'):
 # the question about it. A sentence of pointing words only: one that says more ('The red sedan is parked.', 'The
 # cruiser shows up at some point.') may set what the question asks, and stays.
 ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "at"], ["watch"], ["consider"],
+             ["circling", "back", "on"], ["circling", "back", "to"], ["following", "up", "on"],
              ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
              ["as", "to"])
@@ -2659,6 +2811,9 @@ IDIOMS = phrase_table({
                               ("like", "a", "bat", "out", "of", "hell"), ("at", "full", "pelt"), ("full", "pelt"))},
     **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
         ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
+    # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
+    **{p: () for p in (("in", "fact"), ("in", "actual", "fact"), ("as", "a", "matter", "of", "fact"))},
+    **{("following", "the", "point", *at): ("after",) for at in (("at", "which"), ("where",), ("when",))},
     # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'
     **{("the", "picture", *v): ("the", "video", *v) for v in (
         ("began",), ("begins",), ("started",), ("starts",), ("opened",), ("opens",), ("first", "began"),
@@ -3402,6 +3557,7 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
     me the _ of', 'what _ is', 'what is the red sedan's _', 'at what _', 'how _ is', 'when does' (after a clause of
     time said first); (None, '') where the head is none of these."""
     head = _head(words)
+    head = head[1:] if head[:1] == ["please"] else head   # 'please state the height above ...'
     asked = None
     if head[:1] and head[0] in ASKING:
         rest = head[1:]
@@ -3413,7 +3569,7 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
             asked = rest[0]   # 'what colour is', 'what part of the bus'
     for opener in ASKING_FOR:
         if head[:len(opener)] == opener and head[len(opener):len(opener) + 1] == ["the"] and \
-                head[len(opener) + 2:len(opener) + 3] == ["of"]:
+                head[len(opener) + 2:len(opener) + 3] in (["of"], ["above"], ["at"], ["from"], ["between"], ["over"]):
             asked = head[len(opener) + 1]
     if head[:1] and head[0] in ASKING and head[1:2] and head[1] in COPULAS:   # 'what is the red sedan's _'
         k = 2 + (head[2:3] == ["the"])
@@ -3478,8 +3634,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     relative = next((w for k, w in enumerate(said) if w in RELATIVE_MOTION | PASSING and
                      said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None) or \
         next((f"{a} {b}" for k, (a, b) in enumerate(zip(said, said[1:])) if a in ("cut", "cuts", "cutting")
-              and b in ("off", "in") and said[k - 1:k] not in ([w] for w in FILM_WORDS)),
-             None)   # 'does it cut off the bus?', not 'after the video cuts off'
+              and b in ("off", "in") and said[k - 1:k] not in ([w] for w in FILM_WORDS)
+              and said[k + 2 + (said[k + 2:k + 3] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID | set(COLOR_NAMES))),
+             None)   # 'does it cut off the bus?', not 'after the video cuts off' nor 'once the video's cut off'
     if relative:
         return (f"the question asks how a vehicle moves relative to another ('{relative}'), which no question here "
                 "asks: ask whether it is faster, or whether they collide")
@@ -4743,6 +4900,13 @@ FUTURE_CUES = {"will", "would", "going", "gonna", "later", "after", "future", "n
                "follows", "following", "anticipate", "ends", "end", "over", "finished", "done"}
 
 
+# ... and the video stopped, said in words a predictive question may use alone ('once the clip is halted, does ...')
+STOP_CUES = {w for stop in STOPPED_SAID for w in stop if w.isalpha() and w not in {"is", "was", "gets", "got", "s"}} \
+    | {"hereafter", "thereafter", "past", "forecast", "forecasting", "projected", "extrapolate", "extrapolating", "ahead",
+       "onward", "onwards", "resumes", "prediction", "predicting", "destined", "freeze", "paused", "cutoff",
+       "truncation"}
+
+
 def _future_said(words: list[str]) -> str:
     """The words that say the time after the video ('after the video', 'in the future'), or ''."""
     return next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
@@ -4775,6 +4939,10 @@ def future_unread(words: list[str], program: list[str]) -> str:
     if "futureEvents" in program and within and not FUTURE_CUES.intersection(words):
         return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
                 "it collides in the video")
+    # 'can we get clarity on whether the pickup and the purple thing bump into each other?' read after the video
+    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES).intersection(words):
+        return ("the question says nothing of the time after the video, but its nearest reading asks after it: ask "
+                "whether they collide in the video, or will after it ends")
     if "Events" not in program or "futureEvents" in program:
         return ""
     said = _future_said(words)
