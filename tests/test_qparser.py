@@ -27,6 +27,7 @@ from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_aske
                                      hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
                                      wagers_read, ticket_fields_read, attributes_offered_dropped,
                                      requested_as_asked, preamble_dropped, corrections_starred,
+                                     archaic_as_said, quoted_question, hypothesis_as_asked,
                                      ordered, type_of_category_as_vehicle, digressions_dropped, prompt_dropped,
                                      collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
                                      first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
@@ -2646,3 +2647,34 @@ def test_a_request_in_a_third_person_s_words_an_office_s_preamble_and_a_correcti
         "Can we get clarity on whether the pickup and the purple thing end up bumping into each other?": "after it",
         "Please state the height above the ground at which the grey airliner hovers.": "height",
         "does the red car cut off the blue bus?": "cut off"})
+
+
+def test_archaic_english_a_question_relayed_and_a_hypothesis_put_to_a_test():
+    readable = QuestionParser.load().readable
+    said, read = archaic_as_said(tokenize("when the video endeth, whither goeth the bus? it floateth"), readable)
+    assert said[3] == "ends" and said[-1] == "floats" and read == (("endeth", "ends"), ("floateth", "floats"))
+    said, _ = quoted_question(tokenize('The quiz card reads "Is the blue motorbike standing still?" - help!'))
+    assert said == tokenize("Is the blue motorbike standing still?")
+    assert quoted_question(tokenize('Is the "red" car fast?')) == (tokenize('Is the "red" car fast?'), ())
+    said, _ = hypothesis_as_asked(tokenize("H0: the green motorbike is moving fast at the start. Do the data support "
+                                           "it?"))
+    assert said == tokenize("is it true that the green motorbike is moving fast at the start ?")
+    # asked whether it is rejected, the answer is the other way round: left as it is
+    kept = tokenize("H0: the bus is parked. Should H0 be rejected?")
+    assert hypothesis_as_asked(kept) == (kept, ())
+    parser = QuestionParser.load()
+    doth, relayed, level, scene = parser.parse_batch([
+        "Doth the green private jet strike aught in all the video?",
+        "A coworker asked me how quickly the school bus is going in the first moments of the clip; any idea?",
+        "Classify the speed of the red sedan in the opening frames (levels: static, slow, fast).",
+        "When first the scene begins to play, how fast goes the school bus on its way - still, slow, or swift as day?"])
+    assert doth[-1] == "exist" and relayed[-2:] == ["start", "query_moving_velocity"]
+    assert level[-2:] == ["start", "query_moving_velocity"] and scene[-2:] == ["start", "query_moving_velocity"]
+    assert_refused(parser, {
+        "Wherefore did the blue bus and the yellow car collide?": "why",
+        "Is the purple SUV faster than the brown bicycle when the video endeth?": "end",
+        "Which came first: the crash of the bus, or the crash of the bicycle?": "came first",
+        "Is the red car greater in size than the blue bus?": "size",
+        "Near the video's end, my friend, does the brown chopper speed up, engine on?": "other than the start",
+        "Which colour level corresponds to the vehicle whose initial speed is recorded as slow?": "speeding up",
+        "Hark, the yellow biplane enters upon the stage! At what pace doth it arrive?": "into view"})

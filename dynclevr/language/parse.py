@@ -45,7 +45,10 @@ A question is unparsed (counted wrong) rather than given a confident wrong progr
   the order in which vehicles appear; a measure of speed or a comparison's degree (`speed_measure`), a colour
   checked (`checked_attribute`), a collision with scenery ('the wall'), an order of collisions ('what does it hit
   next': `ordered`), a collision said not to happen ('passed without touching': `impact_denied`), a rest no word says
-  (`reversed_reading`), 'afterwards' read within the video (`future_unread`);
+  (`reversed_reading`), 'afterwards' read within the video or a reading after the video no word says
+  (`future_unread`), a reading of accelerating no word says (`acceleration_unsaid`), the video's end, a later time or
+  a vehicle entering read at the start (`end_unread`), a size (`size_unread`), which event came first, a change
+  assumed ('assume the cruiser starts slow; does it ...') read as what happened (`imagining_unread`);
 - it names a vehicle the catalogue lacks where a question names one ('does the zamboni hit ...': `_unknown_vehicle`);
 - the program leaves out an object the question names (a sentence read as a question about fewer objects), or
   refers to one it does not name. Object words reach the program only through the
@@ -259,7 +262,8 @@ class QuestionParser:
             or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
-            or acceleration_unread(said, c.program)) else c
+            or acceleration_unread(said, c.program) or acceleration_unsaid(read, c.program)
+            or end_unread(said + read, c.program) or size_unread(said, c.program)) else c
             for c, said, read in zip(chosen, said_words, read_words)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -277,6 +281,9 @@ class QuestionParser:
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
         words, starred = corrections_starred(words, self.readable)
+        words, archaic = archaic_as_said(words, self.readable)
+        words, relayed = quoted_question(words)
+        starred += archaic + relayed
         words, printed = worksheet_as_said(words)
         words, shorthand = shorthand_as_said(words)
         words, heard = heard_as_said(words, self.known)
@@ -295,7 +302,8 @@ class QuestionParser:
         words, examined = examination_as_asked(words)
         words, wagered = wagers_read(words)
         words, requested = requested_as_asked(words)
-        wagered += requested
+        words, tested = hypothesis_as_asked(words)
+        wagered += requested + tested
         corrected += examined + wagered
         words, hedged = hedges_dropped(words)
         words, dislocated = dislocated_as_asked(words)
@@ -424,10 +432,15 @@ class QuestionParser:
         if alike:
             return [], (f"the question asks whether two speeds are alike ('{alike}'), which no question here asks: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        if "why" in said or CAUSES.intersection(said) or words[:2] == ["how", "come"] or \
+        if {"why", "wherefore"} & set(said) or CAUSES.intersection(said) or words[:2] == ["how", "come"] or \
                 said[:1] == ["explain"] and said[1:2] not in (["whether"], ["if"]) or \
                 any(a == "what" and b in CAUSING for a, b in zip(said, said[1:])):
             return [], "the question asks why, which no question here answers", read_as, said
+        first = next((f"{a} {b} first" for a, b, c in zip(said, said[1:], said[2:]) if a in ("which", "what") and
+                      b in ("came", "comes", "happened", "happens", "occurred", "occurs") and c == "first"), None)
+        if first:
+            return [], (f"the question asks which event came first ('{first}'), which no question here asks"), \
+                read_as, said
         unasked = unknown_property(words, self.known, said)
         if unasked:
             return [], unasked, read_as, said
@@ -836,7 +849,7 @@ STATING = {"assume", "assuming", "consider", "think"}
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
-                    "whatif", "twist", "cf"}
+                    "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate"}
 IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
                    "scenario", "world", "case"}
 CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
@@ -1218,7 +1231,7 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     opened = lambda said: said[next((j for j, w in enumerate(said) if w not in INTERJECTIONS | {","}), len(said)):]
     first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(opened(said)[:len(h)] == list(h)
                                                                           for h in HEDGE_STARTS)
-    undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID
+    undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID | END_WORDS
     # an apology before the question needs no 'I' ('sorry if this is a silly question , but does ...')
     unapologetic = NAMING | GENERIC_NOUNS | START_WORDS | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS
     apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in QUESTION_OPENERS
@@ -1353,13 +1366,15 @@ REQUESTING = {"clarify", "clarified", "state", "stated", "specify", "specified",
               "confirmed", "indicate", "indicated", "explain", "explained", "establish", "established", "determine",
               "determined", "know", "advise", "predict", "enquire", "enquires", "inquire", "inquires", "ask", "asks",
               "seek", "seeks", "request", "requests", "requested", "speculate", "forecast", "evident", "clear",
-              "obvious", "unclear", "sure", "certain", "tell", "verify", "verified", "document", "documented"}
+              "obvious", "unclear", "sure", "certain", "tell", "verify", "verified", "document", "documented",
+              # a question relayed ('A coworker asked me how quickly ...', 'Mum wondered which colour ...')
+              "asked", "wondered", "wonders", "curious", "pestering"}
 _REQUESTED = ("whether", "if", "how", "what", "which", "that", "the")
 CONFIRMING_VERBS = {"confirm", "confirmed", "verify", "verified", "establish", "established"}
 OBJECT_TAKING = CONFIRMING_VERBS | {"state", "report", "specify", "clarify", "indicate", "determine", "explain",
                                     "predict", "forecast", "document"}
 _ASKED_FOR = (["confirmation"], ["clarification"], ["a", "statement", "of"], ["confirmation", "of"])
-_ASKED_AS = (["as", "to"], ["on"], ["from", "the", "footage"], ["from", "the", "video"], ["from", "the", "clip"],
+_ASKED_AS = (["as", "to"], ["on"], ["me", "about"], ["me"], ["about"], ["from", "the", "footage"], ["from", "the", "video"], ["from", "the", "clip"],
              ["in", "the", "footage"], ["in", "the", "video"])
 # (nor a question of its own: 'what is the motion state of ...')
 _NOT_PREAMBLE = {"if", "had", "suppose", "imagine", "when", "after", "before", "were", "?", ".", "!", ";", "what",
@@ -1376,6 +1391,33 @@ def _requested_at(words: list[str], k: int) -> int | None:
     asked = _REQUESTED[:5] + ("that",) * (j > k + 1 or words[k] in CONFIRMING_VERBS) + \
         ("the",) * (words[k] in OBJECT_TAKING)
     return j if words[j:j + 1] and words[j] in asked else None
+
+
+# A hypothesis put to a test ('H0: the green motorbike is moving fast at the very beginning. Do the data support
+# it?', 'Test the hypothesis that the blue SUV is static at the start: accept or reject?'): whether it holds, the
+# grammar's 'is it true that'. Asked whether it is rejected, the answer is the other way round, and it stays unread.
+HYPOTHESES = (["h0", ":"], ["h1", ":"], ["ha", ":"], ["null", "hypothesis", ":"], ["hypothesis", ":"],
+              ["alternative", "hypothesis", ":"], ["test", "the", "hypothesis", "that"], ["our", "null", "says"],
+              ["the", "null", "says"], ["hypothesis", "that"])
+HOLDING = {"support", "supported", "supports", "true", "accept", "accepted", "retained", "retain", "hold", "holds",
+           "confirmed", "correct", "consistent"}
+
+
+def hypothesis_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'h0 : the bus is parked at the start . do the data support it ?' -> 'is it true that the bus is parked at the
+    start ?'. With the words read so, or the words as they are and ()."""
+    label = next((h for h in HYPOTHESES if words[:len(h)] == h), None)
+    if label is None:
+        return words, ()
+    end = next((k for k in range(len(label), len(words)) if words[k] in (".", ":", "?", ";")), len(words))
+    claim, closing = words[len(label):end], words[end + 1:]
+    rejected = "reject" in closing or "rejected" in closing
+    either = any(closing[k:k + 3] in (["accept", "or", "reject"], ["reject", "or", "accept"])
+                 for k in range(len(closing)))
+    if not claim or closing and (not HOLDING & set(closing) or rejected and not either):
+        return words, ()
+    return ["is", "it", "true", "that", *claim, "?"], ((" ".join(label), "is it true that"),
+                                                      *(((" ".join(words[end:]), "?"),) if closing else ()))
 
 
 def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1400,9 +1442,10 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     out = words[:first] + said + words[j + (words[j] == "that"):]
     read = [(" ".join(words[first:j + (words[j] == "that")]), " ".join(said))]
     # the remark after it
-    cut = max((m for m in range(len(out) - 1) if out[m] in (";", ".", "?")), default=None)
+    cut = max((m for m in range(len(out) - 1) if out[m] in (";", ".", "?", "-") or out[m] == "," and
+               out[m + 1:m + 2] == ["and"]), default=None)   # '..., and i said i'd ask you .'
     tail = out[cut + 1:] if cut is not None else []
-    if tail and len(tail) <= 8 and _says_nothing([w for w in tail if w not in ("?", ".")]):
+    if tail and len(tail) <= 10 and _says_nothing([w for w in tail if w not in ("?", ".", "no")]):   # 'no idea'
         read.append((" ".join(out[cut:]), "nothing, a remark"))
         out = out[:cut] + ["."]
     return out, tuple(read)
@@ -1899,6 +1942,7 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
 
 
 GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
+CHOICE_LABELS = {"levels", "options", "choices", "classes", "categories", "answers"}
 CHOICES_SAID = {"static", "stationary", "parked", "still", "moving", "slow", "slowly", "fast", "quick", "quickly",
                 "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down"}
 # the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
@@ -1925,7 +1969,8 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             continue
         d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DETERMINERS), None)
         described = out[d + 1:a] if d is not None else []
-        if "or" in inside and set(inside) <= CHOICES_SAID:   # '(static, slow or fast)': what its answer is anyway
+        levels = inside[2:] if inside[1:2] == [":"] and inside[0] in CHOICE_LABELS else None   # '(levels: ...)'
+        if ("or" in inside or levels) and set(levels or inside) <= CHOICES_SAID:   # '(static, slow or fast)'
             read.append((" ".join(out[a:b + 1]), "nothing, the choices offered"))
             out[a:b + 1] = []
             continue
@@ -2098,6 +2143,34 @@ def _decoration(word: str) -> bool:
 def _complete(words: list[str], k: int) -> bool:
     """Whether a vehicle's name that begins with the colour at k goes on with a sub-type or category."""
     return words[k + 1:k + 2] != [] and words[k + 1] in NAMING and words[k + 1] not in COLOR_NAMES
+
+
+def quoted_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question quoted by someone who relays it ('The quiz card reads "Is the blue motorbike standing still ...?" -
+    help!', 'My teacher wrote this on the board: "..." What should I put down?'): the quoted question, where the
+    words around it name no vehicle. With the words around it read as nothing, or the words as they are and ()."""
+    marks = [k for k, w in enumerate(words) if w == '"']
+    if len(marks) != 2:
+        return words, ()
+    a, b = marks
+    quoted, around = words[a + 1:b], words[:a] + words[b + 1:]
+    if not quoted or not around or NAMING & set(around) or not (quoted[-1] == "?" or quoted[0] in QUESTION_OPENERS):
+        return words, ()
+    return quoted + ["?"] * (quoted[-1] not in ("?", ".")), ((" ".join(around), "nothing, the question relayed"),)
+
+
+def archaic_as_said(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A verb's Early Modern '-eth' as its '-s' ('floateth' -> 'floats', 'goeth' -> 'goes', 'stoppeth' -> 'stops'),
+    where the parser reads that form; with the words read so."""
+    out, read = list(words), []
+    for k, w in enumerate(out):
+        if w in readable or len(w) < 5 or not w.endswith("eth"):
+            continue
+        said = next((f for f in (w[:-3] + "s", w[:-3] + "es", w[:-4] + "s") if f in readable), None)
+        if said:
+            read.append((w, said))
+            out[k] = said
+    return out, tuple(read)
 
 
 # A word autocorrect changed, put right after the question as a phone's user does ('Is the green sub static? *SUV',
@@ -2814,6 +2887,9 @@ IDIOMS = phrase_table({
     # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
     **{p: () for p in (("in", "fact"), ("in", "actual", "fact"), ("as", "a", "matter", "of", "fact"))},
     **{("following", "the", "point", *at): ("after",) for at in (("at", "which"), ("where",), ("when",))},
+    # 'when first the scene begins to play', a poet's start
+    **{("when", "first", "the", film, begins): _START for film in ("scene", "video", "clip", "film", "play", "show")
+       for begins in ("begins", "starts", "opens", "began", "started", "opened", "beginneth", "openeth")},
     # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'
     **{("the", "picture", *v): ("the", "video", *v) for v in (
         ("began",), ("begins",), ("started",), ("starts",), ("opened",), ("opens",), ("first", "began"),
@@ -4793,6 +4869,66 @@ def acceleration_unread(words: list[str], program: list[str]) -> str:
         return ""
     return (f"the question asks whether a vehicle speeds up ('{said}') where no question here asks it (they ask it "
             "at the start, or as what might have been)")
+
+
+# the words, besides the grammar's phrases, that say a vehicle speeds up: a reading of accelerating needs one
+SPEEDING_UP = {"engine", "engines", "throttle", "revving", "gaining", "picking", "faster", "quicker", "gathering",
+               "increasing", "increase", "building", "thrust", "powered", "power", "speeding", "sped", "accelerator",
+               "gas", "pedal", "boost", "boosting", "turbo", "gunning", "guns", "punching", "flooring", "hastening",
+               "hasteneth"}
+
+
+SIZES = {"size", "length", "width", "weight", "mass", "bigger", "smaller", "larger", "heavier", "lighter", "wider",
+         "taller"}
+
+
+def size_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question compares or asks a size ('is the red car
+    greater in size than the blue bus?' was read as faster), which no question here asks."""
+    said = next((w for k, w in enumerate(words) if w in SIZES and words[k + 1:k + 2] not in (["speed"], ["velocity"])),
+                None)   # not 'a smaller speed'
+    return (f"the question asks about a size ('{said}'), which no question here asks (they ask speed classes, "
+            "directions, colours, types and collisions)") if said else ""
+
+
+def acceleration_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of accelerating is not the question's ('' when it is): the question says nothing of speeding up
+    ('which colour level corresponds to the vehicle whose initial speed is recorded as slow?' was read as the colour
+    of what accelerates)."""
+    if not {"is_accelerating", "filter_accelerating"} & set(map(operation, program)) or \
+            any(w.startswith("accelerat") for w in words) or SPEEDING_UP & set(words) or \
+            any(a == c and a.endswith("er") and b == "and" for a, b, c in zip(words, words[1:], words[2:])) or \
+            any(words[k:k + 3] == ["speed", "going", "up"] for k in range(len(words))) or \
+            any(words[k:k + len(a)] == list(a) for k in range(len(words)) for a in ACCELERATION_SAID):
+        return ""
+    return ("the question says nothing of speeding up, but its nearest reading asks about it: ask whether the vehicle "
+            "is accelerating")
+
+
+END_WORDS = {"end", "ends", "ended", "ending", "endeth", "finish", "finishes", "finished", "finale", "conclusion"}
+LATER_WORDS = {"later", "subsequently", "afterwards", "afterward", "eventually"}
+ENTERING = {"enters", "enter", "entering", "entered", "arrive", "arrives", "arrived"}   # not 'appear', also 'seem'
+
+
+def end_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question speaks of the video's end or a
+    later time ('when the video endeth', 'at the video's close', 'at last', 'later on, after the first few seconds'),
+    which no question asks of a vehicle's motion."""
+    if "start" not in program or "futureEvents" in program:
+        return ""
+    # ... or its coming into view, where nothing says the start ('the biplane enters upon the stage! at what pace doth
+    # it arrive?')
+    entering = next((w for w in words if w in ENTERING), None)
+    if entering and not START_WORDS & set(words) and "first" not in words:
+        return (f"the question asks about a vehicle coming into view ('{entering}'), but its nearest reading asks at "
+                "the start: ask how fast it moves when it comes into view")
+    said = next((w for w in words if w in END_WORDS | LATER_WORDS), None) or next(
+        (" ".join(p) for k in range(len(words)) for p in (["the", "close"], ["'", "s", "close"], ["at", "last"])
+         if words[k:k + len(p)] == p), None)
+    if said is None:
+        return ""
+    return (f"the question asks at a time other than the start ('{said}'), which no question here asks of a "
+            "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
 
 
 def property_unread(words: list[str], program: list[str]) -> str:
