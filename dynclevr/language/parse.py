@@ -2575,6 +2575,7 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 # where the question names its own vehicles.
 REASONS = (["because"], ["cause"], ["cos"], ["since"], ["as", "if"], ["given", "how"])
 TAGGING = {"right", "yeah", "innit", "eh"}
+PLACE_OPENERS = {"at", "in", "on", "during", "upon", "by", "from", "over", "throughout", "near", "around"}
 
 
 def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2592,7 +2593,8 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     pre = pre[2 + (pre[2:3] == [","]):] if pre[:2] == ["going", "forward"] else pre   # an office's 'going forward'
     # ('need a yes / no for the deck :', 'per the brief from leadership ,'; not 'in the final frame ,')
     said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")]
-    quiet = words[k] != "?" and not _says_something(said) and not (
+    # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
+    quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom"}) & set(said) or set(pre) <= TAGGING
     if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
                                                   or named):
