@@ -1374,8 +1374,8 @@ CONFIRMING_VERBS = {"confirm", "confirmed", "verify", "verified", "establish", "
 OBJECT_TAKING = CONFIRMING_VERBS | {"state", "report", "specify", "clarify", "indicate", "determine", "explain",
                                     "predict", "forecast", "document"}
 _ASKED_FOR = (["confirmation"], ["clarification"], ["a", "statement", "of"], ["confirmation", "of"])
-_ASKED_AS = (["as", "to"], ["on"], ["me", "about"], ["me"], ["about"], ["from", "the", "footage"], ["from", "the", "video"], ["from", "the", "clip"],
-             ["in", "the", "footage"], ["in", "the", "video"])
+_ASKED_AS = (["as", "to"], ["on"], ["me", "about"], ["me"], ["about"], ["from", "the", "footage"],
+             ["from", "the", "video"], ["from", "the", "clip"], ["in", "the", "footage"], ["in", "the", "video"])
 # (nor a question of its own: 'what is the motion state of ...')
 _NOT_PREAMBLE = {"if", "had", "suppose", "imagine", "when", "after", "before", "were", "?", ".", "!", ";", "what",
                  "which", "how", "where", "who", "why"}
@@ -1429,10 +1429,11 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
                 k and words[k - 1] in DETERMINERS | {"its", "their", "motion", "kinetic"}:   # 'the motion state of'
             continue
         first = max((j + 1 for j in range(k) if words[j] in (",", "-", ":")), default=0)
-        before = words[:first]   # nothing, or a clause that says the video stopped ('given that the clip is cut short ,')
+        # before it nothing, a label, or a clause that says the video stopped ('given that the clip is cut short ,')
+        before = words[:first]
+        opening = k > first or words[k] not in ("tell", "state", "know") and words[_requested_at(words, k)] != "the"
         if not NAMING & set(words[:k]) and not _NOT_PREAMBLE & set(words[first:k]) and k - first <= 10 and \
-                (not _says_something(before) or FILM_WORDS & set(before)) and (k > first or words[k] not in ("tell", "state", "know")
-                                                              and words[_requested_at(words, k)] != "the"):
+                (not _says_something(before) or FILM_WORDS & set(before)) and opening:
             break
     else:
         return words, ()
@@ -2184,7 +2185,7 @@ def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tu
     """'is the green sub statistic when the video starts ? * static' -> 'is the green sub static when the video
     starts ?'; 'the red bruiser ( cruiser )' -> 'the red cruiser'. With the words read so, or the words as they are
     and ()."""
-    end = len(words) - sum(1 for w in reversed(words) if w in ("!", ".")) if words else 0
+    end = len(words)
     while end and words[end - 1] in ("!", "."):
         end -= 1
     for form in STARRED:
