@@ -940,7 +940,8 @@ def _stated(sentence: list[str]) -> bool:
     said = _opener_said(sentence)
     return bool(said) and said[1][:1] and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
         w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence))
-        or START_WORDS & set(sentence) and SPEED_CLASS_WORDS & set(sentence))   # 'assume the cruiser starts slow'
+        or said[1][0] in ("assume", "assuming") and START_WORDS & set(sentence) and SPEED_CLASS_WORDS & set(sentence))
+    # ('assume the cruiser starts slow')
 
 
 
@@ -1438,10 +1439,12 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     else:
         return words, ()
     j = _requested_at(words, k)
-    confirmed = words[j] == "that" or words[j] == "the" and words[k] in CONFIRMING_VERBS
+    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds)
+    confirmed = words[j] == "that" or words[j] in ("the", "whether", "if") and words[k] in CONFIRMING_VERBS
     said = ["is", "it", "true", "that"] if confirmed else ["tell", "me"]
-    out = words[:first] + said + words[j + (words[j] == "that"):]
-    read = [(" ".join(words[first:j + (words[j] == "that")]), " ".join(said))]
+    dropped = words[j] in ("that", "whether", "if") and confirmed
+    out = words[:first] + said + words[j + dropped:]
+    read = [(" ".join(words[first:j + dropped]), " ".join(said))]
     # the remark after it
     cut = max((m for m in range(len(out) - 1) if out[m] in (";", ".", "?", "-") or out[m] == "," and
                out[m + 1:m + 2] == ["and"]), default=None)   # '..., and i said i'd ask you .'
