@@ -21,30 +21,30 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.parse import (Parse, QuestionParser, alternatives_as_asked, anything_unasked, asides_dropped,
-                                     attention_as_subject, _chosen, checked_attribute, clause_time, clock_unasked,
-                                     afterthoughts_read, context_as_question, corrections_dropped, dislocated_as_asked,
-                                     hedges_dropped, examination_as_asked, glosses_read, told_otherwise_as_imagined,
-                                     wagers_read, ticket_fields_read, attributes_offered_dropped,
-                                     requested_as_asked, preamble_dropped, corrections_starred,
-                                     archaic_as_said, quoted_question, hypothesis_as_asked,
-                                     ordered, type_of_category_as_vehicle, digressions_dropped, prompt_dropped,
-                                     collision_at_start, comparative_as_said, comparison_imagined, direction_unasked,
-                                     first_frames_as_said, floating_unsaid, form_unasked, form_unmatched, chained,
-                                     framing_dropped, future_unread, heading_as_direction, height_as_aloft,
-                                     homophones_as_said, worksheet_as_said, impact_said_first,
-                                     idioms_as_said, imagined_otherwise, interjections_dropped, type_as_said,
-                                     condition_subject, condition_subject_first, floating_plane_as_vehicle,
-                                     impact_like, imperative_as_stated, inserted_time_last,
-                                     impact_unsaid, motion_unfiltered, named_attribute, negative_question_as_asked,
-                                     noun_phrase_as_question, otherwise_compared,
-                                     program_shape, properties_joined, questions_joined, premised, quantified, ranking,
-                                     several_asked, request_as_imperative, reversed_as_said, reversed_reading,
-                                     shorthand_as_said,
-                                     speed_as_subject, speed_measured, speed_measure, speed_unsaid, speeds_alike,
-                                     synonyms, tail_as_question, time_clause_last, time_unasked, times_joined,
-                                     video_end_as_said,
-                                     well_formed)
+from dynclevr.language.asides import (asides_dropped, corrections_dropped, digressions_dropped, dislocated_as_asked,
+                                      examination_as_asked, framing_dropped, hedges_dropped, hypothesis_as_asked,
+                                      interjections_dropped, preamble_dropped, prompt_dropped, requested_as_asked,
+                                      ticket_fields_read, wagers_read)
+from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
+                                      condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
+                                      form_unasked, form_unmatched, future_unread, impact_like, impact_unsaid,
+                                      motion_unfiltered, named_attribute, reversed_reading, speed_unsaid, time_unasked)
+from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first,
+                                       told_otherwise_as_imagined)
+from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, program_shape, synonyms,
+                                     time_clause_last, well_formed)
+from dynclevr.language.refusals import (chained, checked_attribute, imagined_otherwise, ordered, otherwise_compared,
+                                        premised, properties_joined, quantified, questions_joined, ranking,
+                                        reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
+                                        times_joined)
+from dynclevr.language.surface import (archaic_as_said, corrections_starred, glosses_read, homophones_as_said,
+                                       quoted_question, shorthand_as_said, worksheet_as_said)
+from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
+from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
+                                        comparative_as_said, floating_plane_as_vehicle, heading_as_direction,
+                                        height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
+                                        speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
                                           concrete_program, corefer, delexicalise, described_as_named,

@@ -45,7 +45,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
                   "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
-                  # as older people name them (a category alone: synonyms.txt, parse.IDIOMS)
+                  # as older people name them (a category alone: synonyms.txt, wordings.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus", "city omnibus": "regular bus", "bendy omnibus": "articulated bus",
                   "town bike": "utility bike", "town bicycle": "utility bike", "scrambler": "dirtbike",

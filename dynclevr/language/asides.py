@@ -1,0 +1,880 @@
+"""What is said around the question: `QuestionParser._words`' rewrites (each `f(words) -> (words, read_as)`) that drop
+what asks nothing, or read a wrapping as the grammar's own words. Dropped: a speaker's correction of a vehicle's name
+(`corrections_dropped`), a doubt around the question (`hedges_dropped`), a prompt's wrapping (`prompt_dropped`), a
+vehicle said as someone's (`owners_dropped`), labels, remarks and asides (`asides_dropped`), the interjections it opens
+with (`interjections_dropped`), digressions between commas (`digressions_dropped`), and a preamble that frames it
+(`framing_dropped`, `preamble_dropped`). Read as the grammar's 'is it true that' or 'tell me': a witness examined
+(`examination_as_asked`), a wager (`wagers_read`), a request in a report's words (`requested_as_asked`), a hypothesis
+put to a test (`hypothesis_as_asked`); a ticket's fields as the question and its context (`ticket_fields_read`); and
+vehicles said first, then asked about as 'they' or 'it', as the question's subject (`dislocated_as_asked`)."""
+
+from __future__ import annotations
+
+import re
+
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.context import coordinated_subject
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, mentions
+from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
+                                     COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
+                                     CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
+                                     FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
+                                     IMAGINING, INTERJECTIONS, LATER_TIMES, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
+                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PLURALS, QUERY_NOUNS,
+                                     QUESTION_OPENERS, REST_WORDS, RESTING, SENTENCE_ENDS, SPEED_CLASS_WORDS,
+                                     START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES, TIME_OPENERS, UNNAMED,
+                                     YES_NO_OPENERS, asks_impact)
+
+# whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
+VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
+             "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all", "support", "there",
+             "sir", "madam", "colleagues", "staff", "helpdesk"}   # and a letter's ('Dear support,')
+# ... and a child's or to a child, said alone before a comma or between commas ('Mummy, how fast ...', 'Can you tell
+# me, sweetie, is ...'): 'daddy' was read as 'pops' (into view)
+ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", "dad", "papa", "grandma", "granny",
+             "gran", "nana", "grandpa", "grandad", "granddad", "gramps", "sweetie", "sweetheart", "honey", "darling",
+             "kiddo", "kids", "children", "class", "teacher", "auntie", "aunty", "uncle", "pal", "guys", "folks",
+             "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam"}
+# A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
+# prediction.'): it asks nothing, and its name is an unknown word
+SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
+             "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
+             "greetings", "with"}
+THANKING = {"thanks", "thank", "cheers", "ta", "many"}
+INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
+
+
+def _says_nothing(tail: list[str]) -> bool:
+    """Whether words after a question say nothing of a vehicle, a time, a motion or a collision, nor ask anything
+    ('? couldn't see', '? Many thanks, Nadia'; not '? Give its colour.')."""
+    return not asks_impact(tail) and not set(tail) & (
+        OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
+        | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
+
+
+def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
+    follows them. With the interjections read as nothing, or the words as they are and ()."""
+    addressed = [j for j in range(1, len(words) - 1) if words[j] in ADDRESSED and words[j - 1] == ","
+                 and words[j + 1] in (",", "?", "!", ".")]
+    addressees = " ".join(words[j] for j in addressed)
+    if addressed:   # between commas, or at the end: 'is it fast , honey ?'
+        words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
+    k = 0
+    # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
+    while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS | ADDRESSED
+                              and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
+                              or k and words[k - 1] in INTERJECTIONS | VOCATIVES and words[k] in VOCATIVES | {"like"}):
+        k += 1
+        while k < len(words) and words[k] in INTERJECTION_ENDS:
+            k += 1
+    end = len(words)
+    while end > k and (words[end - 1] in CLOSING_INTERJECTIONS or words[end - 1] in INTERJECTION_ENDS
+                       and end - 1 > k and words[end - 2] in CLOSING_INTERJECTIONS):
+        end -= 1
+    # ... and a letter's sign-off or a short remark after the question ('? couldn't see'), where it says nothing of
+    # a vehicle, a time, a motion or a collision
+    asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
+    tail = words[asked + 1:end] if asked is not None else []
+    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail):
+        end = asked + 1
+    # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
+    thanked = max((j for j in range(k, end - 1) if words[j] == "." and words[j + 1] in THANKING), default=None)
+    if asked is None and thanked is not None and _says_nothing(words[thanked + 1:end]):
+        end = thanked + 1
+    # without a question mark, a chat's remark after the question ('..., i missed it', '... ngl cant tell')
+    remark = next((j for j in range(k + 3, end) if asked is None and (words[j] in CHAT or words[j - 1] == ","
+                                                                        and words[j] == "i"
+                                                                        or tuple(words[j:j + 4]) in VIEWER_DOUBTS
+                                                                        or tuple(words[j:j + 3]) in VIEWER_DOUBTS)
+                   and len(words[j:end]) <= 6 and _says_nothing(words[j:end])), None)
+    if remark:
+        end = remark - (words[remark - 1] == ",")
+    closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
+    # a speaker's fillers within the question ('the um green sedan'), with the commas around them
+    within = [j for j in range(k, end) if words[j] in FILLERS]
+    if within:
+        fillers = set(within) | {j + 1 for j in within if words[j + 1:j + 2] == [","]} | {
+            j - 1 for j in within if words[j - 1] == "," and words[j + 1:j + 2] in ([","], ["?"], ["."], [])}
+        closing = ((" ".join(words[j] for j in within), "nothing, a filler"), *closing)
+        kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
+        words, end = kept + words[end:], len(kept)
+    closing = ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
+    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
+            not ADDRESSED & set(words[:k]):
+        return words[:end], closing
+    return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
+
+
+# A digression between commas, or before the first, that says nothing the question could need ('So, Jen, and this
+# is the part I love, was the red sedan ...', 'at what speed, I wonder, was it moving?'): no vehicle, motion,
+# collision, time, place, condition, negation or asking in it.
+def _says_something(span: list[str]) -> bool:
+    return bool(set(span) & SAYING) or asks_impact(span) or any(
+        w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() for w in span)
+
+
+def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
+    the digressions read as nothing, or the words as they are and ()."""
+    commas = [k for k, w in enumerate(words) if w == ","]
+    if not commas:
+        return words, ()
+    drop, read, start = set(), [], 0
+    for c in commas:
+        span = words[start:c]
+        if span and not _says_something(span):
+            drop |= set(range(start, c + 1))
+            read.append(" ".join(span))
+        start = c + 1
+    # ... and after the last comma, before the question mark ('..., my dear fellow?'), where it asks nothing itself
+    # (', is it crawlig?' is the question, its slip not yet read)
+    end = len(words) - (words[-1:] in (["?"], ["."]))
+    if words[start:end] and end - start <= 4 and not _says_something(words[start:end]) and \
+            not (YES_NO_OPENERS | QUESTION_OPENERS | {"it", "they"}).intersection(words[start:end]):
+        drop |= set(range(start - 1, end))
+        read.append(" ".join(words[start:end]))
+    rest = [w for k, w in enumerate(words) if k not in drop]
+    if not read or not _says_something(rest):
+        return words, ()
+    return rest, tuple((r, "nothing, a digression") for r in read)
+
+
+DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "was", "have", "had"}
+
+
+# A speaker's doubt around the question: said first ('Not sure, but ...', 'I could be off here, but ...', 'Since the
+# clip cuts off, I can't be sure: ...'), or after it (', or am I misremembering?', '; is that right?')
+# a viewer who cannot make it out ('ngl cant tell, ...', '... cant see it rly')
+VIEWER_DOUBTS = tuple((*i, can, "not", see) for i in ((), ("i",)) for can in ("can", "could")
+                      for see in ("tell", "see")) + (("hard", "to", "tell"),)
+HEDGE_STARTS = (("not", "sure"), ("not", "certain"), ("unless",), ("maybe",), ("correct", "me"), ("no", "idea"),
+                ("hard", "to", "say"), *VIEWER_DOUBTS)
+HEDGE_ENDS = ((",", "but"), (",", "so"), (":",), (";",), ("-",), (",",))
+DOUBTING = {"am", "did", "do", "have", "was", "is", "could"}
+# ... and what a doubt said first never says: a question's words, a time, a motion, a vehicle unnamed
+ASKED_IN_DOUBT = {"if", "suppose", "had", "when", "?", "which", "what", "how", "where", "who", "whether", "tell",
+                  "give", "name", "direction", "speed", "colour", "color", "type", "kind", "hover", "hovers",
+                  "hovered", "float", "floats", "floated"}
+
+
+def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'not sure , but did the sedan hit the bus ?' and 'sorry if this is a silly question , but does ...' -> 'did the
+    sedan hit the bus ?', 'does ...'; 'was it slower , or am i misremembering ?' -> 'was it slower ?'; '...; is that
+    right ?' -> '..., is that right ?' (a tag, read as one by `negative_question_as_asked`). A doubt said first names
+    no vehicle. With the words read so, or the words as they are and ()."""
+    out, read = list(words), []
+    ends = [(k, len(e)) for k in range(1, min(len(out), 16)) for e in HEDGE_ENDS if tuple(out[k:k + len(e)]) == e]
+    opened = lambda said: said[next((j for j, w in enumerate(said) if w not in INTERJECTIONS | {","}), len(said)):]
+    first_person = lambda said: bool({"i", "me", "my"} & set(said)) or any(opened(said)[:len(h)] == list(h)
+                                                                          for h in HEDGE_STARTS)
+    undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID | END_WORDS
+    # an apology before the question needs no 'I' ('sorry if this is a silly question , but does ...')
+    unapologetic = NAMING | GENERIC_NOUNS | START_WORDS | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS
+    apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in QUESTION_OPENERS
+    doubted = lambda said: next((opened(said)[len(v):] for v in VIEWER_DOUBTS if opened(said)[:len(v)] == list(v)),
+                                said)
+    cut = max((k + n for k, n in ends if (first_person(out[:k]) and not undoubted & set(doubted(out[:k]))
+                                          or apology(k, n) and not unapologetic & set(out[:k]))
+               and not asks_impact(out[:k]) and out[k + n:]), default=None)
+    if cut is not None:
+        read.append((" ".join(out[:cut]), "nothing, a doubt"))
+        out = out[cut:]
+    if out[-1:] == ["?"]:
+        doubt = next((k for k in range(1, len(out) - 3) if out[k:k + 2] == [",", "or"] and out[k + 2] in DOUBTING
+                      and "i" in out[k + 2:k + 5] and not NAMING & set(out[k:])), None)
+        if doubt is not None:
+            read.append((" ".join(out[doubt:-1]), "nothing, a doubt"))
+            out = out[:doubt] + ["?"]
+    tag = next((k for k in range(1, len(out) - 2) if out[k] == ";" and list(out[k + 1:-1]) in AGREEING_TAGS), None)
+    if tag is not None and out[-1:] == ["?"]:
+        read.append((";", ","))
+        out[tag] = ","
+    return (out, tuple(read)) if read else (words, ())
+
+
+# A witness examined ('I put it to you that the bus was parked. Is that correct?', 'You'd concede, wouldn't you,
+# that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
+_AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
+_TAGGED = ([], [",", "would", "not", "you", ","], [",", "do", "not", "you", ","], [",", "will", "not", "you", ","])
+CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
+                for verb in _AGREE for tag in _TAGGED),
+              *((*ask, "you", verb, *me, "that") for ask in (["would"], ["do"], ["will"], ["can"], ["could"])
+                for verb in _AGREE for me in ([], ["with", "me"])),
+              *(("i", "put", "it", *to, "that") for to in ([], ["to", "you"])),
+              *(("i", "suggest", *to, "that") for to in ([], ["to", "you"])),
+              *((*be, fair, "to", "say", "that") for be in (["would", "it", "be"], ["is", "it"])
+                for fair in ("accurate", "fair", "correct", "right", "true")),
+              *(("is", "it", "your", view, "that") for view in ("opinion", "view", "evidence", "testimony",
+                                                               "position", "understanding", "belief", "assessment",
+                                                               "contention", "recollection")),
+              *(("is", "it", "not", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
+              *(("is", "not", "it", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
+              ("is", "it", "the", "case", "that"),
+              # a report put to be confirmed ('Sources tell us the bus was parked; can we confirm that?')
+              *((*said, *that) for said in (("sources", "tell", "us"), ("sources", "say"), ("we", "are", "told"),
+                                            ("we", "'", "re", "told"), ("i", "am", "told"), ("i", "'", "m", "told"),
+                                            ("reports", "say"), ("word", "is"), ("rumour", "has", "it"),
+                                            ("rumor", "has", "it")) for that in ((), ("that",)))}
+# ... closed by a question of its own ('. Is that correct?', '. Do you agree?'): the statement's question mark
+CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
+                for q in (["is", "that", "correct"], ["is", "that", "right"], ["is", "that", "true"],
+                          ["is", "that", "so"], ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"],
+                          ["yes"], ["right"], ["do", "you", "agree"], ["would", "you", "agree"], ["agreed"], ["true"],
+                          ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
+                          ["can", "anyone", "confirm", "that"], ["is", "that", "accurate"], ["can", "we", "confirm"],
+                          ["can", "you", "confirm"])]
+# asides of an examination, which ask nothing ('in your own words', 'if you know', 'for the sake of argument')
+EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know"), ("if", "you", "can"),
+                             ("if", "you", "recall"), ("if", "you", "remember"), ("as", "best", "you", "can"),
+                             *(("to", "the", "best", "of", "your", m) for m in ("knowledge", "recollection",
+                                                                               "memory", "ability")),
+                             ("as", "far", "as", "you", "know"), ("as", "far", "as", "you", "can", "tell"),
+                             ("for", "the", "sake", "of", "argument"), ("for", "argument", "'", "s", "sake"),
+                             *(("in", "your", *expert, view) for expert in ((), ("expert",), ("professional",),
+                                                                           ("honest",), ("considered",))
+                               for view in ("opinion", "view", "assessment", "judgement", "judgment",
+                                            "estimation")),
+                             *(("correct", "me", "if", *i, "wrong", *but) for i in (("i", "'", "m"), ("i", "am"))
+                               for but in ((), (",", "but"), ("but",)))}, key=len, reverse=True)
+# the court said for 'me' ('Tell the court whether ...', 'Explain to the jury how fast ...', 'Walk us through ...')
+AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],
+            ["me"])
+EXAMINATION_ASKS = sorted({*((verb, *a) for verb in ("tell", "show") for a in AUDIENCE if a != ["me"]),
+                           *(("explain", "to", *a) for a in AUDIENCE), *(("walk", *a, "through") for a in AUDIENCE),
+                           *(("describe", "to", *a) for a in AUDIENCE)}, key=len, reverse=True)
+ATTENTION_TO = sorted({(verb, *whose, "attention", "to") for verb in ("directing", "direct", "turning", "turn",
+                                                                    "drawing", "draw")
+                       for whose in (["your"], ["the", "court", "'", "s"], ["the", "jury", "'", "s"])},
+                      key=len, reverse=True)
+
+
+def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'i put it to you that the bus was parked . is that correct ?' -> 'is it true that the bus was parked ?';
+    'explain to the jury how fast ...' -> 'tell me how fast ...'; 'directing your attention to the start , ...' ->
+    'at the start , ...'; asides that ask nothing dropped with their commas ('what type of vehicle , if you know ,
+    was ...'). With the words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        aside = next((a for a in EXAMINATION_ASIDES if tuple(words[k:k + len(a)]) == a), None)
+        if aside:
+            end = k + len(aside)
+            between = out[-1:] == [","] and words[end:end + 1] == [","]
+            read.append((" ".join(words[k - between:end + between]), "nothing, an aside"))
+            out = out[:-1] if between else out
+            k = end + between + (not out and words[end:end + 1] == [","])
+            continue
+        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c), None)
+        asks = next((a for a in EXAMINATION_ASKS if tuple(words[k:k + len(a)]) == a), None)
+        attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
+        if confirm or asks:
+            said = ["is", "it", "true", "that"] if confirm else ["tell", "me"]
+            read.append((" ".join(confirm or asks), " ".join(said)))
+            out += said
+            k += len(confirm or asks)
+        elif attention:
+            at = words[k + len(attention) + 1:k + len(attention) + 2]
+            said = ["at"] if at and at[0] in START_ADJECTIVES | START_WORDS | TIME_SAID else ["look", "at"]
+            read.append((" ".join(attention), " ".join(said)))
+            out += said
+            k += len(attention)
+        else:
+            out.append(words[k])
+            k += 1
+    if read and any(c in ("is it true that", "nothing, an aside") for _, c in read):
+        end = next((e for e in CONFIRM_ENDS if out[-len(e):] == e), None)
+        if end:
+            read.append((" ".join(end), "?"))
+            out = out[:-len(end)] + ["?"]
+    # an explanation asked of how fast or which way is the grammar's 'tell me' ('explain how fast it was going')
+    if out[:2] in (["explain", "how"], ["explain", "what"], ["explain", "which"]):
+        read.append(("explain", "tell me"))
+        out = ["tell", "me", *out[1:]]
+    return (out, tuple(read)) if read else (words, ())
+
+
+# A request put in a third person's or a report's words ('The authors should clarify how fast ...', 'Reviewer 3 would
+# like to know how quickly ...', 'It is not evident from the footage whether ...', 'Action item: confirm how fast
+# ...'): a preamble that names no vehicle and sets no condition, ending on a verb of asking or of what is unknown,
+# then what is asked. Read as the grammar's 'tell me' (or 'is it true that' before 'that'); a clause said before it
+# ('Given that the clip is cut short, ...') stays. A remark after it that says nothing ('; confirmation is
+# requested.', 'The submission does not say.', '; could the authors comment?') is dropped.
+REQUESTING = {"clarify", "clarified", "state", "stated", "specify", "specified", "report", "reported", "confirm",
+              "confirmed", "indicate", "indicated", "explain", "explained", "establish", "established", "determine",
+              "determined", "know", "advise", "predict", "enquire", "enquires", "inquire", "inquires", "ask", "asks",
+              "seek", "seeks", "request", "requests", "requested", "speculate", "forecast", "evident", "clear",
+              "obvious", "unclear", "sure", "certain", "tell", "verify", "verified", "document", "documented",
+              # a question relayed ('A coworker asked me how quickly ...', 'Mum wondered which colour ...')
+              "asked", "wondered", "wonders", "curious", "pestering"}
+_REQUESTED = ("whether", "if", "how", "what", "which", "that", "the")
+CONFIRMING_VERBS = {"confirm", "confirmed", "verify", "verified", "establish", "established"}
+OBJECT_TAKING = CONFIRMING_VERBS | {"state", "report", "specify", "clarify", "indicate", "determine", "explain",
+                                    "predict", "forecast", "document"}
+_ASKED_FOR = (["confirmation"], ["clarification"], ["a", "statement", "of"], ["confirmation", "of"])
+_ASKED_AS = (["as", "to"], ["on"], ["me", "about"], ["me"], ["about"], ["from", "the", "footage"],
+             ["from", "the", "video"], ["from", "the", "clip"], ["in", "the", "footage"], ["in", "the", "video"])
+# (nor a question of its own: 'what is the motion state of ...')
+_NOT_PREAMBLE = {"if", "had", "suppose", "imagine", "when", "after", "before", "were", "?", ".", "!", ";", "what",
+                 "which", "how", "where", "who", "why"}
+
+
+def _requested_at(words: list[str], k: int) -> int | None:
+    """Where what is asked begins after a verb of asking at words[k] ('clarify how', 'seeks confirmation that',
+    'not evident from the footage whether'), or None."""
+    j = k + 1
+    for skip in (_ASKED_FOR, _ASKED_AS):
+        j += next((len(s) for s in skip if words[j:j + len(s)] == s), 0)
+    # 'report the speed of', never 'ask the authors'; 'not evident whether', never 'dead certain the ...'
+    asked = _REQUESTED[:5] + ("that",) * (j > k + 1 or words[k] in CONFIRMING_VERBS) + \
+        ("the",) * (words[k] in OBJECT_TAKING)
+    return j if words[j:j + 1] and words[j] in asked else None
+
+
+# A hypothesis put to a test ('H0: the green motorbike is moving fast at the very beginning. Do the data support
+# it?', 'Test the hypothesis that the blue SUV is static at the start: accept or reject?'): whether it holds, the
+# grammar's 'is it true that'. Asked whether it is rejected, the answer is the other way round, and it stays unread.
+HYPOTHESES = (["h0", ":"], ["h1", ":"], ["ha", ":"], ["null", "hypothesis", ":"], ["hypothesis", ":"],
+              ["alternative", "hypothesis", ":"], ["test", "the", "hypothesis", "that"], ["our", "null", "says"],
+              ["the", "null", "says"], ["hypothesis", "that"])
+HOLDING = {"support", "supported", "supports", "true", "accept", "accepted", "retained", "retain", "hold", "holds",
+           "confirmed", "correct", "consistent"}
+
+
+def hypothesis_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'h0 : the bus is parked at the start . do the data support it ?' -> 'is it true that the bus is parked at the
+    start ?'. With the words read so, or the words as they are and ()."""
+    label = next((h for h in HYPOTHESES if words[:len(h)] == h), None)
+    if label is None:
+        return words, ()
+    end = next((k for k in range(len(label), len(words)) if words[k] in (".", ":", "?", ";")), len(words))
+    claim, closing = words[len(label):end], words[end + 1:]
+    rejected = "reject" in closing or "rejected" in closing
+    either = any(closing[k:k + 3] in (["accept", "or", "reject"], ["reject", "or", "accept"])
+                 for k in range(len(closing)))
+    if not claim or closing and (not HOLDING & set(closing) or rejected and not either):
+        return words, ()
+    return ["is", "it", "true", "that", *claim, "?"], ((" ".join(label), "is it true that"),
+                                                      *(((" ".join(words[end:]), "?"),) if closing else ()))
+
+
+def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the authors should clarify how fast the red sedan is ...' -> 'tell me how fast the red sedan is ...';
+    'reviewer 4 seeks confirmation that the scooter is ...' -> 'is it true that the scooter is ...'. With the words
+    read so, or the words as they are and ()."""
+    for k in range(min(len(words), 24)):
+        if words[k] not in REQUESTING or not _requested_at(words, k) or \
+                k and words[k - 1] in DETERMINERS | {"its", "their", "motion", "kinetic"}:   # 'the motion state of'
+            continue
+        first = max((j + 1 for j in range(k) if words[j] in (",", "-", ":")), default=0)
+        # before it nothing, a label, or a clause that says the video stopped ('given that the clip is cut short ,')
+        before = words[:first]
+        opening = k > first or words[k] not in ("tell", "state", "know") and words[_requested_at(words, k)] != "the"
+        if not NAMING & set(words[:k]) and not _NOT_PREAMBLE & set(words[first:k]) and k - first <= 10 and \
+                (not _says_something(before) or FILM_WORDS & set(before)) and opening:
+            break
+    else:
+        return words, ()
+    j = _requested_at(words, k)
+    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds)
+    confirmed = words[j] == "that" or words[j] in ("the", "whether", "if") and words[k] in CONFIRMING_VERBS
+    said = ["is", "it", "true", "that"] if confirmed else ["tell", "me"]
+    dropped = words[j] in ("that", "whether", "if") and confirmed
+    out = words[:first] + said + words[j + dropped:]
+    read = [(" ".join(words[first:j + dropped]), " ".join(said))]
+    # the remark after it
+    cut = max((m for m in range(len(out) - 1) if out[m] in (";", ".", "?", "-") or out[m] == "," and
+               out[m + 1:m + 2] == ["and"]), default=None)   # '..., and i said i'd ask you .'
+    tail = out[cut + 1:] if cut is not None else []
+    if tail and len(tail) <= 10 and _says_nothing([w for w in tail if w not in ("?", ".", "no")]):   # 'no idea'
+        read.append((" ".join(out[cut:]), "nothing, a remark"))
+        out = out[:cut] + ["."]
+    return out, tuple(read)
+
+
+# A wager around the question. A stake says nothing the question asks ('I've a tenner on yes.', 'Fiver says no.',
+# '... and I'll pay out', 'Freeze-frame punt:', ', so it's an in-play bet:') and is dropped; a claim bet on ('I bet
+# the sedan hits the bus. Does it?', 'Is it a lock that ...?', 'Fiver says the tandem is faster ..., do I collect?')
+# is put to be confirmed, the grammar's 'is it true that'.
+WAGER_WORDS = {"bet", "bets", "betting", "wager", "wagers", "wagered", "wagering", "stake", "stakes", "staked",
+               "tenner", "fiver", "quid", "bucks", "odds", "punt", "bookie", "bookies", "bookmaker", "favourite",
+               "favorite", "money", "pot", "kitty", "sweepstake", "payout", "cert", "collect", "settles",
+               "backing", "tipping", "wins", "lock"}
+_STAKES = (["a", "fiver"], ["a", "tenner"], ["fiver"], ["tenner"], ["my", "money"], ["money"], ["a", "quid"])
+WAGER_CLAIMS = sorted({*((*i, "bet", *you) for i in (["i"], ["i", "'", "d"], ["i", "'", "ll"], ["i", "would"], [])
+                         for you in ([], ["you"])),
+                       *((*stake, "says") for stake in _STAKES),
+                       *(("is", "it", "a", *lock) for lock in (["lock"], ["sure", "thing"], ["dead", "cert"],
+                                                              ["safe", "bet"], ["done", "deal"])),
+                       ("odds", "-", "on"), ("odds", "on")}, key=len, reverse=True)
+BACKING = [[*i, backing] for i in (["i", "'", "m"], ["i", "am"], []) for backing in ("backing", "tipping")]
+# a wager's stake said before its claim ('Wagering my lunch money that ...', 'I'm betting a fiver that ...')
+WAGERING = {"wagering", "betting", "bet", "wager"}
+# ... closed by the claim's own question ('. Does it?', ', do I collect?')
+WAGER_ENDS = [[end, *q, "?"] for end in (".", ";", ",", "-")
+              for q in (["do", "i", "collect"], ["do", "i", "win"], ["am", "i", "right"], ["yes", "or", "no"],
+                        *([aux, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
+                          for it in ("it", "they")))]
+
+
+def _wagered(words: list[str]) -> bool:
+    return bool(WAGER_WORDS & set(words)) or any(a == "pay" and b == "out" for a, b in zip(words, words[1:]))
+
+
+def wagers_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'was it parked ? i have a tenner on yes .' -> 'was it parked ?'; 'i bet the sedan hits the bus . does it ?'
+    -> 'is it true that the sedan hits the bus ?'. With the words read so, or the words as they are and ()."""
+    if not _wagered(words):
+        return words, ()
+    out, read = list(words), []
+    # the claim bet on, where it opens the question or a sentence of it
+    asked = out.index("?") if "?" in out else len(out)
+    for k in range(asked):
+        if k and out[k - 1] not in SENTENCE_ENDS | {":", ",", ";"}:
+            continue
+        claim = next((c for c in WAGER_CLAIMS if tuple(out[k:k + len(c)]) == c), None)
+        stake = None if claim or out[k:k + 1] == ["what"] else next(
+            (j for j in range(k, min(k + 8, len(out))) if out[j] == "that" and WAGERING & set(out[k:j])
+             and not NAMING & set(out[k:j])), None)
+        backing = next((len(b) for b in BACKING if out[k:k + len(b)] == b), 0)
+        to = next((j for j in range(k + backing + 1, min(k + backing + 7, len(out))) if out[j] == "to"
+                   and NAMING & set(out[k + backing:j])), None) if backing else None
+        if to is not None:   # 'i'm backing the dirt bike to crash into something' -> '... the dirtbike will crash'
+            read.append((" ".join(out[k:to + 1]), "is it true that " + " ".join(out[k + backing:to]) + " will"))
+            out[k:to + 1] = ["is", "it", "true", "that", *out[k + backing:to], "will"]
+            claim = ("is", "it", "true", "that")
+        elif claim or stake is not None:
+            end = k + len(claim) if claim else stake + 1
+            end += out[end:end + 1] == ["that"]
+            read.append((" ".join(out[k:end]), "is it true that"))
+            out[k:end] = ["is", "it", "true", "that"]
+        if claim or stake is not None:
+            close = next((e for e in WAGER_ENDS if out[-len(e):] == e), None)
+            if close:
+                read.append((" ".join(close), "?"))
+                out = out[:-len(close)] + ["?"]
+            elif out[-1:] in (["."], ["!"]):
+                out[-1] = "?"
+            break
+    # the stakes: a part between commas, or a sentence, that names no vehicle, or any sentence after the question's
+    # ('My stake's on a motorbike.': a guess at the answer)
+    kept, start = [], 0
+    parts = [k + 1 for k, w in enumerate(out) if w in SENTENCE_ENDS | {",", ":", ";"}
+             or out[k + 1:k + 3] == ["and", "i"]]   # '... and i'll pay out'
+    parts = sorted(set(parts))
+    for end in parts + [len(out)] * (not parts or parts[-1] != len(out)):
+        part = out[start:end]
+        said = [w for w in part if w not in SENTENCE_ENDS | {",", ":", ";", "and", "but", "so"}]
+        if _wagered(said) and not (NAMING & set(said) and "?" not in kept) and not {"true", "?"} & set(part):
+            read.append((" ".join(part), "nothing, a wager"))
+        else:
+            kept += part
+        start = end
+    kept = kept[:-1] + ["?"] if kept[-1:] == [","] else kept
+    return (kept, tuple(read)) if read and kept else (words, ())
+
+
+# A ticket's or a form's fields around the question ('Steps: watch clip; Expected: partner identified; Question:
+# ...'). What a ticket expects, its priority or status, and a step that only watches the video say nothing the
+# question asks; the other fields' items (a step that sets a condition, a summary that says the clip ends early) are
+# context, a sentence each. A field that asks for the answer ('prediction needed -') says nothing either.
+TICKET_FIELDS = {"question", "q", "steps", "step", "repro", "summary", "issue", "description", "context", "title",
+                 "request", "note", "notes", "ticket", "details", "scenario"}
+TICKET_NOISE = {"expected", "actual", "priority", "severity", "status", "component", "assignee", "reporter",
+                "environment", "version", "eta", "labels", "tags", "result", "outcome", "deliverable", "format"}
+WATCHING = {"watch", "view", "play", "open", "replay", "load", "review", "rewatch"}
+ANSWER_NEEDED = [[asked, needed, *end] for asked in ("prediction", "answer", "response", "confirmation", "input",
+                                                     "clarification", "verdict", "ruling")
+                 for needed in ("needed", "required", "requested", "wanted") for end in ([":"], ["-"], [","], [])]
+
+
+def ticket_fields_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'steps : watch clip ; expected : partner identified ; question : what type ... ?' -> 'what type ... ?';
+    'summary : clip ends early ; prediction needed - do ...' -> 'clip ends early . do ...'. With the fields read so,
+    or the words as they are and ()."""
+    out, read = list(words), []
+    for k in range(len(out)):
+        need = next((n for n in ANSWER_NEEDED if out[k:k + len(n)] == n), None)
+        if need and (k == 0 or out[k - 1] in {";", ".", ",", ":"}):
+            read.append((" ".join(need), "nothing, a ticket's field"))
+            out = out[:k] + out[k + len(need):]
+            break
+    labels = [k for k in range(len(out) - 1) if out[k + 1] == ":" and out[k] in TICKET_FIELDS | TICKET_NOISE
+              and (k == 0 or out[k - 1] in {";", ".", ",", "-", "|"})]
+    if len(labels) < 2:
+        return (out, tuple(read)) if read else (words, ())
+    kept = out[:labels[0]]
+    for k, end in zip(labels, labels[1:] + [len(out)]):
+        field = out[k + 2:end]
+        if out[k] in TICKET_NOISE or not field:
+            read.append((" ".join(out[k:end]), "nothing, a ticket's field"))
+            continue
+        items, start = [], 0
+        for m in [j + 1 for j, w in enumerate(field) if w in (";", "|")] + [len(field)]:
+            item = [w for w in field[start:m] if w not in (";", "|")]
+            start = m
+            if item and item[0] in WATCHING and not NAMING & set(item):
+                read.append((" ".join(item), "nothing, a ticket's step"))
+            elif item:
+                items.append(item + ["."] * (item[-1] not in SENTENCE_ENDS))
+        kept += [w for item in items for w in item]
+        read.append((" ".join(out[k:k + 2]), "nothing, a ticket's label"))
+    # the question's own field last: its words as they are
+    return (kept, tuple(read)) if kept and kept[-1] in SENTENCE_ENDS else (words, ())
+
+
+def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'blue minivan and green chopper , they collide ?' -> 'do blue minivan and green chopper collide ?', and 'the
+    sedan , it is fast ?' -> 'is the sedan fast ?': the vehicles said first, then asked about as 'they' or 'it' in
+    a statement with a question mark. With the words read so, or the words as they are and ()."""
+    subject = coordinated_subject(words) if words[-1:] == ["?"] else None
+    if subject is None:
+        return words, ()
+    end, named = subject
+    pronoun = ["they"] if len(named) == 2 else ["it"]
+    if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
+        return words, ()
+    verb, rest = words[end + 2], words[end + 3:]
+    said = [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
+        ["do" if len(named) == 2 else "does", *words[:end], verb, *rest]
+    return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
+
+
+# A speaker correcting a vehicle's name as they say it ('the red no the blue sedan', 'the gray jet no sorry the gray
+# biplane', 'the bus I mean the truck'): the words after the correction stand for the ones before it.
+CORRECTING = {"no", "wait", "sorry", "mean", "rather", "oops", "correction", "scratch", "actually"}
+CORRECTION_WORDS = CORRECTING | {"i", "or", "that", ","} | FILLERS   # 'uh wait no', 'I mean', 'or rather'
+
+
+def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'does the red no the blue sedan hit ...' -> 'does the blue sedan hit ...': a vehicle's name said, corrected
+    ('no', 'sorry', 'I mean', 'uh', commas around them) and said again from its article. With the correction read
+    so, or the words as they are and ()."""
+    for k in range(1, len(words)):
+        if words[k - 1] not in NAMING:
+            continue
+        j = k
+        while words[j:j + 1] and words[j] in CORRECTION_WORDS:
+            j += 1
+        marker = [w for w in words[k:j] if w != ","]
+        # a word that corrects, or a speaker's filler alone ('the blue uh the purple bus'); 'or' and 'that' only in
+        # 'or rather' and 'scratch that' ('the red car or the blue bus' offers two)
+        if not marker or not (CORRECTING.intersection(marker) or set(marker) <= FILLERS) or \
+                "or" in marker and "rather" not in marker or "that" in marker and "scratch" not in marker:
+            continue
+        if not (words[j:j + 1] and words[j] in ("the", "a", "an", "that") and words[j + 1:j + 2]
+                and words[j + 1] in NAMING):
+            continue
+        start = k - 1
+        while start > 0 and words[start - 1] in NAMING:
+            start -= 1
+        start -= start > 0 and words[start - 1] in ("the", "a", "an", "that", "this")
+        return words[:start] + words[j:], ((" ".join(words[start:j]), "nothing, a correction"),)
+    return words, ()
+
+
+OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me little bus' as said in Ireland
+TOYS = {"toy", "toys", "model", "little", "wee"}
+
+
+def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
+    ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
+    words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        j = k + (words[k] in OWNERS)
+        while words[j:j + 1] and words[j] in TOYS:
+            j += 1
+        # ('the red little jet': after the colour too, fondness, not CLEVR's size)
+        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])
+                                                                or out[-1:] and out[-1] in COLOR_NAMES):
+            said = ["the"] if words[k] in OWNERS else []
+            read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
+            out += said
+            k = j
+            while words[k:k + 1] and words[k] in NAMING:
+                out.append(words[k])
+                k += 1
+            if words[k:k + 1] and words[k] in TOYS - {"little", "wee"}:
+                read.append((words[k], "nothing"))
+                k += 1
+            continue
+        out.append(words[k])
+        k += 1
+    return out, tuple(read)
+
+
+# A label the question is put under ('Q1:', 'Question 3:', 'Quick question:'), and an aside in brackets that only
+# says again what the object is ('the red sedan (the car)'): they ask nothing ('quick' read as a speed, and each
+# bracket is an unknown word).
+LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
+               "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
+               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus", "query", "check", "hypothetical"}
+# ('Here's an easy one:': 'easy' is slow; 'Hi, quick check - is ...': a greeting before it, 'quick' is fast)
+ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
+
+
+# ... after a greeting, or naming which clip it is about ('Hi team, re clip 3: at the moment ...')
+CLIP_NAMED = {",", "re", "regarding", "concerning", "about", "on", "for", "video", "clip"} | {
+    str(n) for n in range(100)}
+
+
+def _label(word: str) -> bool:
+    return word in LABEL_WORDS or re.fullmatch(r"q?\d+[a-z]?", word) is not None
+
+
+def _decimal(words: list[str], k: int) -> bool:
+    """Whether words[k] is the point of a number ('3 . 2 s')."""
+    return words[k] == "." and 0 < k < len(words) - 1 and words[k - 1].isdigit() and words[k + 1][:1].isdigit()
+
+
+QUICK_LABELS = {"one", "check", "question", "q", "note", "thing", "query"}
+
+
+def _purpose(heading: list[str], rest: list[str]) -> bool:
+    """Whether a heading before a colon only says who asks or what for, the question after it whole: it names no
+    vehicle and no time, and a collision or a condition it speaks of the question says itself ('For my
+    accident-reconstruction class: at the instant the pickup and the wagon collide, ...')."""
+    return bool(heading) and "?" in rest and bool(OBJECT_WORDS.intersection(rest)) and \
+        not set(heading) & (OBJECT_WORDS | HEADING_KEPT | START_WORDS | FILM_WORDS | FLOATING_WORDS - {"up"}) and \
+        (not asks_impact(heading) or asks_impact(rest)) and \
+        (not (CONDITION_OPENERS | IMAGINING | IMAGINED_SAID | CONDITION_LABELS).intersection(heading)
+         or bool(CONDITION_WORDS.intersection(rest)))
+
+
+# A prompt's wrapping around the question, as people paste it to an assistant ('Act as a mechanic: ...', 'Yes or no
+# only: ...', 'Q: ... ? A (yes/no):'): a role, and a heading of instructions that asks nothing
+PROMPT_WORDS = {"yes", "or", "no", "only", "answer", "respond", "reply", "with", "one", "word", "a", "an", "the",
+                "single", "step", "by", "-", "reasoning", "is", "welcome", "fine", "but", "end", "think", "query",
+                "question", "q", "task", "and", "/", "(", ")", "vehicle", "type", "colour",
+                "color", "output", "format", "please", "briefly", "just", "your", "final", "instruction", "prompt",
+                "following", "true", "false", "in", "words", "short", "answers", "aloud", "first", "then"}
+ROLE_ENDS = {"and", ":", ",", "."}
+POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["honest", "question"],
+               ["serious", "question"], ["asking", "for", "a", "friend"], ["update"], ["edit"])
+
+
+def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'act as a physics expert and tell me how fast ...' -> 'tell me how fast ...'; 'yes or no only : is it ...' ->
+    'is it ...'; '... ? a ( yes / no ) :' -> '... ?'. With the wrapping read as nothing, or the words as they are
+    and ()."""
+    out, read = list(words), []
+    # a post's labels said first ('thread', '1/', 'PSA', 'hot take:', 'genuine question:', 'asking for a friend')
+    while label := next((p for p in POST_LABELS if out[:len(p)] == p), None) or \
+            (out[:2] if out[:1] and out[0].isdigit() and out[1:2] == ["/"] else None):
+        read.append((" ".join(label), "nothing, a label"))
+        out = out[len(label) + (out[len(label):len(label) + 1] == [":"]):]
+    if out[:2] == ["act", "as"]:
+        end = next((k for k in range(2, min(len(out), 10)) if out[k] in ROLE_ENDS), None)
+        if end is not None and not OBJECT_WORDS.intersection(out[:end]):
+            read.append((" ".join(out[:end + 1]), "nothing, a role"))
+            out = out[end + 1:]
+    colon = out.index(":") if ":" in out[:12] else None
+    if colon and set(out[:colon]) <= PROMPT_WORDS and out[colon + 1:]:
+        read.append((" ".join(out[:colon + 1]), "nothing, an instruction"))
+        out = out[colon + 1:]
+    asked = max((k for k, w in enumerate(out) if w == "?"), default=None)
+    if asked is not None and out[asked + 1:] and out[asked + 1] == "a" and set(out[asked + 1:]) <= PROMPT_WORDS | {
+            ":"}:
+        read.append((" ".join(out[asked + 1:]), "nothing, an answer's place"))
+        out = out[:asked + 1]
+    return (out, tuple(read)) if read else (words, ())
+
+
+def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
+    how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
+    or a heading before a colon ('cycling coach here :'), that names no vehicle, motion or collision and imagines
+    nothing; a heading that says a time stays. With the words read as nothing, or the words as they are and ()."""
+    read = []
+    while True:
+        end = next((k for k, w in enumerate(words) if w in (".", "!", ":") and not _decimal(words, k)), None)
+        heading = [w for j, w in enumerate(words[:end or 0]) if not (w == "quick" and words[j + 1:j + 2] and
+                                                                     words[j + 1] in QUICK_LABELS)]   # 'quick one'
+        if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
+            pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
+        elif end is None or end + 1 == len(words) or set(heading) & (
+                OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
+                | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading) or _video_end(words[:end + 1]):
+            break   # one that says what is asked stays, and one that says the video stopped ('video stops here .')
+        # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
+        # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')
+        if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS) or \
+                words[end] == "." and "then" in words[end + 1:] and \
+                set(words[:end]) & (HEADING_KEPT | START_WORDS) - {"true", "false", "yes", "no"}:
+            break
+        read.append((" ".join(words[:end + 1]), "nothing, a remark"))
+        words = words[end + 1:]
+    if any(a == "this" and b in OBJECT_WORDS for a, b in zip(words, words[1:])):   # 'is this green bus ...'
+        read.append(("this", "the"))
+        words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
+    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-")), None)
+    if end and all(_label(w) or w in INTERJECTIONS | VOCATIVES | CLIP_NAMED for w in words[:end]) and \
+            any(map(_label, words[:end])) and words[end + 1:end + 2] and \
+            words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
+        read.append((" ".join(words[:end + 1]), "nothing, a label"))
+        words = words[end + 1:]
+    out, k = [], 0
+    while k < len(words):
+        close = next((j for j in range(k + 1, min(k + 10, len(words))) if words[j] == ")"), None) \
+            if words[k] == "(" and out and out[-1] in OBJECT_WORDS else None
+        # ... or the vehicle named again in other words ('the blue suv ( the big car on the left )')
+        if close and close > k + 1 and (ASIDE_WORDS.issuperset(words[k + 1:close]) or words[k + 1] in DETERMINERS
+                                        and RENAMING.issuperset(words[k + 1:close]) and _coloured_before(out, len(out))
+                                        and set(words[k + 1:close]) & set(COLOR_NAMES) <= set(out[-4:])):
+            read.append((" ".join(words[k:close + 1]), "nothing, an aside"))
+            k = close + 1
+            continue
+        # ... or the start said again ('at the outset ( frame 0 )')
+        close = words.index(")", k) if words[k] == "(" and ")" in words[k:k + 5] else None
+        if close and words[k + 1:close] in (*TIME_ZERO, ["the", "start"], ["at", "the", "start"]) and \
+                START_WORDS & set(out):
+            read.append((" ".join(words[k:close + 1]), "nothing, the start said again"))
+            k = close + 1
+            continue
+        out.append(words[k])
+        k += 1
+    # a clause or appositive between commas after a vehicle already named by colour and type ('the red sedan , which
+    # later hits the bus ,'): it says more about a vehicle it does not pick out
+    k = 0
+    while k < len(out):
+        close = next((j for j in range(k + 2, min(k + 12, len(out))) if out[j] == ","), None) \
+            if out[k] == "," and out[k + 1:k + 2] and out[k + 1] in ASIDE_STARTS and _coloured_before(out, k) else None
+        # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
+        if close and "?" not in out[k:close] and set(out[close + 1:]) - ASKING_ONLY:
+            read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
+            out[k:close + 1] = []
+            continue
+        k += 1
+    # what a floating vehicle does, said again ('floating up in the air , not touching the floor ,'), or a 'not' said
+    # again to stress it ('did not move at all , not one bit ,')
+    for k in reversed(range(1, len(out) - 2)):
+        gloss = next((g for g in (*GROUND_GLOSSES, *STRESSED_NOTS) if out[k:k + len(g)] == list(g) and (
+            out[k - 1] == "," and out[k + len(g):k + len(g) + 1] in ([","], ["?"], ["."])
+            or out[k - 1] == "(" and out[k + len(g):k + len(g) + 1] == [")"])), None)
+        if gloss and (FLOATING_WORDS & set(out[:k]) if gloss in GROUND_GLOSSES else "not" in out[:k - 1]):
+            read.append((out[k - 1] + " " + " ".join(gloss), "nothing, said again"))
+            out[k - 1:k + len(gloss) + (out[k - 1] == "(")] = []
+    # the ground a floating vehicle is not on, said as the other choice ('floating rather than sitting on the ground')
+    for k in reversed(range(1, len(out) - 3)):
+        other = next((o for o in (["rather", "than"], ["instead", "of"]) if out[k:k + 2] == o), None)
+        j = k + 2 + (out[k + 2:k + 3] != [] and out[k + 2] in RESTING)
+        fall = other and out[k + 2:k + 3] in (["falling"], ["dropping"], ["descending"], ["sinking"])
+        if other and (out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) or fall) and \
+                FLOATING_WORDS & set(out[:k]):
+            end = k + 3 if fall else j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])
+            read.append((" ".join(out[k:end]), "nothing, said again"))
+            out[k - (out[k - 1] == ","):end] = []
+    # a condition's consequence closed by 'then' ('Would the bike crash into the dirt bike then?'); not the 'then' of
+    # a moment, read from the context (`context_as_question`)
+    if out[-2:] == ["then", "?"] and {"would", "if", "had", "suppose", "imagine", "were"} & set(out):
+        read.append(("then", "nothing"))
+        out[-2:-1] = []
+    return out, tuple(read)
+
+
+GROUND_GLOSSES = tuple((*n, t, s) for n in (("not", "touching"), ("not", "on")) for t in ("the", "any")
+                       for s in ("floor", "ground")) + (("off", "the", "ground"), ("off", "the", "floor"))
+STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a", "little"), ("not", "an", "inch"),
+                 ("not", "at", "all"), ("not", "even", "a", "bit"))
+
+
+RENAMING = ASIDE_WORDS | OBJECT_WORDS | set(COLOR_NAMES) | {"gray", "grey"} | {
+    w for name in EVERYDAY_NAMES for w in name.split()} | {"big", "small", "little", "large", "long", "on", "in", "at",
+                                                          "near", "by", "left", "right", "front", "back", "top",
+                                                          "bottom", "side", "two", "seater", "-", "one", "far",
+                                                          "middle", "centre", "center", "of", "picture", "frame"}
+ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
+ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
+
+
+def _coloured_before(words: list[str], k: int) -> bool:
+    """Whether the words before k end with a vehicle named by its colour and type ('the red sedan')."""
+    j = k
+    while j and words[j - 1] in OBJECT_WORDS and words[j - 1] not in COLOR_NAMES:
+        j -= 1
+    return j < k and j > 0 and words[j - 1] in COLOR_NAMES
+
+
+# A preamble that frames the question and asks nothing ('Thinking about the whole clip, do ...', 'Not sure about this
+# one, but is ...'): the question is what follows it ('thinking' would be WordNet's 'imagine', a counterfactual's).
+FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing",
+           "based"}
+TIME_SAID = {"moment", "instant", "when", "while", "during"}   # a preamble saying when stays
+POLITE = {"trouble", "mind", "possible", "bother"}
+
+
+def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after a framing preamble that names no object (its 'it' would lose what it stands for): a
+    participle's phrase, of one or more commas ('looking at the video ,'), a hedge ('if you had to guess ,'), or any
+    phrase before ', but' ('not sure about this one , but'), where a question follows it and the preamble sets no
+    condition and no time ('thinking only about the moment they collide ,' says when). With the preamble read as
+    nothing, or the words as they are and ()."""
+    # 'from the footage , at what speed ...': where the question looks, which is the video (the start was read)
+    j = 1 + (words[1:2] in (["the"], ["this"]))
+    if words[:1] == ["from"] and words[j:j + 2] and words[j] in FILM_WORDS and words[j + 1] == ",":
+        return words[j + 2:], ((" ".join(words[:j + 2]), "nothing, a preamble"),)
+    k = next((k for k, w in enumerate(words) if w == "," and words[k + 1 + (words[k + 1:k + 2] == ["but"]):][:1]
+              and words[k + 1 + (words[k + 1:k + 2] == ["but"])] in QUESTION_OPENERS), None)
+    if k is None:
+        return words, ()
+    main = words[k + 1 + (words[k + 1:k + 2] == ["but"]):]
+    # 'if you had to guess', 'if it is not too much trouble': no counterfactual's condition
+    hedge = words[:2] in (["if", "you"], ["if", "i"]) or words[:1] == ["if"] and bool(POLITE.intersection(words[:k]))
+    framed = (words[0] in FRAMING or hedge or words[k + 1:k + 2] == ["but"]) and \
+        not OBJECT_WORDS.intersection(words[:k])
+    if not framed or (CONDITION_WORDS.intersection(words[:k]) and not hedge) or asks_impact(words[:k]) or \
+            TIME_SAID.intersection(words[:k]):
+        return words, ()
+    return main, ((" ".join(words[:k]), "nothing, a preamble"),)
+
+
+# A preamble before a colon or a dash (or a comma, before the question's opener) that says nothing the question needs:
+# an office's ('Looping in the wider group -', 'Per the brief from leadership,', 'FYI, need a yes/no for the deck:'),
+# or a reason given in jest ('Because obviously a school bus has nowhere to be:', 'As if gravity were optional:'),
+# where the question names its own vehicles.
+REASONS = (["because"], ["cause"], ["cos"], ["since"], ["as", "if"], ["given", "how"])
+TAGGING = {"right", "yeah", "innit", "eh"}
+PLACE_OPENERS = {"at", "in", "on", "during", "upon", "by", "from", "over", "throughout", "near", "around"}
+
+
+def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'per the brief from leadership , what colour is ...' -> 'what colour is ...'. With the preamble read as
+    nothing, or the words as they are and ()."""
+    # (a reason's tag closes it: 'because slowing down solves everything , right ? if ...')
+    k = next((k for k in range(1, min(len(words) - 1, 16)) if words[k] in (":", "-") or words[k] == "," and (
+        words[k + 1] in QUESTION_OPENERS or words[k + 1] == "which") or words[k] == "?" and words[k - 1] in TAGGING),
+             None)
+    if k is None:
+        return words, ()
+    pre, main = words[:k], words[k + 1:]
+    named = mentions(main) and (not {"it", "they"} & set(main) or not NAMING & set(pre))
+    reason = any(pre[:len(r)] == r for r in REASONS) and named and not {"had", "?"} & set(pre)
+    pre = pre[2 + (pre[2:3] == [","]):] if pre[:2] == ["going", "forward"] else pre   # an office's 'going forward'
+    # ('need a yes / no for the deck :', 'per the brief from leadership ,'; not 'in the final frame ,')
+    said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")]
+    # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
+    quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
+        STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom"}) & set(said) or set(pre) <= TAGGING
+    if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
+                                                  or named):
+        return words, ()
+    return main, ((" ".join(words[:k + 1]), "nothing, a preamble"),)
+
+
+# the words a digression (`digressions_dropped`) never says
+SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS | SPEED_CLASS_WORDS | FLOATING_WORDS
+          | STATIC_SAID | REST_WORDS | START_WORDS | END_SAID | FILM_WORDS | CONDITION_OPENERS | CONDITION_WORDS
+          | IMAGINING | IMAGINED_SAID | TIME_SAID | NEGATIONS | DIRECTION_WORDS | ASKING | set(COLOR_NAMES)
+          | OTHER_COLOURS | PLURALS | QUERY_NOUNS | COMPARING | {"would", "could", "had", "were", "should", "shall"}
+          | {"at", "once", "upon", "how", "why", "where", "who", "whom", "whose", "then", "first", "after", "before",
+             "until", "later", "end", "ends", "way", "each", "other", "both", "either", "anything", "something",
+             "nothing", "same", "instead", "rather", "only", "just", "moment", "instant", "frame", "second", "seconds",
+             "time", "point", "engine", "ground", "air", "sky", "future", "next", "last", "will", "gonna", "going",
+             "frames", "from", "past", "beyond", "freeze", "afterwards", "afterward", "hereafter", "eventually",
+             "through", "scale", "state", "tell", "give", "name", "describe", "identify", "determine", "report",
+             "find", "list"}
+          | {w for t in LATER_TIMES for w in t} | START_ADJECTIVES | DURATIONS | NUMBERS
+          | {"partway", "halfway", "midway", "middle", "stop", "stopped", "halted", "paused", "frozen", "froze",
+             "freezes", "cut", "cuts", "terminates", "terminated", "truncated"})

@@ -1,0 +1,840 @@
+"""Checks that a decoded reading reads what the question's words say. No operation negates, and each family asks in one
+form, of one property, at one time: the decoder reads a wording it never learnt as its nearest family's, and would
+answer another question. `QuestionParser._check` runs `reversed_reading`, `named_attribute` and `compared_unsaid` on the
+words decoded (and puts a counterfactual's changed vehicle where its condition names it, `condition_subject_first`);
+`analyse_batch` runs the others on the reading chosen, against the words as said and as read.
+
+A reading is unparsed with the reason of the first that fails: the opposite of the question (`reversed_reading`: motion
+asked as rest, 'Is the red sedan moving at the start?' read as is_static; a negation the grammar never says, 'not
+accelerating', 'never hit'; a word reversing the program's predicate, 'miss', 'braking', 'grounded'; a rest no word
+says, a speed read as static); an attribute the question itself names (`named_attribute`); two vehicles said side by
+side that nothing compares (`compared_unsaid`); a yes/no question read as asking which or how (`form_unmatched`), or one
+of who or what read as yes or no (`form_unasked`); a direction or a place asked as yes or no ('is it moving left?':
+`direction_unasked`); the video's end or another time than the start ('in the middle', 'after two seconds':
+`time_unasked`), a time window ('within 2 seconds': `clock_unasked`), a collision at the start (`collision_at_start`); a
+reading of two named objects that drops an indefinite one (`anything_unasked`); a collision no word says
+(`impact_unsaid`, unless an unknown word may be an impact's misspelt: `impact_like`) or one left unread
+(`collision_unread`); what a vehicle does or what happens (`what_happens`); a colour or a type no word asks
+(`attribute_unsaid`); 'faster' of nothing (`uncompared`); 'afterwards' read within the video or a reading after the
+video no word says (`future_unread`); a speed, floating or a comparison no word says (`speed_unsaid`, `floating_unsaid`,
+`comparison_unsaid`); a counterfactual that compares a vehicle with itself ('had it been slower':
+`comparison_imagined`), a change imagined read as what happened (`imagining_unread`), a counterfactual no word makes a
+condition (`condition_unsaid`); floating said and not read (`floating_unread`); a partner described by its motion ('a
+stationary vehicle': `motion_unread`) or a vehicle picked by its motion and not so read (`motion_unfiltered`); 'still'
+said of a motion read as rest (`still_continuing`); another property than the one asked, an amount of acceleration among
+them (`property_unread`); whether a vehicle is visible (`visibility_unread`); speeding up unread, or read where no word
+says it (`acceleration_unread`, `acceleration_unsaid`); the video's end, a later time or a vehicle entering read at the
+start (`end_unread`); a size (`size_unread`)."""
+
+from __future__ import annotations
+
+from difflib import SequenceMatcher
+
+from dynclevr.language.context import _run_on_question, _sentence_spans
+from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
+from dynclevr.language.refusals import _asked
+from dynclevr.language.times import FILM_WORDS
+from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
+                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMPARING, COMPARISONS, CONDITION_LABELS,
+                                     DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES,
+                                     GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS,
+                                     MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, REST_WORDS, RESTING,
+                                     REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOP_CUES, UNMOVED, VIEWER,
+                                     YES_NO_OPENERS, asks_impact, _head)
+from dynclevr.questions.programs import OPS
+
+
+def operation(token: str) -> str:
+    """'filter_attributes[red]' -> 'filter_attributes': a program token without its argument."""
+    return token.split("[", 1)[0]
+
+
+# No operation negates, and the grammar words each question one way round: a model reads a reversed wording ('is it
+# moving?', 'is it not accelerating?', 'does it miss the bus?') as its nearest phrase, the unreversed one, and its
+# answer would be the opposite. So a reading is kept only where the question's words say what its program asks.
+REST_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
+# what a negation may deny in the grammar's own questions: motion ('not moving': rest) and a fall ('had never come
+# down': floating); 'X or not' offers both answers
+DENIABLE = MOTION_WORDS | {"fall", "falls", "fell", "fallen", "falling", "come", "came", "drop", "dropped", "land",
+                           "landed", "descend", "descended", "sink", "sank", "sunk"}
+PAST = {"been", "have", "has", "had", "even", "at", "all", "ever", "once", "yet", "really", "actually", "-"}
+ALOFT = {"off", "above", "over", "from"}   # 'off the ground' is floating; 'on the ground', 'grounded' are not
+
+
+def offered(words: list[str], k: int) -> bool:
+    """Whether word k is in an alternative offered after 'or' ('in the air or on the ground?', '... or is it on the
+    ground', 'or is it not?'): the question offers both answers, and asks the first; or denied after 'and' ('fast
+    and not slowly', 'in the air and not on the ground': `properties_joined` refuses two kinds of motion)."""
+    return "or" in words[max(k - 5, 0):k] or words[k - 1:k] == ["and"]
+
+
+def reversed_reading(words: list[str], abstract: list[str]) -> str:
+    """Why the program asks the opposite of the question ('' when it does not): motion asked as rest, a negation
+    the grammar never says, or a word that reverses the program's predicate ('miss', 'braking', 'grounded')."""
+    ops = {operation(t) for t in abstract}
+    if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
+        return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
+                "static, or slow or fast)")
+    if ops & REST_OPERATIONS and (SPEED_CLASS_WORDS - COMPARISONS - {"still"}).intersection(words) and \
+            not (REST_WORDS | NEGATIONS).intersection(words):
+        return "the question asks a speed (slow or fast), but its nearest reading asks whether the vehicle is static"
+    # 'what colour is it at the start?' was read as the colour of the static one
+    if ops & REST_OPERATIONS and not (REST_WORDS | NEGATIONS | UNMOVED | RESTING).intersection(words):
+        return ("the question says nothing of standing still, but its nearest reading asks about it: ask whether the "
+                "vehicle is static, slow or fast")
+    for k, w in enumerate(words):
+        if w not in NEGATIONS or offered(words, k):
+            continue
+        after = [v for v in words[k + 1:k + 5] if v not in PAST]
+        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"]:
+            said = " ".join(words[k:k + 3])
+            return (f"the question is negated ('{said}'), which no question here asks: ask it without the "
+                    "negation and take the opposite answer")
+    if not NEGATIONS.intersection(words):
+        for asked, reversers in REVERSERS.items():
+            hit = [w for k, w in enumerate(words) if w in reversers and not offered(words, k)
+                   and not (w == "off" and not ENGINE_WORDS.intersection(words))     # 'it starts off slowly'
+                   and not (w == "ground" and ALOFT.intersection(words[max(k - 2, 0):k]))]
+            if ops.intersection(asked) and hit:
+                return (f"the question asks the opposite of what the parser can read ('{hit[0]}'): ask it the other "
+                        "way round and take the opposite answer")
+    return ""
+
+
+# Words that open a counterfactual's condition, its vehicle said within a few words after them ('if the bus had been
+# parked', 'suppose that the bus', 'in a world where the bus'); 'had' only as 'had the bus been'
+CONDITION_MARKERS = {"if", "suppose", "supposing", "assuming", "assume", "imagine", "pretend", "where", "had"}
+
+
+def condition_subject(words: list[str]) -> str | None:
+    """The placeholder of the vehicle a counterfactual's condition changes, wherever the condition stands, or None
+    where it says none (a pronoun: 'if it had been parked')."""
+    for k, w in enumerate(words):
+        if w not in CONDITION_MARKERS:
+            continue
+        for j in range(k + 1, min(k + 4, len(words))):
+            if words[j].startswith("<obj"):
+                if w != "had" or words[j + 1:j + 2] in (["been"], ["not"], ["never"], ["instead"]):
+                    return words[j]
+                break
+            if words[j] not in ("the", "a", "an", "that", "only", "we", "say"):
+                break
+    return None
+
+
+def condition_subject_first(words: list[str], abstract: list[str]) -> list[str]:
+    """A counterfactual program whose changed vehicle is the one the condition names. 'Would the car have hit the bus
+    if the bus had been parked?' was read as the car parked: the decoder takes the main clause's subject. A
+    collision is one event of the pair, so the program with the two vehicles swapped asks the question."""
+    if len(abstract) != 7 or not abstract[1].startswith("Counterfactual"):
+        return abstract
+    x, y = abstract[0], abstract[4]
+    if condition_subject(words) != y or x == y:
+        return abstract
+    return [y, abstract[1], y, abstract[3], x, *abstract[5:]]
+
+
+def named_attribute(words: list[str], abstract: list[str]) -> str:
+    """Why an attribute query asks what the question itself names ('What is the color of the red sedan?', 'What shape
+    is the blue bus?': no question here asks it; the decoder's nearest reading is a collision partner's), or ''."""
+    if not any(t.startswith("query_attributes") for t in abstract):
+        return ""
+    for k, w in enumerate(words):
+        if w not in ATTRIBUTE_NOUNS:
+            continue
+        rest = [v for v in words[k + 1:k + 4] if v not in ("of", "is", "the", "a", "an")]
+        if rest[:1] and rest[0].startswith("<obj") and words[k + 1] in ("of", "is") and \
+                words[words.index(rest[0], k) + 1:][:1] in ([], ["?"], ["."]):
+            return (f"the question asks the {w} of an object it names itself, which no question here asks (ask the "
+                    f"{w} of the object that collides with it, or that is static, slow, fast, accelerating or "
+                    "floating)")
+    return ""
+
+
+SPEED_COMPARISONS = ("faster_velocity", "slower_velocity")
+
+
+def compared_unsaid(words: list[str], abstract: list[str], refs: list) -> str:
+    """Why a speed comparison is not what the question asks, or '': the two vehicles are said side by side, each
+    once, and nothing compares them ('Is the red car or the blue bus moving?', 'Are the car and the bus moving?').
+    That asks about each of them; the decoder read it as whether the first is faster. ('Which is faster, X or Y?'
+    compares, and is the grammar's yes/no question.)"""
+    pair = sorted(placeholders(abstract))
+    if operation(abstract[-1]) not in SPEED_COMPARISONS or len(pair) != 2 or \
+            COMPARING.intersection(words) or any(words.count(f"<obj{k}>") != 1 for k in pair):
+        return ""
+    a, b = (k - 1 for k in pair)
+    if (a, b) not in coordinated(words):
+        return ""
+    x, y = (" ".join(refs[k]).replace("_", " ") for k in (a, b))
+    return (f"the question names the {x} and the {y} side by side and compares nothing, which no question here asks: "
+            f"ask about one of them, or whether the {x} is faster than the {y}")
+
+
+# 'up' and 'down' said of the motion ('is the jet going up?' was read as accelerating), not of a speed ('speeding up',
+# 'its speed going up', 'slowing down') nor a place ('flying up in the air')
+HEIGHT_MOTIONS = {"moving", "going", "flying", "heading", "headed", "travelling", "traveling", "climbing", "rising",
+                  "move", "go", "fly", "head", "moves", "goes", "flies", "heads"}
+RIGHT_AS_TIME = {"at", "when", "as", "after", "before", "away", "then", "from", "in", "on", "upon"}
+
+
+def _direction_said(words: list[str]) -> str | None:
+    """The first words that say a direction or a place ('left', 'towards the camera', 'away from us'), or None."""
+    for k, w in enumerate(words):
+        as_time = w == "right" and words[k + 1:k + 2] != [] and words[k + 1] in RIGHT_AS_TIME and \
+            words[k - 1:k] not in (["the"], ["to"])   # 'right at the start', not 'to the right at the start'
+        if w in DIRECTION_WORDS and not as_time:
+            return w
+        if w in ("up", "down") and words[k - 1:k] and words[k - 1] in HEIGHT_MOTIONS and \
+                not {"speed", "velocity"} & set(words[max(k - 3, 0):k + 2]) and words[k + 1:k + 2] != ["in"]:
+            return " ".join(words[k - 1:k + 1])
+        j = k + 1 if w in ("towards", "toward") else k + 2 if words[k:k + 2] == ["away", "from"] else None
+        viewer = next((v for v in VIEWER if j and words[j:j + len(v)] == list(v)), None)
+        if viewer:
+            return " ".join(words[k:j + len(viewer)])
+    return None
+
+
+DIRECTION_ASKED = (["which", "way"], ["what", "way"], ["what", "direction"], ["which", "direction"])
+
+
+def direction_unasked(words: list[str], abstract: list[str]) -> str:
+    """Why a reading that asks no direction is not the question's ('' when it is): the question asks which way
+    ('which way is it going when it appears?', read as its speed then: no family asks a direction there) or turns
+    on a direction or a place ('is the red car moving left?', 'is it on the left?'; the decoder read them as its
+    speed or its engine)."""
+    if "query_moving_direction" in abstract:
+        return ""
+    asked = next((" ".join(p) for k in range(len(words)) for p in DIRECTION_ASKED if words[k:k + len(p)] == p), None)
+    if asked:
+        return (f"the question asks '{asked}', but its nearest reading asks another property: no question here asks "
+                "which way a vehicle moves but at the start or at a collision")
+    said = _direction_said(words)
+    if said is None:
+        return ""
+    return (f"the question turns on '{said}', a direction or a place, which no question here asks but 'which way "
+            "is it moving' (at the start or at a collision)")
+
+
+# A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
+# in the middle, at the 2-second mark, throughout or ever (they ask at the start, when it comes into view, at a
+# collision)
+NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["throughout"], ["during"], ["later"], ["ever"],
+             ["always"], ["eventually"], ["afterwards"], ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
+             ["at", "any", "time"], ["at", "one", "point"], ["most", "of", "the", "time"], ["all", "the", "time"],
+             ["the", "whole", "time"], ["whole"], ["entire"], ["now"], ["currently"], ["presently"])
+CLOCK_WORDS = {"second", "seconds", "frame", "frames", "s", "sec", "secs"}
+ORDINAL_WORDS = {"first", "1", "0", "one", "zero"}   # 'frame 1', 'the first second': the start
+
+
+def time_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question says no word of the start but
+    another time ('in the middle of the video, is the red car fast?', 'after two seconds', 'at frame 50', 'ever'),
+    which the decoder read as the start."""
+    if "start" not in program or START_WORDS & set(words) or "first" in words:
+        return ""
+    said = next((" ".join(t) for k in range(len(words)) for t in (*NOT_START, ["before"], ["until"])
+                 if words[k:k + len(t)] == t), None) or _future_said(words)   # 'faster than the bus after the video?'
+    clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if (a in CLOCK_WORDS and b.isdigit() or
+                                                                   b in CLOCK_WORDS and (a.isdigit() or a in NUMBERS))
+                  and not {a, b} & ORDINAL_WORDS), None)
+    if not (said or clock):
+        return ""
+    return (f"the question asks at a time other than the start ('{said or clock}'), which no question here asks of a "
+            "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
+
+
+VISIBILITY = {"visible", "invisible", "hidden", "occluded"}   # not 'see': 'based on what you see, will ...'
+
+
+def visibility_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question asks whether a vehicle can be seen ('is
+    the red sedan visible at the start?' was read as accelerating), which only the time of its coming into view
+    reads."""
+    said = next((w for w in words if w in VISIBILITY), None)
+    if said is None or "come_in_frame" in program:
+        # ... or goes out of it ('goes out from the view'; 'comes out from behind' is coming into it)
+        leaving = next((w for w in words if w in LEAVING), None) or next(
+            (f"{a} out" for a, b in zip(words, words[1:]) if a in GOING_OUT and b == "out"), None)
+        if leaving and "come_in_frame" in program:   # 'when it leaves the view' was read as when it comes into it
+            return (f"the question asks when a vehicle leaves the view ('{leaving}'), which no question here asks "
+                    "(they ask how fast it moves when it comes into view)")
+        return ""
+    return (f"the question asks whether a vehicle can be seen ('{said}'), which no question here asks (they ask how "
+            "fast it moves when it comes into view)")
+
+
+GOING_OUT = {"go", "goes", "going", "went", "gone", "move", "moves", "moving", "moved", "drive", "drives", "driving",
+             "drove", "fly", "flies", "flying", "flew", "get", "gets", "getting", "got", "pass", "passes", "passed"}
+LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "exited", "disappear", "disappears",
+           "disappearing", "disappeared", "vanish", "vanishes", "vanished", "departs", "departed"}
+
+
+def collision_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question (as said: 'by any chance' is
+    no 'bump') also speaks of a collision ('is the red car at the start faster than the bus at the collision?' was
+    read at the start alone)."""
+    if "start" not in program or COLLISION_OPERATIONS.intersection(map(operation, program)) or not asks_impact(words):
+        return ""
+    return ("the question speaks of a collision, but its nearest reading asks at the start alone: no question here "
+            "reads both")
+
+
+GOING = {"go", "goes", "going", "went"}   # 'pushing it to go faster'
+
+
+SPEED_READINGS = {"is_accelerating", "filter_accelerating", "query_moving_velocity", "is_moving_velocity",
+                  "filter_moving_velocity"}
+
+
+def uncompared(words: list[str], program: list[str]) -> str:
+    """Why a reading of accelerating or of a speed is not the question's ('' when it is): it says 'faster' of nothing
+    ('is the red car faster?' was read as accelerating, 'is it slower, yes or no at the start?' as its speed; 'getting
+    faster', 'faster and faster' are accelerating)."""
+    ops = set(map(operation, program))
+    if not SPEED_READINGS & ops or {"faster_velocity", "slower_velocity"} & ops or \
+            any(t.startswith("Counterfactual") for t in program):
+        return ""
+    said = next((w for k, w in enumerate(words) if w in COMPARISONS and not (k and words[k - 1] in BECOMING | GOING)
+                 and words[k + 1:k + 2] != ["and"]), None)
+    if said is None:
+        return ""
+    return (f"the question says '{said}' of nothing to compare with, which no question here asks: ask whether it is "
+            "faster than another vehicle, or accelerating")
+
+
+def collision_at_start(words: list[str], program: list[str]) -> str:
+    """Why a reading of whether vehicles collide is not the question's ('' when it is): the question asks it at the
+    start ('are the jet and the bus touching at the start?', read as at any time), and says no motion there for the
+    start to be the time of ('does the car, parked at the start, hit the bus?')."""
+    if not COLLISION_OPERATIONS.intersection(map(operation, program)) or "start" in program or \
+            any(t.startswith("Counterfactual") for t in program):   # a partner's too: 'what hits it at the start?'
+        return ""
+    if not START_WORDS & set(words) or (SPEED_CLASS_WORDS | set(MOTION_KINDS)) & set(words):
+        return ""
+    return ("the question asks about a collision at the start, which no question here asks (they ask whether vehicles "
+            "collide during the video or after it)")
+
+
+VIDEO_PARTS = (["early", "in"], ["late", "in"], ["later", "in"], ["halfway"], ["midway"], ["in", "the", "middle"])
+PART_ORDINALS = {"first", "last", "final", "next", "second", "latter"}
+PART_NOUNS = {"half", "part", "few", "moments", "moment"}
+
+
+def clock_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
+    within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'), or
+    of the video's collisions within a part of it ('in the last second', 'at the end', 'in the second half'), which
+    no program reads."""
+    if "start" in program:
+        return ""
+    # a counterfactual's condition speaks of the start ('had it been slow in the first frames', '... second')
+    imagined = any(t.startswith("Counterfactual") for t in program)
+    clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if b in CLOCK_WORDS and (
+        a.isdigit() or a in NUMBERS or not imagined and a in ORDINAL_WORDS and not b.endswith("s"))), None)
+    if clock is None and "Events" in program:   # a part of the video ('in the last second', 'at the end')
+        clock = next((" ".join(t) for k in range(len(words)) for t in (*END_TIMES, *VIDEO_PARTS)
+                      if words[k:k + len(t)] == t), None) or next(
+            (f"{a} {b}" for a, b in zip(words, words[1:]) if a in PART_ORDINALS and b in CLOCK_WORDS | PART_NOUNS),
+            None)
+    if clock is None:
+        return ""
+    return (f"the question asks within a time ('{clock}'), which no question here asks: collisions are asked over the "
+            "whole video, or after it")
+
+
+# the imagined collision compared with the real one ('would it have hit the bus sooner?' was read as whether it would)
+IMAGINED_COMPARED = {"sooner", "earlier", "later", "harder", "softer", "gentler", "longer"}
+
+
+def comparison_imagined(words: list[str], program: list[str]) -> str:
+    """Why a counterfactual reading is not the question's ('' when it is): its condition compares the vehicle with
+    itself ('if it had been slower', 'had it gone faster'), which no intervention sets (they set it static, slow or
+    fast, or accelerating: 'getting faster'); the decoder read 'slower' as fast and 'faster' as accelerating."""
+    if not any(t.startswith("Counterfactual") for t in program):
+        return ""
+    compared = next((w for w in words if w in IMAGINED_COMPARED), None)
+    if compared:
+        return (f"the question compares the imagined collision with the real one ('{compared}'), which no question "
+                "here asks: ask whether it would have happened")
+    said = next((" ".join(words[k:k + 1 + (w in ("more", "less"))]) for k, w in enumerate(words)
+                 if (w in COMPARISONS or w in ("more", "less") and words[k + 1:k + 2] and words[k + 1] in PACE_WORDS)
+                 and not (k and words[k - 1] in BECOMING or words[k + 1:k + 2] == ["and"])), None)
+    if said is None:
+        return ""
+    return (f"the question imagines a vehicle {said} than it was, which no question here asks: ask as if it had been "
+            "static, slow or fast, or accelerating")
+
+
+# The words that say which way two speeds compare: a comparative ('faster', 'at a lower speed', 'a greater velocity'),
+# or 'more' / 'less' before a word of pace ('less quickly', 'more speed')
+COMPARED_SAID = {**dict.fromkeys(("faster", "quicker", "speedier", "swifter", "higher", "greater", "superior",
+                                  "outpaces", "outpace", "outpacing", "outruns", "outrun", "outrunning"), 1),
+                 **dict.fromkeys(("slower", "lower", "lesser", "inferior"), -1)}
+PACE_SIGN = {**dict.fromkeys(("fast", "quick", "quickly", "rapid", "rapidly", "speedy", "speedily", "swiftly"), 1),
+             **dict.fromkeys(("slow", "slowly"), -1), **dict.fromkeys(("speed", "velocity", "pace"), 1)}
+
+
+def comparison_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading comparing two speeds is not the question's ('' when it is): no word says which way they compare
+    ('is the chopper's speed inferior to the minivan's?', 'is the SUV the slowpoke?' were read as faster; the decoder
+    guesses a side when the comparison is said in words it does not know), or every word that says it says the other
+    way."""
+    if not program or operation(program[-1]) not in SPEED_COMPARISONS:
+        return ""
+    asked = 1 if operation(program[-1]) == "faster_velocity" else -1
+    signs = [COMPARED_SAID[w] for w in words if w in COMPARED_SAID] + [
+        PACE_SIGN[b] * (1 if a == "more" else -1) for a, b in zip(words, words[1:]) if a in ("more", "less")
+        and b in PACE_SIGN]
+    if asked in signs:
+        return ""
+    return ("the question compares two speeds in words the parser does not read as faster or slower" if not signs else
+            "the question compares the speeds the other way round than its nearest reading: ask whether one is "
+            "faster (or slower) than the other")
+
+
+PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
+
+
+# the words that say a question imagines its video otherwise (a label, an opener or 'instead')
+IMAGINING_SAID = {"imagine", "imagining", "suppose", "supposing", "pretend", "hypothetically", "hypothetical",
+                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif"}
+
+
+def imagining_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of what happened is not the question's ('' when it is): the question imagines otherwise ('brown
+    motorbike starting slow instead, it hits the gray car?', 'cf: gray one starts slow instead -> ...' were read as
+    whether it is slow at the collision), and no counterfactual was read. Only a reading about collisions, as every
+    counterfactual is ('Picture this: ... is it crawling at the start?' imagines nothing), and not of the future
+    ('suppose the clip went on for longer')."""
+    if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program or \
+            "futureEvents" in program:
+        return ""
+    said = next((w for w in words if w in IMAGINING_SAID | {"assume", "assuming"}), None) or \
+        next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
+        next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
+             None)   # 'the engine is on from the very start. Would the SUV hit the bike?'
+    if said is None:
+        return ""
+    return (f"the question imagines otherwise ('{said}'), but its nearest reading asks what happens in the video: "
+            "ask as 'if X had been ... from the start, would it hit Y?'")
+
+
+# the words that make a condition of what follows: a counterfactual reading needs one
+CONDITION_SAID = IMAGINING_SAID | {"if", "had", "were", "would", "assume", "assuming", "say", "picture", "envision",
+                                   "envisage", "imagined", "supposed", "hypothetical", "scenario", "intervention",
+                                   "world", "case", "twist"} | CONDITION_LABELS
+
+
+def condition_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a counterfactual reading is not the question's ('' when it is): nothing in it says a condition, as said or
+    in a label the rules read away ('Video's been halted partway; from here on, will the chopper and the airliner
+    collide?' was read as had the chopper been static)."""
+    if not any(t.startswith("Counterfactual") for t in program) or CONDITION_SAID & set(words) or any(
+            w == "from" and START_WORDS & set(words[k + 1:k + 3]) for k, w in enumerate(words)):   # 'fast from start'
+        return ""
+    return ("the question says no condition, but its nearest reading imagines one: ask 'if X had been ... from the "
+            "start, would it hit Y?'")
+
+
+# the words of floating a reading must read ('plane floating at the beginning or not' was read as fast)
+AFLOAT_WORDS = {"floating", "float", "floats", "floated", "hovering", "hover", "hovers", "hovered", "airborne",
+                "aloft"}
+
+
+def floating_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question says a vehicle floats, and the reading
+    reads no floating."""
+    said = next((w for w in words if w in AFLOAT_WORDS), None)
+    if said is None or FLOATING_OPERATIONS.intersection(map(operation, program)):
+        return ""
+    return (f"the question says '{said}', but its nearest reading reads no floating: ask whether the vehicle is "
+            "floating, or what it would have hit had it floated")
+
+
+# 'getting faster', 'faster and faster': accelerating, an intervention
+BECOMING = {"getting", "get", "gets", "got", "grow", "grows", "growing", "grew", "become", "becomes", "becoming",
+            "became", "and"}
+WHO = {"who", "whom", "whose"}
+
+
+def form_unmatched(words: list[str], program: list[str]) -> str:
+    """Why a reading answers in another form than the question asks for ('' when it does not): a yes/no question
+    (its head after a clause of time said first) read as asking which ('does the red car change direction?' read as
+    which way it moves; but 'is it static, slow or fast?' offers its answers). The other way round is
+    `form_unasked`'s."""
+    head = _head(words)
+    returns = OPS[operation(program[-1])].output
+    if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
+        return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
+                "type): no question here asks it as yes or no")
+    # 'what type of aeroplane is it at the start?' read as its direction: a type or colour asked is no motion
+    kind = head[1] if head[:1] in (["what"], ["which"]) and head[1:2] and head[1] in ATTRIBUTE_NOUNS else None
+    if kind and head[2:4] != ["of", "speed"] and operation(program[-1]) in ("query_moving_velocity",
+                                                                              "query_moving_direction"):
+        return (f"the question asks the {kind}, but its nearest reading asks a speed or a direction: no question here "
+                "reads it")
+    # '..., zzq colour is it' read as whether the plane floats: a colour or type asked of 'it' is no yes or no
+    asked = next((a for a, b, c in zip(words, words[1:], words[2:]) if a in ATTRIBUTE_NOUNS and b in ("is", "was")
+                  and c in ("it", "that", "this", "they")), None)
+    if asked and returns is not str and "or" not in words:
+        return (f"the question asks the {asked}, but its nearest reading asks yes or no: no question here reads "
+                "it")
+    # 'after the video ends , which vehicle will the green car run into ?' read as whether it hits anything
+    which = next((words[j + 1] for j in range(len(words) - 1) if words[j] in ("which", "what") and (
+        j == 0 or words[j - 1] == ",") and (words[j + 1] in OBJECT_WORDS or words[j + 1] in GENERIC_NOUNS)), None)
+    # ('which one is faster , is it the sedan ?' asks whether the sedan is)
+    if which and returns is not str and not {"faster_velocity", "slower_velocity"} & set(map(operation, program)):
+        return f"the question asks which {which}, but its nearest reading asks yes or no: no question here reads it"
+    # 'which vehicle hits the bus first?' read as the bus's direction: a vehicle asked for is its colour or type
+    if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
+            operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):
+        return (f"the question asks which {head[1]}, but its nearest reading asks a speed or a direction: ask for the "
+                "colour or the type of the vehicle")
+    return ""
+
+
+COLLISION_OPERATIONS = {"filter_collision", "get_all_col_partners"}
+# besides IMPACT_STEMS, the words a collision is said with: 'run into', 'drive into', 'each other'
+IMPACT_SAID = {"into", "onto", "run", "runs", "ran", "running", "other", "another"}
+
+
+def impact_like(word: str) -> bool:
+    """Whether an unknown word may be an impact's word misspelt ('collied', 'crahsed', 'tocuh'), which the decoder
+    reads a collision in from the rest of the question; 'too', 'while' are not."""
+    return any(SequenceMatcher(None, word[:len(s) + 1], s).ratio() >= 0.7 for s in IMPACT_STEMS)
+
+
+def impact_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of a collision is not the question's ('' when it is): the question says nothing of one ('what
+    colour is the parked car?' read as the colour of what the car hits)."""
+    if not COLLISION_OPERATIONS.intersection(operation(t) for t in program):
+        return ""
+    if asks_impact(words) or any(w in IMPACT_SAID - {"into"} for w in words):   # not 'comes into view'
+        return ""
+    return ("the question says nothing of a collision, but its nearest reading asks about one: no question here "
+            "reads it")
+
+
+SPEED_CLASS_OPERATIONS = {"is_moving_velocity", "filter_moving_velocity", "Counterfactual_moving_slow",
+                          "Counterfactual_moving_fast"}
+
+
+def speed_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of a speed class is not the question's ('' when it is): the question, as read, says no speed
+    ('is the bus driving at the start?' asks whether it moves at all, which the decoder read as slow)."""
+    if not SPEED_CLASS_OPERATIONS.intersection(map(operation, program)) or SPEED_CLASS_WORDS.intersection(words):
+        return ""
+    return ("the question says no speed (slow or fast), but its nearest reading asks about one: ask whether the "
+            "vehicle is static, slow or fast")
+
+
+FLOATING_OPERATIONS = {"is_floating", "filter_floating", "Counterfactual_floating"}
+
+
+def floating_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of floating is not the question's ('' when it is): the question, as read, says nothing of it
+    ('if the bus had stayed still, ...' was read as had it stayed in the air)."""
+    if not FLOATING_OPERATIONS.intersection(map(operation, program)):
+        return ""
+    # a ground vehicle said 'flying' goes fast ('the dirtbike comes flying out of the gate' was read as had it
+    # floated); the vehicle floating is the program's first
+    first = program[:program.index("unique")] if "unique" in program else []
+    grounded = next((t[len("filter_attributes["):-1] for t in first if t.startswith("filter_attributes[")
+                     and CATEGORY_OF.get(t[len("filter_attributes["):-1], "aeroplane") != "aeroplane"), None)
+    if grounded and FLOATING_WORDS.intersection(words) == {"flying"}:
+        return (f"the question says the {grounded.replace('_', ' ')} is 'flying', which a vehicle on the ground is "
+                "only as fast: ask whether it is fast, or floating")
+    if FLOATING_WORDS.intersection(words):
+        return ""
+    return ("the question says nothing of floating, but its nearest reading asks about it: ask whether the vehicle "
+            "is floating, or static, slow or fast")
+
+
+MOTION_READ = ("velocity", "direction", "static", "floating", "accelerating", "Counterfactual")
+
+
+def motion_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of collisions alone is not the question's ('' when it is): the question describes a vehicle by its
+    motion ('does it crash into a stationary vehicle?', 'is it hit by a floating plane?', read as whether it crashes at
+    all), which no program reads beside a collision."""
+    if not COLLISION_OPERATIONS.intersection(map(operation, program)) or \
+            any(part in t for t in program for part in MOTION_READ):
+        return ""
+    said = next((w for w in words if w in MOTION_DESCRIPTIONS), None)
+    if said is None:
+        return ""
+    return (f"the question describes a vehicle by its motion ('{said}'), which no question here reads beside a "
+            "collision")
+
+
+STATIC_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
+
+
+def still_continuing(words: list[str], program: list[str]) -> str:
+    """Why a reading of rest is not the question's ('' when it is): its only word of rest is 'still' saying that a
+    motion goes on ('is it still accelerating when it hits the bus?' was read as whether it is static there)."""
+    if not STATIC_OPERATIONS.intersection(map(operation, program)) or STATIC_SAID.intersection(words):
+        return ""
+    going = next((f"still {b}" for a, b in zip(words, words[1:]) if a == "still" and b.endswith("ing")
+                  and b not in GENERIC_NOUNS | {"thing", "something", "anything", "nothing"}), None)
+    if going is None or sum(w == "still" for w in words) > 1:
+        return ""
+    return f"the question says a motion goes on ('{going}'), but its nearest reading asks whether the vehicle is static"
+
+
+MOTION_FILTERS = {"filter_static", "filter_moving_velocity", "filter_accelerating", "filter_floating"}
+# said before a vehicle to pick it ('the parked bus'); not a comparison ('the faster one' is the grammar's)
+MOTION_PICKS = {w for w in MOTION_DESCRIPTIONS - COMPARISONS - {"full", "top", "high", "low"}
+                if not w.endswith("ly")} | {"moving"}
+
+
+def motion_unfiltered(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question picks a vehicle by its motion ('is the
+    accelerating sedan faster than the bus?' was read about any sedan) and the program picks none so."""
+    if MOTION_FILTERS.intersection(map(operation, program)):
+        return ""
+    said = next((" ".join(words[k:j + 1]) for k, w in enumerate(words) if w in MOTION_PICKS
+                 and words[k - 1:k] in (["the"], ["that"], ["this"])
+                 for j in (k + 2, k + 1) if words[j:j + 1] and words[j] in OBJECT_WORDS | GENERIC_NOUNS
+                 and all(x in OBJECT_WORDS for x in words[k + 1:j])), None)
+    if said is None:
+        return ""
+    return f"the question picks a vehicle by its motion ('{said}'), which no question here does so"
+
+
+def acceleration_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question says a vehicle speeds up, and its reading
+    asks no acceleration ('was it speeding up when it hit the sedan?' was read as whether it was fast there; only the
+    start and a counterfactual's condition ask one)."""
+    if any("accelerat" in t for t in program):
+        return ""
+    said = next((w for w in words if w.startswith("accelerat")), None) or next(
+        (" ".join(a) for k in range(len(words)) for a in ACCELERATION_SAID if words[k:k + len(a)] == a), None)
+    if said is None:
+        return ""
+    return (f"the question asks whether a vehicle speeds up ('{said}') where no question here asks it (they ask it "
+            "at the start, or as what might have been)")
+
+
+# the words, besides the grammar's phrases, that say a vehicle speeds up: a reading of accelerating needs one
+SPEEDING_UP = {"engine", "engines", "throttle", "revving", "gaining", "picking", "faster", "quicker", "gathering",
+               "increasing", "increase", "building", "thrust", "powered", "power", "speeding", "sped", "accelerator",
+               "gas", "pedal", "boost", "boosting", "turbo", "gunning", "guns", "punching", "flooring", "hastening",
+               "hasteneth"}
+
+
+SIZES = {"size", "length", "width", "weight", "mass", "bigger", "smaller", "larger", "heavier", "lighter", "wider",
+         "taller"}
+
+
+def size_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question compares or asks a size ('is the red car
+    greater in size than the blue bus?' was read as faster), which no question here asks."""
+    said = next((w for k, w in enumerate(words) if w in SIZES and words[k + 1:k + 2] not in (["speed"], ["velocity"])),
+                None)   # not 'a smaller speed'
+    return (f"the question asks about a size ('{said}'), which no question here asks (they ask speed classes, "
+            "directions, colours, types and collisions)") if said else ""
+
+
+def acceleration_unsaid(words: list[str], program: list[str]) -> str:
+    """Why a reading of accelerating is not the question's ('' when it is): the question says nothing of speeding up
+    ('which colour level corresponds to the vehicle whose initial speed is recorded as slow?' was read as the colour
+    of what accelerates)."""
+    if not {"is_accelerating", "filter_accelerating"} & set(map(operation, program)) or \
+            any(w.startswith("accelerat") for w in words) or SPEEDING_UP & set(words) or \
+            any(a == c and a.endswith("er") and b == "and" for a, b, c in zip(words, words[1:], words[2:])) or \
+            any(words[k:k + 3] == ["speed", "going", "up"] for k in range(len(words))) or \
+            any(words[k:k + len(a)] == list(a) for k in range(len(words)) for a in ACCELERATION_SAID):
+        return ""
+    return ("the question says nothing of speeding up, but its nearest reading asks about it: ask whether the vehicle "
+            "is accelerating")
+
+
+LATER_WORDS = {"later", "subsequently", "afterwards", "afterward", "eventually"}
+ENTERING = {"enters", "enter", "entering", "entered", "arrive", "arrives", "arrived"}   # not 'appear', also 'seem'
+
+
+def end_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question speaks of the video's end or a
+    later time ('when the video endeth', 'at the video's close', 'at last', 'later on, after the first few seconds'),
+    which no question asks of a vehicle's motion."""
+    if "start" not in program or "futureEvents" in program:
+        return ""
+    # ... or its coming into view, where nothing says the start ('the biplane enters upon the stage! at what pace doth
+    # it arrive?')
+    entering = next((w for w in words if w in ENTERING), None)
+    if entering and not START_WORDS & set(words) and "first" not in words:
+        return (f"the question asks about a vehicle coming into view ('{entering}'), but its nearest reading asks at "
+                "the start: ask how fast it moves when it comes into view")
+    said = next((w for w in words if w in END_WORDS | LATER_WORDS), None) or next(
+        (" ".join(p) for k in range(len(words)) for p in (["the", "close"], ["'", "s", "close"], ["at", "last"])
+         if words[k:k + len(p)] == p), None)
+    if said is None:
+        return ""
+    return (f"the question asks at a time other than the start ('{said}'), which no question here asks of a "
+            "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
+
+
+def property_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): it answers another property than the one asked ('what is
+    the speed of the vehicle that hits the truck?' read as that vehicle's colour), or asks about the object a
+    question names where it asks about the vehicle that hits it ('what direction is the vehicle that hits the jet
+    moving in?' read as the jet's)."""
+    asked, _ = _asked(words)
+    head = _head(words)
+    # ('what colour is the vehicle with a positive acceleration?' asks a colour)
+    if head[:1] and head[0] in ASKING and "acceleration" in head and \
+            not ASKED_QUERIES.get(asked, "").startswith("query_attributes") or \
+            head[:1] == ["how"] and head[1:2] and head[1] in SPEED_CLASS_WORDS and (
+                any(w.startswith("accelerat") for w in head) or any(
+                    head[k:k + len(a)] == a for k in range(2, len(head)) for a in ACCELERATION_SAID)):
+        return ("the question asks how much a vehicle accelerates, which no question here asks: ask whether it is "
+                "accelerating")
+    query = program[-1] if program and program[-1].startswith("query_") else None
+    if query and asked in ASKED_QUERIES and ASKED_QUERIES[asked] != query:
+        return (f"the question asks the '{asked}', but its nearest reading asks another property: no question here "
+                "asks it of that vehicle")
+    partner = any(w in GENERIC_NOUNS and words[k + 1:k + 2] and words[k + 1] in PARTNER_SAID
+                  and asks_impact(words[k + 2:k + 6]) for k, w in enumerate(words))
+    if query and partner and "get_all_col_partners" not in program:
+        return ("the question asks about the vehicle that collides with another, which no question here asks but its "
+                "colour or its type")
+    return ""
+
+
+def form_unasked(words: list[str], program: list[str]) -> str:
+    """Why a yes/no reading is not the question's ('' when it is): the question asks who ('who hits the bus?' read
+    as whether anything does), what attribute ('what's the type of the car that is speeding up?', 'which bus is
+    parked, what colour?' read as whether it speeds up or is parked) or what. 'which is faster, X or Y?' is the
+    grammar's yes/no question, and so is 'what would happen if ...'."""
+    if OPS[operation(program[-1])].output is not bool:
+        return ""
+    # a question after its context, read whole ('One of the planes is floating ... . What color is it?'), asks as its
+    # last sentence asks too, or where speech without stops has its question ('... at the start what color is it')
+    spans = _sentence_spans(words)
+    run_on = _run_on_question(words) if len(spans) == 1 else None
+    asked = words[spans[-1][0]:] if len(spans) > 1 and words[-1] == "?" else words[run_on:] if run_on else None
+    return _form_unasked(words, program) or (_form_unasked(asked, program) if asked else "")
+
+
+def _form_unasked(words: list[str], program: list[str]) -> str:
+    head = _head(words)
+    if any(head[:len(i)] == i for i in ASKING_FOR) and not {"whether", "if"} & set(head):
+        return f"the question asks for something ('{head[0]}'), but its nearest reading asks yes or no"
+    if head[:1] and head[0] in WHO and not OBJECT_WORDS.intersection(words[words.index("or"):] if "or" in words
+                                                                    else []):   # not 'who is faster: X or Y?'
+        return ("the question asks who, but its nearest reading asks yes or no: ask for the colour or the type of "
+                "the vehicle")
+    how = next((words[k + 1] for k in range(len(words) - 1) if words[k] == "how"
+                and words[k + 1] not in ("about", "come")), None)   # 'if it had been parked, how fast would ...'
+    if how:
+        return f"the question asks how {how}, but its nearest reading asks yes or no"
+    asked, _ = _asked(words)
+    if asked in QUERY_NOUNS or head[:1] and head[0] in ASKING and head[1:2] and head[1] in QUERY_NOUNS:
+        return f"the question asks the '{asked or head[1]}', but its nearest reading asks yes or no"
+    compared = operation(program[-1]) in ("faster_velocity", "slower_velocity")   # 'which one is faster, is it X?'
+    if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
+            "or" not in head and not compared:
+        return f"the question asks which {head[1]}, but its nearest reading asks yes or no"
+    if head[:1] == ["what"] and not HAPPENING.intersection(head):   # 'what will the red car hit?'
+        return "the question asks what, but its nearest reading asks yes or no"
+    return ""
+
+
+def attribute_unsaid(said: list[str], read: list[str], program: list[str]) -> str:
+    """Why a reading of a colour or a type is not the question's ('' when it is): the question names no attribute
+    ('what does the red car hit?', 'name the vehicle that ...' ask which vehicle, and were read as its colour)."""
+    if not program[-1].startswith("query_attributes") or ATTRIBUTE_SAID.intersection(said + read):
+        return ""
+    return ("the question asks which vehicle, which no question here answers but by its colour or its type: ask what "
+            "colour (or type) it is")
+
+
+def what_happens(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question (`words`: typos fixed) asks what a vehicle
+    does ('what is the red car doing at the start?' was read as its speed), or what happens and asks no question
+    after it ('what would happen if it were static?' was read as whether it is)."""
+    head = _head(words)
+    if head[:1] == ["what"] and head[1:2] and head[1] in AUXILIARIES | {"will", "would"} and (
+            "doing" in head or "do" in head[2:]):   # not 'what speed is it doing'
+        return ("the question asks what a vehicle does, which no question here answers: ask how fast it moves, which "
+                "way, or whether it collides")
+    if OPS[operation(program[-1])].output is not bool or head[:1] != ["what"] or \
+            not HAPPENING.intersection(head) - {"if"} or \
+            CLAUSE_ENDS.intersection(words[:-1]):   # a question after it: '..., would it hit the bus?'
+        return ""
+    return ("the question asks what happens, which no question here answers: ask whether a vehicle collides, or how "
+            "it moves")
+
+
+HAPPENING = {"if", "happen", "happens", "happened", "happening", "next"}   # 'what would happen if ...: would ...?'
+CLAUSE_ENDS = {",", ":", ";", ".", "?", "-"}
+FUTURE_SAID = (["after", "the"], ["in", "the", "future"], ["later", "on"], ["from", "now"])
+
+
+def _future_said(words: list[str]) -> str:
+    """The words that say the time after the video ('after the video', 'in the future'), or ''."""
+    return next((" ".join(words[k:k + len(f) + (f[0] == "after")]) for k in range(len(words)) for f in FUTURE_SAID
+                 if words[k:k + len(f)] == f and (f[0] != "after" or words[k + 2:k + 3] and
+                                                  words[k + 2] in FILM_WORDS)), "")
+
+
+def future_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
+    video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there); or
+    the other way round, a reading after the video where the question asks before its end, or a counterfactual's
+    after the video ('if it had been static, will it hit the bus after the video ends?')."""
+    before = next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] == "before" and (
+        words[k + 1:k + 3] == ["the", "end"] or words[k + 1] == "the" and words[k + 2] in FILM_WORDS)), None)
+    if before and "futureEvents" in program:   # 'will they collide before the video ends?' asks within it
+        return (f"the question asks about the video ('{before}'), but its nearest reading asks after it: ask whether "
+                "they collide in the video")
+    if any(t.startswith("Counterfactual") for t in program) and _future_said(words):
+        return (f"the question imagines the time after the video ('{_future_said(words)}'), which no question here "
+                "does: a counterfactual asks about the video's own time")
+    # 'the green sedan , it collide with something in the video ?': a learner's bare verb, within the video
+    within = next((" ".join(words[k:k + 2 + (words[k + 1] == "the")]) for k in range(len(words) - 2)
+                   if words[k] in ("in", "during", "throughout") and
+                   words[k + 1 + (words[k + 1] == "the")] in FILM_WORDS), None)
+    # 'does the sedan hit the airliner afterwards?' read within the video
+    after = next((w for w in words if w in ("afterwards", "afterward", "hereafter", "thereafter")), None)
+    if after and "Events" in program and "futureEvents" not in program:
+        return (f"the question asks '{after}', but its nearest reading asks within the video: ask whether they "
+                "collide after the video ends")
+    if "futureEvents" in program and within and not FUTURE_CUES.intersection(words):
+        return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
+                "it collides in the video")
+    # 'can we get clarity on whether the pickup and the purple thing bump into each other?' read after the video
+    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES).intersection(words):
+        return ("the question says nothing of the time after the video, but its nearest reading asks after it: ask "
+                "whether they collide in the video, or will after it ends")
+    if "Events" not in program or "futureEvents" in program:
+        return ""
+    said = _future_said(words)
+    if not said:
+        return ""
+    return (f"the question asks about the time after the video ('{said}'), but its nearest reading asks about the "
+            "video: no question here reads it")
+
+
+ANY_NOUNS = {"vehicle", "vehicles", "object", "objects", "thing", "things", "other", "one", "else"}
+
+
+def anything_unasked(words: list[str], program: list[str]) -> str:
+    """Why a reading of two named objects drops an indefinite one ('' when it does not): 'does either the red car or
+    the blue bus hit anything?' and 'do both ... collide with something?' ask about each object and anything else,
+    which no family asks; the pair's reading ('do they hit each other?') answers another question."""
+    named, current = set(), []
+    for token in program:
+        if token.startswith("filter_attributes["):
+            current.append(token)
+        elif token == "unique" and current:
+            named.add(tuple(current))
+            current = []
+    indefinite = INDEFINITES.intersection(words) or any(a in ("any", "some") and b in ANY_NOUNS
+                                                       for a, b in zip(words, words[1:]))
+    if len(named) >= 2 and indefinite:
+        return ("the question asks about two objects and anything else at once, which no question here asks: ask "
+                "about each object alone, or whether the two hit each other")
+    return ""

@@ -1,0 +1,750 @@
+"""Context before the question, and what is said after it. The sentences before the question are read for what it refers
+back to, and dropped (`context_as_question`): the vehicles its 'it', 'they', 'the former' or shorter names mean, a
+counterfactual's condition said first, the moment its 'then' means; so is speech transcribed without stops
+(`_run_on_question`). Before it, in `QuestionParser._words`, a change said as a setting, a tester's scenario or another
+telling of the story is read as the grammar's condition (`settings_as_imagined`, `scenario_as_asked`,
+`told_otherwise_as_imagined`); after it, what is said after the question is read into it (`afterthoughts_read`), and a
+collision said first without its pair is said with the two vehicles (`impact_said_first`)."""
+
+from __future__ import annotations
+
+from dynclevr.assets.catalogue import SUBTYPES
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
+from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_end
+from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
+                                     COPULAS, DETERMINERS, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID, IMPACT_STEMS,
+                                     INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID,
+                                     OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED,
+                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED,
+                                     asks_impact, _at)
+
+# Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
+# moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
+# before it are read for what the question refers back to, and dropped: the vehicles its 'it', 'they', 'the former'
+# or shorter names mean, a counterfactual's condition ('Suppose the bus had been parked. ... Would it hit the car?'),
+# the moment its 'then' means ('The SUV slams into the jet. How fast was the SUV going then?') and the start it says
+# nothing of ('Beginning of the video. Is the first one slower than the second?').
+CONTEXT_OPENERS = {"so", "ok", "okay", "and", "now", "but", "well", "alright", "right", "also", ",", "-", ":"}
+CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose",), ("lets", "say"): ("suppose",),
+                   ("say",): ("suppose",), ("hypothetically", ":"): ("suppose",), ("hypothetically", ","): ("suppose",),
+                   ("hypothetically",): ("suppose",), ("consider",): ("suppose",), ("think",): ("suppose",),
+                   **{(w,): (w,) for w in ("suppose", "supposing", "imagine", "assume", "assuming", "pretend", "if",
+                                           "picture", "envision", "envisage", "visualise", "visualize")}}
+WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask", "asking", "unsure", "clear", "say"}
+# openers that may state a fact as well as imagine one, and the words that say they imagine
+STATING = {"assume", "assuming", "consider", "think"}
+IMAGINING_MARKS = {"had", "were", "instead", "would", "hypothetically", "otherwise", "pretend", "version", "where",
+                   "scenario", "world", "case"}
+CHANGE_ENDS = (("instead", "of"), ("rather", "than"), ("instead",))   # '... instead of on the ground': the change alone
+# A state said without its verb after the condition's vehicle ('Picture the airliner up in the air from the start')
+STATES_SAID = {"up", "in", "at", "floating", "hovering", "flying", "parked", "static", "stationary", "still", "moving",
+               "going", "travelling", "traveling", "driving", "riding", "rolling", "speeding", "accelerating",
+               "standing", "sitting", "fast", "slow", "already", "stopped", "motionless", "airborne", "aloft"}
+PLURAL_PRONOUNS = (*((w, "two", "of", "them") for w in ("the", "all")), ("both", "of", "them"),
+                   ("the", "pair", "of", "them"), *((w, "two", *v) for w in ("the", "these", "those")
+                                                   for v in (("vehicles",), ("of", "them"), ())),
+                   ("the", "pair"), ("they",), ("both", "vehicles"), ("both",))
+# a vehicle of the context by its place in it ('the first one', 'the latter') or as the one not named ('the other');
+# 'the first' and 'the second' alone where no noun follows ('the second frame')
+PLACES_SAID = {**{("the", w, *n): 0 for w in ("first", "former") for n in (("one",), ("vehicle",), ())},
+               **{("the", w, *n): 1 for w in ("second", "latter") for n in (("one",), ("vehicle",), ())},
+               **{("the", "other", *n): None for n in (("one",), ("vehicle",), ())}}
+AFTER_PLACE = {"?", ",", ".", "at", "when", "in", "during", "as", "and", "or", "than", "once", "while", "right", "just",
+               "is", "was", "does", "did", "going", "moving"}
+# 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
+IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear", "all"}
+NAMELESS = {"some", "a", "an", "another", "one"}
+THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
+             ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
+             *((p, d, m) for p in ("at", "in", "during") for d in ("this", "that", "the") if (p, d) != ("at", "the")
+               for m in ("moment", "instant", "point", "event", "collision", "crash", "impact")),
+             *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
+             ("then",))
+# a collision said without its partner ('At the moment of impact, how fast is the bike?'), the context's
+IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash")
+IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for m in ("moment", "instant", "time")
+                         for the in ((), ("the",), ("that",), ("this",)) for n in IMPACT_NOUNS}
+                        | {(p, n) for p in ("at", "on", "upon") for n in ("impact", "contact")}
+                        | {(p, "the", n) for p in ("at", "during", "in") for n in IMPACT_NOUNS}, key=len, reverse=True)
+# a question's own time, besides the start and coming into view
+OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
+
+
+def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
+    """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis after a statement
+    closes it ('the bike seems to dodge everything... does it'), after a word or two ('well... is it') or a word
+    that cannot end one ('which...') none; a point
+    after a letter ('i.e.') or between digits closes none; a semicolon before a question closes one ('a plane is
+    hanging in the air ; which colour is ...'), except after a condition ('suppose it had ... ; would it ...')."""
+    spans, start = [], 0
+    for k, w in enumerate(words):
+        before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
+        said = [v for v in words[start:k] if v != "."]
+        if w == ";" and (after in QUESTION_OPENERS or after in ASKING) and not \
+                (IMAGINED_SAID | {"if", "had"}) & set(words[start:k]):   # not a condition's ('suppose ... ; would')
+            pass
+        elif w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
+                before == "." and (len(said) < 3 or said[-1] in STATEMENT_ENDS_NOT)   # 'crash , which... is it'
+                or len(before) == 1 and before.isalpha()
+                or before.isdigit() and after[:1].isdigit()):
+            continue
+        spans.append((start, k + 1))
+        start = k + 1
+    return spans + [(start, len(words))] * (start < len(words))
+
+
+def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
+    """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...', or as a label:
+    'Counterfactual: the pickup ...'): its place, its words and the opener it is read as; None where it does not."""
+    colon = sentence.index(":") if ":" in sentence else None
+    if colon and sentence[colon - 1] in CONDITION_LABELS and (mentions(sentence[colon:]) or "it" in sentence):
+        return colon + 1, (), ("suppose",)
+    for k in (0, colon + 1 if colon is not None else 0):
+        while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
+            k += 1
+        said = next(((p, o) for p, o in CONDITIONS_SAID.items() if tuple(sentence[k:k + len(p)]) == p), None)
+        if said and (mentions(sentence[k:]) or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["it"], ["they"])
+                     or sentence[k + len(said[0]):k + len(said[0]) + 1] in (["instead"], ["that"])):
+            return k, *said
+    return None
+
+
+def _stated(sentence: list[str]) -> bool:
+    """Whether a sentence opens on an opener that may state a fact as well as imagine ('Assume the sedan makes
+    contact with the jet near the middle.'), with nothing that imagines: a sentence of context, not a condition."""
+    said = _opener_said(sentence)
+    return bool(said) and said[1][:1] and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
+        w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence))
+        or said[1][0] in ("assume", "assuming") and START_WORDS & set(sentence) and SPEED_CLASS_WORDS & set(sentence))
+    # ('assume the cruiser starts slow')
+
+
+
+def _condition_said(sentence: list[str], after_imagining: bool = False) -> list[str] | None:
+    """A sentence of context that states a counterfactual's condition (after a label: 'Game designer: suppose ...';
+    with its vehicle as 'it'; as a statement after a sentence that imagines), as the clause 'if ...' or 'suppose ...'
+    that the parser reads before a question; None for any other sentence."""
+    opened = _opener_said(sentence)
+    if opened is None or _stated(sentence):
+        if not (after_imagining and mentions(sentence)):
+            return None
+        opened = (0, (), ("suppose",))
+    k, said, reading = opened
+    rest = sentence[k + len(said):-1]
+    while rest[:1] in (["instead"], ["that"], [","]):   # 'Assume instead that the fighter had been ...'
+        rest = rest[1:]
+    out = [*reading, *rest]
+    subject = mentions(out)[0][1] if mentions(out) else out.index("it") + 1 if "it" in out else \
+        out.index("they") + 1 if "they" in out else None
+    if subject is None:
+        return None
+    subject += out[subject:subject + 1] == ["one"]   # 'the green one'
+    if out[subject:subject + 1] and out[subject] in STATES_SAID:
+        out[subject:subject] = ["had", "been"]
+    elif out[subject:subject + 1] and (done := PARTICIPLES.get(out[subject])):
+        out[subject:subject + 1] = ["had", done]   # 'the tandem starts off slowly': 'had started off slowly'
+    elif out[subject:subject + 1] == ["never"] and out[subject + 1:subject + 2] and out[subject + 1] in UNMOVED:
+        out[subject:subject + 2] = ["had", "stayed", "still"]   # 'imagine the green one never budges'
+    zero = _at(out, (("t", "=", "0"), ("t", "0"), ("time", "zero"), ("t", "=", "zero")))   # 'from t=0'
+    if zero:
+        out[zero[0]:zero[0] + len(zero[1])] = ["the", "start"]
+    change_end = _at(out[subject:], CHANGE_ENDS)
+    return out[:subject + change_end[0]] + ["."] if change_end else out + ["."]
+
+
+# A condition's verb as the grammar says it imagined ('if it had started'); the decoder read 'suppose the bike starts
+# slowly' as a question about now
+PARTICIPLES = {"is": "been", "was": "been", "goes": "gone", "went": "gone", "comes": "come", "came": "come",
+               "begins": "begun", "began": "begun", "keeps": "kept", "kept": "kept", "drives": "driven",
+               "drove": "driven", "rides": "ridden", "rode": "ridden", "flies": "flown", "flew": "flown",
+               "sits": "sat", "sat": "sat", "stands": "stood", "stood": "stood", "runs": "run", "ran": "run",
+               "speeds": "sped", "sped": "sped", "stays": "stayed", "stayed": "stayed"}
+REGULAR_VERBS = ("start", "move", "travel", "float", "hover", "accelerate", "remain", "roll", "cruise", "crawl", "zoom",
+                 "race", "idle", "wait", "rest", "drift", "coast")
+PARTICIPLES.update({form: v + ("d" if v.endswith("e") else "ed") for v in REGULAR_VERBS
+                    for form in (v + "s", v + ("d" if v.endswith("e") else "ed"))})
+
+
+IMAGINED_BACK = tuple((p, d, n) for p in ("in", "within") for d in ("that", "this", "such", "the") for n in (
+    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate", "telling", "retelling",
+    "tale", "story", "ruling", "reality"))
+
+
+def _imagining_only(sentence: list[str]) -> bool:
+    """Whether a sentence says only that what follows is imagined ('What if?', 'Hypothetically...'): no question of
+    its own, however it ends."""
+    return set(sentence) - {"?", "!", ".", ",", ":", "-"} <= IMAGINED_SAID | CONDITION_LABELS | {"what", "so", "ok"}
+
+
+def _unnamed(sentence: list[str]) -> bool:
+    """Whether a sentence speaks of a vehicle without naming it ('something', 'a vehicle', 'one of them')."""
+    return bool(UNNAMED & set(sentence)) or any(a in NAMELESS and b in GENERIC | {"of"}
+                                                for a, b in zip(sentence, sentence[1:]))
+
+
+# 'the purple dirt bike ... the bike', 'the fighter ... the jet'
+SAID_OF = {"bicycle": "motorbike", "jet": "aeroplane"}
+
+
+def _fits(short, full) -> bool:
+    """Whether a shorter mention can be a fuller one's vehicle; a 'bike' may be a motorbike and a 'jet' any
+    aeroplane."""
+    return generalises(short, full) or generalises(tuple(SAID_OF.get(v, v) for v in short), full)
+
+
+APPOSED = {",", "-", "a", "an", "(", "i", "think", "like", "probably", "maybe", "or", "rather"}
+
+
+def _appositions(sentence: list[str]) -> list[tuple[int, int, tuple]]:
+    """The sentence's mentions, a vehicle named again in apposition as one ('a gray plane - a jet, I think -', 'this
+    purple plane, a fighter jet,'): the colour of the first, the sub-type of either."""
+    out = []
+    for a, b, ref in mentions(sentence):
+        if out and set(sentence[out[-1][1]:a]) <= APPOSED and sentence[out[-1][1]:a] and \
+                not any(v in COLOR_NAMES for v in ref) and _compatible(out[-1][2], ref):
+            first = out[-1][2]
+            kind = [v for v in ref if v in SUBTYPES] or [v for v in first if v not in COLOR_NAMES]
+            out[-1] = (out[-1][0], b, tuple([v for v in first if v in COLOR_NAMES] + kind))
+        else:
+            out.append((a, b, ref))
+    return out
+
+
+def _named(ref, asked: list[tuple]) -> bool:
+    return any(_fits(r, ref) or _fits(ref, r) for _, _, r in asked)
+
+
+def _said(ref) -> list[str]:
+    return ["the", *(w for v in ref for w in v.split("_"))]
+
+
+def _moment(context: list[list[str]], fullest: list, of=None) -> list[str] | None:
+    """The moment a question's 'then' means, from the latest sentence of context that names one: two vehicles'
+    collision (one of them `of`, where given), or a vehicle coming into view; None where none does."""
+    for sentence in reversed(context):
+        refs = list(dict.fromkeys(next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(sentence)))
+        if asks_impact(sentence) and len(refs) >= 2 and (of is None or of in refs[:2]):
+            return ["when", *_said(refs[0]), "and", *_said(refs[1]), "collide"]
+        if of is None and COMES_IN_WORDS & set(sentence) and refs:
+            return ["when", *_said(refs[0]), "comes", "into", "view"]
+    return None
+
+
+# Speech transcribed without stops ('the blue cruiser is still moving at the end will it hit anything after the video
+# is over'): the question starts where an auxiliary or a question word that opens one follows a word that may end a
+# statement, with a statement before it; said so, the context is read as above.
+# ('purple dirtbike fast from start would it collide ...' is a note's condition, not a statement: no 'would')
+RUN_ON_ASKS = {**dict.fromkeys(("is", "was", "are", "were", "does", "did", "do", "will", "can", "could", "has",
+                                "have"), {"the", "it", "they", "its", "this", "that", "there", "any", "either",
+                                          "both", "a", "an", "these", "those", *COLOR_NAMES}),
+               **dict.fromkeys(("how", "what", "which"), {"fast", "quickly", "slowly", "direction", "way", "color",
+                                                          "colour", "type", "kind", "sort", "speed", "vehicle"}),
+               "if": {"the", "it", "they", *COLOR_NAMES},
+               "where": {"is", "was", "are", "were", "does", "did", "do", "will"}}
+STATEMENT_ENDS_NOT = {"the", "a", "an", "that", "this", "which", "who", "what", "and", "or", "but", "if", "when", "to",
+                      "of", "than", "as", "with", "into", "at", "in", "on", "by", "from", "is", "was", "are", "were",
+                      "does", "did", "do", "will", "would", "not", ",", "it", "its", "where", "how", "why", "who"}
+
+
+def _run_on_question(words: list[str]) -> int | None:
+    """Where the question of a transcript without stops starts, after a statement of 3 words or more; None where
+    none does, or what comes before it is a clause of time or a question ('when the bike enters the frame how
+    fast ...' is one question)."""
+    if any(not w.isalnum() and w != "'" for w in words[:-1]):   # said with stops or commas: written, not spoken
+        return None
+    opener = next((w for w in words if w not in INTERJECTIONS | FILLERS | {"like", ","}), "")
+    if opener in TIME_OPENERS | CONDITION_OPENERS | set(RUN_ON_ASKS) | {"after", "before", "until", "why", "who"}:
+        return None
+    return next((k for k in range(3, len(words) - 2) if words[k] in RUN_ON_ASKS and words[k + 1] in RUN_ON_ASKS[
+        words[k]] and words[k - 1] not in STATEMENT_ENDS_NOT and (
+            words[k] != "if" or {"would", "will"} & set(words[k:]))), None)
+
+
+def _run_on_clause(words: list[str], k: int) -> int:
+    """Where a clause of time said just before a run-on question starts ('... smash into each other near the bottom
+    when they collide is the pickup faster'), as its part; k where none is."""
+    return next((j for j in range(k - 1, max(k - 9, 2), -1) if words[j] in ("when", "once", "whenever", "while") or
+                 words[j:j + 3] in ([at, d, m] for at in ("at", "in") for d in ("the", "that")
+                                    for m in ("moment", "instant", "time", "point")) or
+                 words[j] == "as" and words[j + 1:j + 2] in (["soon"], ["they"], ["it"], ["the"])), k)
+
+
+OPENING_SAID = {"there", "theres", "'", "s", "is", "are", "like", "so", "ok", "okay", "um", "uh", "i", "see", "saw",
+                "look", "in", "this", "video", "clip", "one", ","}
+
+
+def _opening(sentence: list[str]) -> list[str]:
+    """A sentence from the first words that say something ('theres like a tractor ...' -> 'a tractor ...')."""
+    return sentence[next((k for k, w in enumerate(sentence) if w not in OPENING_SAID), len(sentence)):]
+
+
+AMOUNTS = {"lot", "bit", "couple", "few", "bunch", "little"}
+
+
+def _thing_first(sentence: list[str], known) -> bool:
+    """Whether a sentence opens on a thing the parser does not know ('theres like a tractor near the bus'), where
+    what 'it' means is not read."""
+    said = _opening(sentence)
+    return len(said) > 2 and said[0] in DETERMINERS and said[1].isalpha() and \
+        said[1] not in known | AMOUNTS | OBJECT_WORDS | NOUNS_SAID \
+        and said[2] != "of"   # 'the top of the frame' is a place
+
+
+ECHO_CLOSERS = {"tho", "though", "really", "actually", "then", "now", "?", "!"} | CHAT
+
+
+def _echoed(question: list[str], said: list[str]) -> list[str] | None:
+    """A question that only echoes the statement before it, asked of it ('the cyan chopper and the gray wagon crash
+    after the clip is over . will they tho ?' -> 'will the cyan chopper and the gray wagon crash after the clip is
+    over ?', 'the red car is fast . is it ?'); None where it does not."""
+    be, others = COPULAS - {"s", "'"}, {"do", "does", "did", "will", "would", "can", "could"}
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if len(asked) != 2 or asked[0] not in be | others or asked[1] not in ("it", "they", "he", "she"):
+        return None
+    said = said[said.index(":") + 1:] if ":" in said else said
+    said = said[:-1] if said[-1:] and said[-1] in SENTENCE_ENDS else said
+    subject = coordinated_subject(said)
+    if subject is None or (asked[1] == "they") != (len(subject[1]) == 2) or not said[subject[0]:]:
+        return None
+    rest = said[subject[0]:]
+    if (asked[0] in be) != (rest[0] in be) or rest[0] in others:
+        return None
+    return [asked[0], *said[:subject[0]], *rest[asked[0] in be:], "?"]
+
+
+CLAIMING = {"insists", "insisted", "says", "said", "thinks", "thought", "claims", "claimed", "reckons", "swears",
+            "bets", "believes", "told", "tells", "argues", "guessed", "guesses"}
+JUDGING = {"right", "correct", "true", "wrong"}
+WONDERING = {"asked", "asks", "wonders", "wondered", "wondering", "know", "knows", "asking"}
+IDEA_ASKS = (["any", "idea"], ["any", "ideas"], ["do", "you", "know"], ["can", "you", "tell"], ["thoughts"],
+             ["any", "clue"], ["anyone"], ["help"])
+
+
+def impact_said_first(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'in the crash , was the brown suv slower than the cyan truck ?' -> 'when the brown suv and the cyan truck
+    collide , was ...': a collision said first without its pair, where the question names the two vehicles; with
+    the words read so, or the words as they are and ()."""
+    said = _at(words[:6], IMPACT_MOMENTS)
+    if not said or said[0] != 0:
+        return words, ()
+    rest = words[len(said[1]):]
+    rest = rest[(rest[:1] == [","]):]
+    pair = list(dict.fromkeys(r for _, _, r in mentions(rest)))
+    if len(pair) != 2 or not rest or rest[0] not in QUESTION_OPENERS:
+        return words, ()
+    clause = ["when", *_said(pair[0]), "and", *_said(pair[1]), "collide", ","]
+    return clause + rest, ((" ".join(said[1]), " ".join(clause[:-1])),)
+
+
+def _judged(question: list[str], said: list[str]) -> list[str] | None:
+    """Someone's claim asked whether it is right ('My granddaughter insists the yellow double-decker is faster ... .
+    Is she right?' -> 'is it true that the yellow double bus is faster ... ?'); None where it is not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if not (asked and asked[-1] in JUDGING and len(asked) <= 3):
+        return None
+    claim = next((k for k, w in enumerate(said) if w in CLAIMING), None)
+    if claim is None:
+        return None
+    clause = said[claim + 1:]
+    clause = clause[(clause[:1] == ["me"]):]
+    clause = clause[(clause[:1] == ["that"]):]
+    clause = clause[:-1] if clause[-1:] and clause[-1] in SENTENCE_ENDS else clause
+    return ["is", "it", "true", "that", *clause, "?"] if mentions(clause) else None
+
+
+def _wondered(question: list[str], said: list[str]) -> list[str] | None:
+    """A question someone wondered, then asked of the reader ('My kid asked what color the thing floating ... is. Any
+    idea?' -> 'what color the thing floating ... is ?'); None where it is not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if asked not in IDEA_ASKS:
+        return None
+    wh = next((k + 1 for k, w in enumerate(said[:-1]) if w in WONDERING and said[k + 1] in
+               ("what", "which", "how", "whether", "if")), None)
+    if wh is None:
+        return None
+    clause = said[wh:-1] if said[-1] in SENTENCE_ENDS else said[wh:]
+    return (["tell", "me"] if clause[0] in ("whether", "if") else []) + clause + ["?"]
+
+
+def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
+    """Where a statement's subject of one vehicle or two joined by 'and' ends, and the vehicles; None where it does
+    not open on one."""
+    runs = mentions(said)
+    if not runs or said[:runs[0][0]] not in ([], ["the"], ["a"], ["an"]):
+        return None
+    end, named = runs[0][1], [runs[0][2]]
+    if len(runs) > 1 and said[end:runs[1][0]] in (["and"], ["and", "the"], ["and", "a"]):
+        end, named = runs[1][1], named + [runs[1][2]]
+    return end, named
+
+
+def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question after its context, what it refers back to read from the context; with the context read as
+    what it gave. The words as they are and () where there is no context; where the question needs more than the
+    vehicles, a condition, a moment or the start (a vehicle the context describes: 'Something is speeding up. What
+    colour is it?'; a vehicle said with a word the parser does not know, of `known`: 'the pink scooter'); or where
+    the context asks a question of its own, or imagines otherwise than as a condition."""
+    spans = _sentence_spans(words)
+    asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
+    if not spans or len(spans) > 1 and not asked_at:
+        return words, ()
+    if len(spans) == 1:
+        k = _run_on_question(words)
+        if k is None:
+            return words, ()
+        j = _run_on_clause(words, k)
+        asked = words[j:k] + [","] * (j < k) + words[k:] + ["?"] * (words[-1] != "?")
+        out, read = context_as_question(words[:j] + ["."] + asked, known)
+        return (out, read) if read else (words, ())
+    context = [words[a:b] for a, b in spans[:asked_at]]
+    question = words[spans[asked_at][0]:spans[asked_at][1]]
+    conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
+                                          and not mentions(context[j - 1]))) for j, s in enumerate(context)]
+    # 'In that world, does it ...?': where no sentence imagines, the sentence before is what is imagined
+    back = _at(question[:4], IMAGINED_BACK)
+    back = back and back[0] == 0 and not any(conditions) and back[1]
+    if back:
+        question = question[len(back) + (question[len(back):len(back) + 1] == [","]):]
+        conditions[-1] = _condition_said(context[-1], True)
+    if any(c is None and not _stated(s) and not _imagining_only(s) and (
+            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s)
+                                             or "if" in s and s[s.index("if") - 1] not in WHETHER))
+           for s, c in zip(context, conditions)) or back and not conditions[-1]:
+        return words, ()
+    tail = words[spans[asked_at][1]:]
+    question = _echoed(question, context[-1]) or _judged(question, context[-1]) or _wondered(question, context[-1]) \
+        or question
+    condition = next((c for c in reversed(conditions) if c), None)
+    own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
+    # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')
+    question = ["it" if w in ("he", "she") else "its" if w == "his" else w for w in question]
+    asked = (condition if condition and not own_condition else []) + question
+    # a sentence that says the video stopped ('video stops partway through . does the sedan hit ...?'): the question
+    # asks after its end
+    stopped = next((c for c in context if (e := _video_end(c)) and (e[0] == 0 or c[e[0] - 1] == ":")), None)
+    if stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
+        asked = ["after", "the", "video", "ends", ",", *asked]
+    # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
+    # said with a word the parser does not know are not read for it
+    said = [[(a, b, r) for a, b, r in _appositions(s) if "not" not in s[max(a - 2, 0):a]] for s in context]
+    # a sentence that opens on a thing the parser does not know ('theres like a tractor near the bus'): what 'it'
+    # means is not read
+    strange = known is not None and any(_thing_first(s, known) for s in context)
+    every = [r for runs in said for _, _, r in runs]
+    fullest = [r for r in dict.fromkeys(every) if not any(o != r and _fits(r, o) for o in every)]
+    # the most recent sentence's first, past sentences that go on about it ('A white airliner floats. It drifts toward
+    # the bus. Did it ...?': the airliner)
+    latest = [r for s, runs in zip(reversed(context), reversed(said)) if _opening(s)[:1] not in (["it"], ["they"])
+              for _, _, r in runs if r in fullest] + [r for runs in reversed(said) for _, _, r in runs if r in fullest]
+    unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, b, r in runs
+              if _unknown_beside(s, a, b, r, known)}
+    used, read = set(), []
+    out = list(asked)
+    for start, end, ref in reversed(mentions(asked)):   # a shorter name: the one vehicle of the context it fits
+        fits = [r for r in fullest if r != ref and generalises(ref, r)] or \
+            [r for r in fullest if r != ref and _fits(ref, r)]
+        alike = [r for _, _, r in mentions(asked) if r != ref and generalises(ref, r)]   # the parser's to read
+        if len(fits) == 1 and not alike:
+            end += out[end:end + 1] == ["one"]
+            start -= bool(start) and out[start - 1] in LOOKS   # 'the big bus': the context says which one
+            read.append((" ".join(out[start:end]), " ".join(_said(fits[0])[1:])))
+            out[start:end] = _said(fits[0])[1:]
+            used.add(fits[0])
+    for k in reversed(range(len(out))):
+        place = next((p for p in PLACES_SAID if tuple(out[k:k + len(p)]) == p and (
+            p[-1] in ("one", "vehicle", "former", "latter", "other") or out[k + len(p):k + len(p) + 1] and
+            out[k + len(p)] in AFTER_PLACE) and not (out[k + len(p):k + len(p) + 1] and
+                                                       out[k + len(p)] in OBJECT_WORDS | GENERIC)), None)
+        if place is not None:
+            at = PLACES_SAID[place]
+            others = [r for r in fullest if not _named(r, mentions(out[:k] + out[k + len(place):]))]
+            # 'the first' and 'the second' of two; 'the other' of the one not named ('the second vehicle it hits'
+            # after one vehicle is its second partner)
+            meant = (fullest[at] if len(fullest) == 2 else None) if at is not None else \
+                others[0] if len(others) == 1 else None
+            if meant is None:
+                return words, ()
+            read.append((" ".join(place), " ".join(_said(meant))))
+            out[k:k + len(place)] = _said(meant)
+            used.add(meant)
+    named = mentions(out)
+    pronoun = next((k for k, w in enumerate(out) if w in ("it", "its") and out[k + 1:k + 2] and
+                    out[k + 1] not in IT_FORWARD), None)
+    pronoun = pronoun if pronoun is not None and not any(start < pronoun for start, _, _ in named) else None
+    plural = _at(out, PLURAL_PRONOUNS)
+    plural = plural if plural and len({r for _, _, r in named}) < 2 else None
+    # 'what colour is that?', 'that vehicle', 'is that suspect?'
+    pointed = any(a in ("that", "this") and (b in GENERIC | {"?"} or out[k - 1:k] in (["is"], ["was"])
+                                            and out[k + 2:k + 3] == ["?"] and b not in OBJECT_WORDS)
+                  for k, (a, b) in enumerate(zip(out, out[1:])))
+    asked_of = pronoun is not None and out[pronoun + 1] in SENTENCE_ENDS | {","}   # 'what colour is it?'
+    if pointed or (asked_of or plural) and any(map(_unnamed, context)) or (pronoun is not None or plural) and strange:
+        return words, ()
+    if pronoun is not None:
+        # said before the question's own mentions, it may be one of them ('Had it been floating ..., would the jet
+        # and the bike ...?')
+        meant = next((r for r in latest if not _named(r, named)), latest[0] if latest else None)
+        if meant is None:
+            return words, ()
+        read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
+        out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
+        used.add(meant)
+        named = mentions(out)
+    # 'it' hit by the vehicle the question names: the context's other one ('The cyan jet bonks the yellow airliner.
+    # Was the jet slow when it collided with it?')
+    struck = next((k for k, w in enumerate(out) if w == "it" and k and (out[k - 1] in ("with", "into", "against") or
+                                                                         out[k - 1].startswith(IMPACT_STEMS))), None)
+    others = [r for r in fullest if not _named(r, named)]
+    if struck is not None and len({r for _, _, r in named}) == 1 and len(others) == 1:
+        read.append(("it", " ".join(_said(others[0]))))
+        out[struck:struck + 1] = _said(others[0])
+        used.add(others[0])
+        named = mentions(out)
+    if plural:
+        others = [r for r in latest if not _named(r, named)]
+        pair = [r for _, _, r in named][:1] + others[:2 - len(named[:1])]
+        if len(pair) < 2 or len(fullest) > 2 and not named:
+            return words, ()
+        k, p = plural
+        read.append((" ".join(p), " ".join(_said(pair[0]) + ["and"] + _said(pair[1]))))
+        out[k:k + len(p)] = _said(pair[0]) + ["and"] + _said(pair[1])
+        used |= set(pair)
+    if used & unread:
+        return words, ()
+    if not condition and not own_condition:
+        timed = START_WORDS | COMES_IN_WORDS | OWN_TIMES
+        then = _at(out, THEN_SAID)
+        impact = _at(out, IMPACT_MOMENTS)
+        own = {next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(out)}
+        if then and not (timed & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
+            moment, (k, p) = _moment(context, fullest), then
+        elif impact and len(own) == 1:
+            moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
+        else:
+            moment, k, p = [], 0, ()
+            started = next((s for s in reversed(context) if START_WORDS & set(s)), None)
+            if started and not (timed & set(out) or asks_impact(out)):
+                out = out[:-1] + ["at", "the", "start", "?"]
+                read.append((" ".join(started), "at the start"))
+        if moment is None:
+            return words, ()
+        if moment:   # said first, as a clause of time ('when the bus and the car collide, how fast ...')
+            rest = out[:k] + out[k + len(p):]
+            rest = [w for j, w in enumerate(rest) if w != "," or j and rest[j + 1:j + 2] not in (["?"], [","])]
+            out = [*moment, ",", *rest]
+            read.append((" ".join(p), " ".join(moment)))
+    dropped = " ".join(w for s, c in zip(context, conditions) if c is not condition or own_condition for w in s)
+    return out + tail, (((dropped, "nothing, context the question refers back to"),) * bool(dropped) + tuple(read))
+
+
+# What is said after the question, where it says which vehicle was meant ('Is it moving fast at the start? The red
+# car, I mean.', 'Does the bus hit the car? Sorry, the blue car, not the red one.', '... the bus? The cyan bus, the
+# regular one.'), the time ('How fast is the jet going? At the very beginning, I mean.'), which property is asked
+# ('What kind of vehicle is moving fast? The type, not the colour.'), or nothing ('Asking for a friend.').
+AFTER_OPENERS = {"sorry", "oops", "wait", "no", "actually", "i", "mean", "meant", "correction", "rather", "er", "um",
+                 "uh", "oh", "ah", "my", "bad", "that", "is", "s", "'", "like", ",", "-", ":", "and", "so"}
+AFTER_CLOSERS = {",", ".", "!", "i", "mean", "meant", "that", "is", "please", "thanks", "thx", "though", "obviously"}
+NOT_SAID = (("not",), ("instead", "of"), ("rather", "than"))
+SUBTYPE_FIRST = {v.split("_")[0]: tuple(v.split("_")) for v in SUBTYPES if "_" in v}   # 'the regular one'
+ASKED_PROPERTY = {**dict.fromkeys(SHAPE_ASKED, "shape"), "colour": "color", "color": "color"}
+
+
+def _unknown_beside(words: list[str], a: int, b: int, ref: tuple, known) -> bool:
+    """Whether a mention words[a:b] is said with a word the parser does not know: before it ('the pink scooter'), or
+    after its colour alone ('green tractor'); never where `known` is None."""
+    def unknown(w: str) -> bool:
+        return known is not None and w.isalpha() and w not in known
+    return bool(a and unknown(words[a - 1]) and words[a - 1] in OTHER_COLOURS
+                or b < len(words) and unknown(words[b]) and set(ref) <= set(COLOR_NAMES))
+
+
+def _one_vehicle(words: list[str]) -> tuple | None:
+    """The values of the one vehicle some words name ('the cyan bus, the regular one' -> ('cyan', 'regular_bus')),
+    () where they name none, None where they name more than a colour and a type."""
+    values = [v for _, _, r in mentions(words) for v in r]
+    colours = list(dict.fromkeys(v for v in values if v in COLOR_NAMES))
+    kinds = list(dict.fromkeys(v for v in values if v not in COLOR_NAMES))
+    kinds = [k for k in kinds if not any(o != k and CATEGORY_OF[o] == k for o in kinds)]   # the bus, the regular one
+    return None if len(colours) > 1 or len(kinds) > 1 else tuple(colours + kinds)
+
+
+def _meant(ref: tuple, meant: tuple) -> tuple:
+    """A mention's values with what the words after the question say of it instead."""
+    colour = [v for v in meant if v in COLOR_NAMES] or [v for v in ref if v in COLOR_NAMES]
+    kind = [v for v in meant if v not in COLOR_NAMES] or [v for v in ref if v not in COLOR_NAMES]
+    return tuple(colour + kind)
+
+
+def _compatible(ref: tuple, meant: tuple) -> bool:
+    """Whether the vehicle a mention names can be the one said after the question (its category, or its colour
+    where the mention has none)."""
+    kinds = [CATEGORY_OF[v] for v in meant if v not in COLOR_NAMES]
+    own = [CATEGORY_OF[v] for v in ref if v not in COLOR_NAMES]
+    if kinds:
+        return not own or own == kinds
+    return not any(v in COLOR_NAMES for v in ref)
+
+
+def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question with what is said after it read into it, and what was said after it read as nothing; the words
+    as they are and () where nothing is said after it, it asks again, or what it says cannot be read so (a vehicle
+    said with a word the parser does not know, of `known`: 'The white sedan, I mean.')."""
+    spans = _sentence_spans(words)
+    asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
+    if asked_at is None or asked_at == len(spans) - 1:
+        return words, ()
+    start, end = spans[asked_at]
+    out, read = words[:end], []
+    for a, b in spans[asked_at + 1:]:
+        said = words[a:b]
+        if said[-1] == "?":
+            return words, ()
+        k, e = 0, len(said)
+        while k < e and said[k] in AFTER_OPENERS:
+            k += 1
+        while e > k and said[e - 1] in AFTER_CLOSERS:
+            e -= 1
+        core = [w for j, w in enumerate(said[k:e]) for w in (
+            SUBTYPE_FIRST[w] if w in SUBTYPE_FIRST and said[k:e][j + 1:j + 2] == ["one"] else (w,))]
+        cut = _at(core, NOT_SAID)
+        meant, other = (core[:cut[0]], core[cut[0] + len(cut[1]):]) if cut else (core, [])
+        vehicle, wrong = _one_vehicle(meant), _one_vehicle(other)
+        question = out[start:]
+        runs = mentions(question)
+        if vehicle is None or wrong is None or any(_unknown_beside(core, *run, known) for run in mentions(core)) or \
+                {"tell", "give", "name", "state", "say", "list"} & set(core):   # '? Give its colour.' asks
+            return words, ()
+        if vehicle:
+            hits = [r for r in runs if wrong and (_fits(wrong, r[2]) or _fits(r[2], wrong))] or \
+                [r for r in runs if _compatible(r[2], vehicle)]
+            it = next((j for j, w in enumerate(question) if w == "it"), None)
+            if len(hits) == 1:
+                first, last, ref = hits[0]
+                question[first:last] = _said(_meant(ref, vehicle))[1:]
+            elif not runs and it is not None:
+                question[it:it + 1] = _said(vehicle)
+            else:
+                return words, ()
+        elif ASKED_PROPERTY.keys() & set(core):
+            asked = ASKED_PROPERTY[next(w for w in core if w in ASKED_PROPERTY)]
+            if question[:2] in (["which", "vehicle"], ["which", "one"]):   # 'which vehicle is ...? the type'
+                question[:2] = ["what", "type", "of", "vehicle"] if asked == "shape" else \
+                    ["what", "color", "is", "the", "vehicle", "that"]
+        elif START_WORDS & set(core):
+            if not (START_WORDS | COMES_IN_WORDS | OWN_TIMES) & set(question) and not asks_impact(question):
+                question[-1:] = ["at", "the", "start", "?"]
+        elif set(core) & (FILM_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS):
+            return words, ()
+        out = out[:start] + question
+        read.append((" ".join(said), " ".join(question)))
+    return out, tuple(read)
+
+
+SET_VERBS = {"set", "sets", "setting", "initialise", "initialised", "initialize", "initialized", "reset", "change",
+             "changed", "changing"}
+SET_VALUES = {"static": "static", "stationary": "static", "zero": "static", "0": "static", "slow": "slow",
+              "low": "slow", "fast": "fast", "high": "fast"}
+
+
+def settings_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """An intervention said as a setting ('set the gray chopper's initial speed to slow', 'the sedan initialised in
+    the fast speed bin') as the grammar's condition: 'the gray chopper had been slow from the start'. With the words
+    read so, or the words as they are and ()."""
+    for k, w in enumerate(words):
+        if w not in SET_VERBS:
+            continue
+        a = k + 1 + (words[k + 1:k + 2] == ["the"])
+        b = a
+        while b < len(words) and words[b] in NAMING:
+            b += 1
+        c = b + 2 * (words[b:b + 2] == ["'", "s"])
+        c += words[c:c + 1] and words[c] in ("initial", "starting", "start")
+        value = None
+        if b > a and words[c:c + 1] and words[c] in SPEED_NOUNS and words[c + 1:c + 2] == ["to"]:
+            value, end = words[c + 2:c + 3], c + 3
+        elif k and words[k - 1] in NAMING and words[k + 1:k + 2] in (["to"], ["in"], ["into"], ["as"]):
+            # 'the brown sedan initialised in the fast speed bin'
+            b = k - (words[k - 1:k] == ["was"])
+            a = b
+            while a and words[a - 1] in NAMING:
+                a -= 1
+            k = a - (a and words[a - 1] == "the")
+            value = words[b + 2 + (words[b + 2:b + 3] == ["the"]):][:1]
+            end = b + 3 + (words[b + 2:b + 3] == ["the"])
+        elif b > a and c == b and words[b:b + 1] == ["to"]:   # 'set the sedan to slow'
+            value, end = words[b + 1:b + 2], b + 2
+        if not value or value[0] not in SET_VALUES:
+            continue
+        while words[end:end + 1] and words[end] in SPEED_NOUNS | {"bin", "bucket", "class", "category", "speeds"}:
+            end += 1
+        said = ["the", *words[a:b], "had", "been", SET_VALUES[value[0]], "from", "the", "start"]
+        end += 3 * (words[end:end + 3] == said[-3:])
+        k -= bool(k) and words[k - 1] in ("we", "you", "i", "they")   # 'if we set ...'
+        return words[:k] + said + words[end:], ((" ".join(words[k:end]), " ".join(said)),)
+    return words, ()
+
+
+def scenario_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A tester's scenario ('given the clip , when it starts , then how fast is the red sedan ?') as the question it
+    asks ('at the start , how fast is the red sedan ?'): the clip given says nothing, 'when it starts' (or ends) is
+    the video's time, and 'then' opens the question. With the words read so, or the words as they are and ()."""
+    if words[:2] != ["given", "the"] or words[2:3] and words[2] not in FILM_WORDS or words[3:4] != [","]:
+        return words, ()
+    out, read = words[4:], [(" ".join(words[:4]), "nothing, a scenario")]
+    when = next((m for m in (2, 3) if out[:1] == ["when"] and out[m:m + 1] and out[m] in START_WORDS | END_SAID
+                 and out[1:m] in (["it"], ["the", words[2]]) and out[m + 1:m + 2] == [","]), None)
+    if when:
+        time = ["at", "the", "start" if out[when] in START_WORDS else "end"]
+        read.append((" ".join(out[:when + 1]), " ".join(time)))
+        out = time + out[when + 1:]
+    then = next((k for k in range(1, len(out)) if out[k - 1] == "," and out[k] == "then"), None)
+    if then is not None:
+        read.append(("then", "nothing"))
+        out = out[:then] + out[then + 1:]
+    return out, tuple(read)
+
+
+# A change told as another version of the story ('In another telling, the airliner hovers from the start. Would
+# ...?', 'Spin a tale in which the bike begins fast.', 'Under an alternative ruling where ...'): the grammar's
+# 'imagine' and 'in a world where' (they were read as what happens in the video)
+OTHERWISE = {"another", "different", "alternative", "alternate", "other"}
+TOLD = {"version", "telling", "retelling", "tale", "story", "ruling", "timeline", "universe", "reality", "world",
+        "account", "cut", "edit"}
+TOLD_OF = (("of", "this", "tale"), ("of", "the", "tale"), ("of", "this", "story"), ("of", "the", "story"),
+           ("of", "events"), *(("of", d, f) for d in ("the", "this") for f in ("video", "clip", "footage", "replay")))
+TELLING = {("spin", "a", "tale"), ("tell", "a", "tale"), ("tell", "a", "story"), ("write", "a", "story"),
+           ("picture", "a", "story"), ("imagine", "a", "story"), ("imagine", "a", "version"),
+           ("imagine", "a", "tale"), *((r, *the, o) for r in ("rewrite", "retell", "redo", "rerun", "replay")
+                                       for the in ((), ("the",), ("this",))
+                                       for o in ("opening", "story", "start", "beginning", "tale", "clip", "video",
+                                                 "scene", "footage"))}
+WHICH = (("in", "which"), ("where",), ("so", "that"), ("such", "that"))
+
+
+def told_otherwise_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'in another telling , the bus is parked from the start . would ...' -> 'imagine the bus is parked ...';
+    'under an alternative ruling where ...' -> 'in a world where ...'; 'spin a tale in which ...' -> 'imagine ...'.
+    With the words read so, or the words as they are and ()."""
+    j = next((len(t) for t in TELLING if tuple(words[:len(t)]) == t), 0)
+    if j:
+        which = next((w for w in WHICH if tuple(words[j:j + len(w)]) == w), None)
+        if which:
+            end = j + len(which)
+            return ["imagine", *words[end:]], ((" ".join(words[:end]), "imagine"),)
+        return words, ()
+    if words[:1] not in (["in"], ["under"]):
+        return words, ()
+    k = 1 + (words[1:2] in (["a"], ["an"], ["some"]))
+    other = words[k:k + 1] and words[k] in OTHERWISE
+    k += bool(other)
+    if not other or not words[k:k + 1] or words[k] not in TOLD:
+        return words, ()
+    k += 1 + next((len(o) for o in TOLD_OF if tuple(words[k + 1:k + 1 + len(o)]) == o), 0)
+    which = next((w for w in WHICH if tuple(words[k:k + len(w)]) == w), None)
+    if which:
+        end = k + len(which)
+        return ["in", "a", "world", "where", *words[end:]], ((" ".join(words[:end]), "in a world where"),)
+    if words[k:k + 1] == [","]:
+        return ["imagine", *words[k + 1:]], ((" ".join(words[:k + 1]), "imagine"),)
+    return words, ()

@@ -1,0 +1,362 @@
+"""Surface readings: how a question's words are written or said, read as the words meant. They are the first of
+`QuestionParser._words`' rewrites (each `f(words) -> (words, read_as)`), before any other reads the words: a word
+autocorrect changed, put right after the question ('... ? *SUV': `corrections_starred`), a verb's Early Modern '-eth'
+(`archaic_as_said`), a question quoted by someone who relays it (`quoted_question`), a worksheet's print around its
+question (`worksheet_as_said`), a note's shorthand ('? y/n', 'w/', 'static/slow/fast': `shorthand_as_said`), a speech
+recogniser's words that sound like the ones said ('faster then the car': `homophones_as_said`), a colour said in a
+clause after its vehicle (`colour_clause_as_named`) and a report's glosses in brackets (`glosses_read`)."""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from difflib import SequenceMatcher
+
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
+from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
+                                     NAMING, QUERY_NOUNS, QUESTION_OPENERS, SPEED_CHOICES, asks_impact)
+
+# A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
+# false: the red sedan is moving fast.', 'Circle one: static / slow / fast', 'it is moving ______ (static/slow/fast).')
+MARKS = {"mark", "marks", "pt", "pts", "point", "points"}
+BOXES = {"☐", "□", "◯", "○", "[", "]"}
+ANSWER_WORDS = {"yes", "no", "true", "false", "none", "of", "these", "the", "above", "static", "slow", "fast", "/", ",",
+                "or", "."} | set(COLOR_NAMES) | OBJECT_WORDS | {w for name in EVERYDAY_NAMES for w in name.split()}
+INSTRUCTIONS = (("answer", "in", "one", "word"), ("answer", "yes", "or", "no"), ("answer", "yes", "/", "no"),
+                ("explain", "nothing", ",", "just", "answer"), ("just", "answer"), ("circle", "one"), ("circle",),
+                ("tick", "one"), ("tick", "the", "correct", "box"), ("tick",), ("choose", "one"), ("select", "one"),
+                ("yes", "or", "no"), ("yes", "/", "no"), ("true", "/", "false"))
+
+
+def _numbered(words: list[str]) -> int:
+    """How many words a worksheet's number takes before its question ('9 .', 'q4 )', '( c )', 'q25 .'); 0 where none."""
+    first = words[0] if words else ""
+    if (first.isdigit() or re.fullmatch(r"q\d+", first)) and words[1:2] and words[1] in (".", ")", ":"):
+        return 2
+    if re.fullmatch(r"q\d+", first):
+        return 1
+    if first == "(" and words[2:3] == [")"] and re.fullmatch(r"[a-z]|[ivx]+|\d+", words[1]):
+        return 3
+    return 0
+
+
+def _options_at(words: list[str], k: int) -> bool:
+    """Whether a list of lettered options starts at words[k] ('( a ) static ( b ) ...', 'a ) red b ) gray ...')."""
+    return words[k:k + 3] == ["(", "a", ")"] or words[k:k + 2] == ["a", ")"]
+
+
+def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question a worksheet prints, without its number, marks, options and instructions; a statement to judge
+    true or false asked whether it is true; a blank to fill from choices asked as the choices. With what was read
+    so, or the words as they are and ()."""
+    out, read = list(words), []
+    n = _numbered(out)
+    if n:
+        read.append((" ".join(out[:n]), "nothing, a number"))
+        out = out[n:]
+    # an instruction said first ('Answer yes or no: is the jet ...?', 'Yes or no - does ...')
+    lead = next((i for i in INSTRUCTIONS if i[0] in ("answer", "explain", "just", "yes") and tuple(out[:len(i)]) == i
+                 and out[len(i):len(i) + 1] in ([":"], [","], ["."], ["-"]) and out[len(i) + 1:]), None)
+    if lead:
+        read.append((" ".join(out[:len(lead) + 1]), "nothing, an instruction"))
+        out = out[len(lead) + 1:]
+    while len(out) > 3 and (out[-1] in ("]", ")") and out[-2] in MARKS and out[-3].isdigit() and out[-4] in ("[", "(")):
+        read.append((" ".join(out[-4:]), "nothing, the marks"))
+        out = out[:-4]
+    asked = next((k for k, w in enumerate(out) if w == "?"), None)
+    if asked is not None:
+        rest = out[asked + 1:]
+        options = next((k for k in range(len(rest)) if _options_at(rest, k)), None)
+        if options is not None and set(rest[options:]) <= ANSWER_WORDS | {"(", ")", "a", "b", "c", "d", "e"}:
+            read.append((" ".join(rest[options:]), "nothing, the options"))
+            rest = rest[:options]
+        while rest:
+            said = next((i for i in INSTRUCTIONS if tuple(rest[:len(i)]) == i), None)
+            if said is None:
+                break
+            end = len(said)
+            while end < len(rest) and rest[end] in ANSWER_WORDS | BOXES | {":", "!"}:
+                end += 1
+            read.append((" ".join(rest[:end]), "nothing, an instruction"))
+            rest = rest[end:]
+        out = out[:asked + 1] + rest
+    # a statement to judge ('true or false : the bus is fast .', 'circle one : ... true / false', '☐ true ☐ false')
+    judged = out[:4] == ["true", "or", "false", ":"]
+    label = next((i for i in INSTRUCTIONS[5:10] if tuple(out[:len(i)]) == i
+                  and out[len(i):len(i) + 1] in ([":"], ["."])), None)
+    tail = [w for w in out[-5:] if w not in BOXES]
+    if judged or label and tail[-3:] in (["true", "/", "false"], ["true", "false"]) or \
+            out[-1:] != ["?"] and [w for w in out if w not in BOXES][-2:] == ["true", "false"]:
+        body = out[4:] if judged else out[len(label) + 1:] if label else out
+        body = [w for w in body if w not in BOXES]
+        while body and body[-1] in ("true", "false", "/", ".", "?"):
+            body = body[:-1]
+        read.append(("true or false", "is it true that"))
+        out = ["is", "it", "true", "that", *body, "?"]
+    if out[:4] == ["fill", "in", "the", "blank"]:
+        read.append(("fill in the blank", "nothing, an instruction"))
+        out = out[4 + (out[4:5] == [":"]):]
+    blank = next((k for k in range(len(out) - 1) if out[k] == out[k + 1] == "_"), None)
+    if blank is not None:
+        end = blank
+        while end < len(out) and out[end] == "_":
+            end += 1
+        close = out.index(")", end) if out[end:end + 1] == ["("] and ")" in out[end:] else None
+        choices = [w for w in out[end + 1:close] if w not in ("/", ",", "or")] if close else []
+        if len(choices) >= 2:
+            said = [w for c in choices[:-1] for w in (c, ",")][:-1] + ["or", choices[-1]]
+            read.append((" ".join(out[blank:close + 1]), " ".join(said)))
+            out = out[:blank] + said + ["?" if w == "." else w for w in out[close + 1:]]
+    return out, tuple(read)
+
+
+# A speech recogniser's words that sound like the ones said ('is the bus faster then the car', 'sitting their',
+# 'weather it hits'), where the words around them say which was said
+def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'faster then the' -> 'faster than the', 'sitting their not' -> 'sitting there not', 'weather the bus' ->
+    'whether the bus'; with the words read so."""
+    out, read = list(words), []
+    for k, w in enumerate(out):
+        after = out[k + 1] if k + 1 < len(out) else ""
+        said = ("than" if w == "then" and k and out[k - 1] in COMPARISONS | {"more", "less"} else
+                "there" if w == "their" and after not in NAMING | GENERIC | QUERY_NOUNS and not after.endswith("s")
+                else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"} else None)
+        if said:
+            read.append((w, said))
+            out[k] = said
+    return out, tuple(read)
+
+
+def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the bicycle , which is brown ,' -> 'the brown bicycle'; 'the biplane that is blue' -> 'the blue biplane': a
+    colour said in a clause after its vehicle (the decoder read the vehicle without it). With the words read so,
+    or the words as they are and ()."""
+    out, read, k = list(words), [], 0
+    while k < len(out):
+        j = k
+        while j < len(out) and out[j] in NAMING and out[j] not in COLOR_NAMES:
+            j += 1
+        clause = j + (out[j:j + 1] == [","])
+        if j > k and (k == 0 or out[k - 1] not in COLOR_NAMES) and out[clause:clause + 1] and \
+                out[clause] in ("which", "that", "who") and out[clause + 1:clause + 2] in (["is"], ["was"]) and \
+                out[clause + 2:clause + 3] and out[clause + 2] in COLOR_NAMES:
+            end = clause + 3 + (out[clause + 3:clause + 4] == [","] and out[j:j + 1] == [","])
+            read.append((" ".join(out[k:end]), " ".join([out[clause + 2], *out[k:j]])))
+            out[k:end] = [out[clause + 2], *out[k:j]]
+            k += j - k + 1
+        else:
+            k = max(j, k + 1)
+    return (out, tuple(read)) if read else (words, ())
+
+
+GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
+CHOICE_LABELS = {"levels", "options", "choices", "classes", "categories", "answers"}
+CHOICES_SAID = {"static", "stationary", "parked", "still", "moving", "slow", "slowly", "fast", "quick", "quickly",
+                "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down"}
+# the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
+SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
+            "?"}
+
+
+def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A report's brackets: a gloss ('accelerating (i.e. under engine power)') says again what the words before it
+    say and is dropped, where it names no vehicle; a vehicle named in brackets after a description of it ('the
+    insured vehicle (the red sedan)', 'the third-party vehicle (blue pickup)') is that vehicle, the description
+    dropped. With the words read so, or the words as they are and ()."""
+    out, read, a = list(words), [], 0
+    while "(" in out[a:]:
+        a = out.index("(", a)
+        b = out.index(")", a) if ")" in out[a:] else None
+        if b is None:
+            break
+        inside = out[a + 1:b]
+        name = inside[inside[:1] in (["the"], ["a"], ["an"]):]
+        if any(inside[:len(g)] == g for g in GLOSS_OPENERS) and not NAMING.intersection(inside):
+            read.append((" ".join(out[a:b + 1]), "nothing, a gloss"))
+            out[a:b + 1] = []
+            continue
+        d = next((d for d in range(a - 1, max(a - 6, -1), -1) if out[d] in DETERMINERS), None)
+        described = out[d + 1:a] if d is not None else []
+        levels = inside[2:] if inside[1:2] == [":"] and inside[0] in CHOICE_LABELS else None   # '(levels: ...)'
+        if ("or" in inside or levels) and set(levels or inside) <= CHOICES_SAID:   # '(static, slow or fast)'
+            read.append((" ".join(out[a:b + 1]), "nothing, the choices offered"))
+            out[a:b + 1] = []
+            continue
+        if SPEAKING & set(inside):   # a speaker's aside: '(the motorbike, i should say)', '(is that the word?)'
+            said = name[:name.index(",")] if "," in name else name
+            named = said and all(w in NAMING for w in said) and any(w in OBJECT_WORDS for w in said) and described
+            colours = [w for w in described if w in COLOR_NAMES]
+            read.append((" ".join(out[d if named else a:b + 1]), " ".join(["the", *colours, *said]) if named
+                         else "nothing, an aside"))
+            out[d if named else a:b + 1] = ["the", *colours, *said] if named else []
+            continue
+        if name and all(w in NAMING for w in name) and any(w in OBJECT_WORDS for w in name) and described and \
+                not set(described) & (OBJECT_WORDS | {"grey", "and", "or", ","}):
+            read.append((" ".join(out[d:b + 1]), " ".join(["the", *name])))
+            out[d:b + 1] = ["the", *name]
+            a = d + 1
+            continue
+        a = b + 1
+    return (out, tuple(read)) if read else (words, ())
+
+
+# A note's shorthand: an answer's form after the question ('? y/n', '(yes/no)'), 'w/' for 'with', '+' or 'vs' for 'and',
+# choices split by slashes ('(static/slow/fast)'), as the grammar says them; read so, the decoder sees no unknown '/'.
+ANSWER_FORMS = (["y", "/", "n"], ["yes", "/", "no"], ["true", "/", "false"])   # ', yes or no?': `tail_as_question`
+
+
+def _decoration(word: str) -> bool:
+    """An emoji or a mark that only decorates ('"red sedan"', '*slow*', '#crash', '🚗')."""
+    return word in ('"', "*", "#", "~", "`", "_") or len(word) == 1 and unicodedata.category(word) in (
+        "So", "Sk", "Mn", "Me", "Cf", "Co", "Cs")
+
+
+def _complete(words: list[str], k: int) -> bool:
+    """Whether a vehicle's name that begins with the colour at k goes on with a sub-type or category."""
+    return words[k + 1:k + 2] != [] and words[k + 1] in NAMING and words[k + 1] not in COLOR_NAMES
+
+
+def quoted_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question quoted by someone who relays it ('The quiz card reads "Is the blue motorbike standing still ...?" -
+    help!', 'My teacher wrote this on the board: "..." What should I put down?'): the quoted question, where the
+    words around it name no vehicle. With the words around it read as nothing, or the words as they are and ()."""
+    marks = [k for k, w in enumerate(words) if w == '"']
+    if len(marks) != 2:
+        return words, ()
+    a, b = marks
+    quoted, around = words[a + 1:b], words[:a] + words[b + 1:]
+    if not quoted or not around or NAMING & set(around) or not (quoted[-1] == "?" or quoted[0] in QUESTION_OPENERS):
+        return words, ()
+    return quoted + ["?"] * (quoted[-1] not in ("?", ".")), ((" ".join(around), "nothing, the question relayed"),)
+
+
+def archaic_as_said(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A verb's Early Modern '-eth' as its '-s' ('floateth' -> 'floats', 'goeth' -> 'goes', 'stoppeth' -> 'stops'),
+    where the parser reads that form; with the words read so."""
+    out, read = list(words), []
+    for k, w in enumerate(out):
+        if w in readable or len(w) < 5 or not w.endswith("eth"):
+            continue
+        said = next((f for f in (w[:-3] + "s", w[:-3] + "es", w[:-4] + "s") if f in readable), None)
+        if said:
+            read.append((w, said))
+            out[k] = said
+    return out, tuple(read)
+
+
+# A word autocorrect changed, put right after the question as a phone's user does ('Is the green sub static? *SUV',
+# '... bust ...? bus*', '... (cyan)', '... meant collided') or in brackets after it ('the red bruiser (cruiser)'): the
+# word said wrong is the one the correction is most like; only a word the parser reads corrects, and only one it is
+# like (half its letters at least).
+STARRED = (["*", None], [None, "*"], ["(", None, ")"], ["meant", None], ["i", "meant", None], ["*", "*", None])
+
+
+def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the green sub statistic when the video starts ? * static' -> 'is the green sub static when the video
+    starts ?'; 'the red bruiser ( cruiser )' -> 'the red cruiser'. With the words read so, or the words as they are
+    and ()."""
+    end = len(words)
+    while end and words[end - 1] in ("!", "."):
+        end -= 1
+    for form in STARRED:
+        tail = words[end - len(form):end] if end >= len(form) else []
+        if len(tail) != len(form) or any(f is not None and f != w for f, w in zip(form, tail)):
+            continue
+        said = tail[form.index(None)]
+        before = words[:end - len(form)]
+        if said not in readable or not said.isalpha() or said in before or not before:
+            continue
+        like = lambda w: SequenceMatcher(None, w, said).ratio()
+        unread = [(like(w), k) for k, w in enumerate(before) if w.isalpha() and w not in readable and like(w) >= 0.5]
+        candidates = unread or [(like(w), k) for k, w in enumerate(before) if w.isalpha() and len(w) > 2
+                                and w not in DETERMINERS and like(w) >= 0.6]
+        if not candidates:
+            continue
+        _, k = max(candidates)
+        out = [*before[:k], said, *before[k + 1:]]
+        return out, ((f"{before[k]} ... {' '.join(tail)}", said),)
+    # in brackets after the word ('the grey sedate (sedan!!)')
+    for k in range(1, len(words) - 2):
+        if words[k] == "(" and words[k + 2:k + 3] in ([")"], ["!"]) and words[k + 1] in readable and \
+                words[k - 1] not in readable and words[k - 1].isalpha() and \
+                SequenceMatcher(None, words[k - 1], words[k + 1]).ratio() >= 0.5:
+            close = words.index(")", k) if ")" in words[k:k + 5] else None
+            if close is None or any(w != "!" for w in words[k + 2:close]):
+                continue
+            return [*words[:k - 1], words[k + 1], *words[close + 1:]], \
+                ((" ".join(words[k - 1:close + 1]), words[k + 1]),)
+    return words, ()
+
+
+def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
+    (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With
+    the words read so, or the words as they are and ()."""
+    # a chat's decorations: emoji, quotes and asterisks around words, a hashtag's '#', '!' beside '?', '??'
+    out = [w for w in words if not _decoration(w)]
+    out = [w for k, w in enumerate(out) if not (w in ("!", "?") and "?" in out[k + 1:k + 2] + out[k - 1:k] and
+                                                 (w == "!" or out[k + 1:k + 2] == ["?"]))]
+    read = [(" ".join(w for w in words if _decoration(w) or w == "!") or "?", "nothing, a decoration")] \
+        if len(out) < len(words) else []
+    end = len(out) - (out[-1:] in (["?"], ["."]))
+    while end > 0 and out[end - 1] in CLOSING_INTERJECTIONS and any(   # 'yes/no pls'
+            out[end - 1 - len(form):end - 1] == form for form in ANSWER_FORMS):
+        end -= 1
+    for form in ANSWER_FORMS:
+        for bracketed in (["(", *form, ")"], form):
+            if out[end - len(bracketed):end] == bracketed:
+                start = end - len(bracketed) - (out[end - len(bracketed) - 1:end - len(bracketed)] in ([","], [":"]))
+                read.append((" ".join(out[start:end]), "nothing, an answer's form"))
+                out = out[:start] + out[end:]
+                end = start
+    k = 0
+    while k < len(out):
+        if out[k:k + 2] == ["w", "/"]:
+            out[k:k + 2] = ["with"]
+            read.append(("w /", "with"))
+        elif (out[k] in ("+", "&", "vs", "versus") or out[k] == "x" and out[k - 1:k] and out[k - 1] in NAMING and
+              out[k + 1:k + 2] and out[k + 1] in NAMING) and 0 < k < len(out) - 1 and out[k - 1].isalnum() and \
+                (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):   # 'bus x purple car'
+            read.append((out[k], "and"))
+            out[k:k + 1 + (out[k + 1] == ".")] = ["and"]
+        elif out[k] == "/" and 0 < k < len(out) - 1 and {out[k - 1], out[k + 1]} <= SLASHED:
+            last = not (out[k + 2:k + 3] == ["/"])
+            out[k] = "or" if last else ","
+            read.append(("/", out[k]))
+        k += 1
+    # a search box's two vehicles side by side ('blue bus green truck collide'), where a collision is asked
+    if asks_impact(out):
+        k = 1
+        while k < len(out) - 1:
+            if out[k] in COLOR_NAMES and _complete(out, k) and out[k - 1] in NAMING and \
+                    out[k - 1] not in COLOR_NAMES:
+                out.insert(k, "and")
+                read.append((f"{out[k - 1]} {out[k + 1]}", f"{out[k - 1]} and {out[k + 1]}"))
+            k += 1
+    # choices in brackets inside the question ('identify the speed (static, slow, or fast) of the suv when ...')
+    a = out.index("(") if "(" in out else None
+    b = out.index(")", a) if a is not None and ")" in out[a:] else None
+    if b is not None and out[b + 1:] not in ([], ["?"], ["."]) and set(out[a + 1:b]) <= SLASHED | {",", "or", "/"} \
+            and len(set(out[a + 1:b]) & SLASHED) >= 2:
+        read.append((" ".join(out[a:b + 1]), "nothing, the choices"))
+        out = out[:a] + out[b + 1:]
+    if "(" in out and ")" in out[out.index("("):] and any(w == "/" for w, _ in read):
+        a = out.index("(")
+        b = out.index(")", a)
+        if out[b + 1:] in ([], ["?"], ["."]):
+            out = [*out[:a], ":", *out[a + 1:b], *out[b + 1:]]
+    # choices said as a sentence of their own ('How fast is the bus at the start. Stationary, slow or fast?'): the
+    # question's own (the last sentence was read as the question)
+    stop = max((k for k, w in enumerate(out[:-1]) if w in (".", "?")), default=None)
+    if stop and out[-1:] == ["?"] and "or" in out[stop + 1:] and \
+            set(out[stop + 1:-1]) <= SLASHED | {",", "or"} and len(set(out[stop + 1:-1]) & SLASHED) >= 2:
+        read.append((out[stop], ":"))
+        out = [*out[:stop], ":", *out[stop + 1:]]
+    if not read:
+        return words, ()
+    return out, tuple(dict.fromkeys(read))
+
+
+# the words a note offers split by slashes ('static/slow/fast', 'left/right')
+SLASHED = {w for choices in (SPEED_CHOICES, DIRECTION_CHOICES) for said in choices for w in said}

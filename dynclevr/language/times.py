@@ -1,0 +1,202 @@
+"""Times said another way, read as the grammar says them: the video's end, its going on past the end or its cut ('once
+the video is over', 'had the footage continued', 'past the cutoff') as 'after the video ends' in a question about
+collisions (`video_end_as_said`; its clause, `_video_end`, is found for the context, the asides and the refusals too),
+the start by its frame or its clock ('at t = 0') and the first frame that shows an object (`first_frames_as_said`), and
+a time said between commas after the subject put last (`inserted_time_last`). Each is one of `QuestionParser._words`'
+rewrites, `f(words) -> (words, read_as)`."""
+
+from __future__ import annotations
+
+from dynclevr.language.references import OBJECT_WORDS
+from dynclevr.language.words import NAMING, QUESTION_OPENERS, START_ADJECTIVES, STOPPED_SAID, asks_impact, _at
+
+# A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
+# the red car , when it hits the bus , fast ?'): the grammar says it last
+INSERTED_TIMES = {"at", "in", "during", "ever", "right", "initially", "once", "when", "while", "after", "before",
+                  "later", "from"}
+
+
+def inserted_time_last(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question with a time between commas after its first vehicle put last ('does the red biplane , at any
+    point , collide with the green sedan ?' -> '... collide with the green sedan at any point ?'), where the sentence
+    goes on after it. With the words read so, or the words as they are and ()."""
+    for k in range(1, len(words) - 2):
+        if words[k] != "," or words[k - 1] not in OBJECT_WORDS or words[k + 1] not in INSERTED_TIMES:
+            continue
+        close = next((j for j in range(k + 2, min(k + 10, len(words))) if words[j] in (",", "?", ".")), None)
+        if close is None or words[close] != "," or close + 1 == len(words) or words[close + 1] in QUESTION_OPENERS:
+            return words, ()
+        end = len(words) - (words[-1] in ("?", "."))
+        moved = words[:k] + words[close + 1:end] + words[k + 1:close] + words[end:]
+        return moved, ((" ".join(words[k:close + 1]), f"'{' '.join(words[k + 1:close])}' said last"),)
+    return words, ()
+
+
+# A time said by its frame or its clock ('at t = 0', 'at frame 0'), and the first frame that shows an object ('in
+# the first frame in which it is visible'): the grammar's start and its coming into view.
+TIME_ZERO = (["t", "=", "0"], ["t", "0"], ["t0"], ["time", "0"], ["time", "zero"], ["frame", "0"], ["frame", "zero"],
+             ["frame", "1"], ["frame", "one"])
+SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becomes", "visible"], ["is", "in", "view"],
+        ["comes", "into", "view"], ["is", "in", "sight"])
+
+
+def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'at t = 0' -> 'at the start'; 'in the first frame in which it is visible' -> 'when it first appears';
+    'during the opening moments' -> 'in the opening moments' (a time 'during' the video is refused as another than
+    the start). With the words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        if words[k] == "during" and words[k + 1:k + 2] == ["the"] and words[k + 2:k + 3] and \
+                words[k + 2] in START_ADJECTIVES | {"early", "earliest", "very"}:
+            out.append("in")
+            read.append(("during", "in"))
+            k += 1
+            continue
+        zero = next((z for z in TIME_ZERO if words[k:k + len(z)] == z), None)
+        if zero and out[-1:] in (["at"], ["from"], ["in"]):
+            out += ["the", "start"]
+            read.append((" ".join(zero).replace(" = ", "="), "the start"))
+            k += len(zero)
+            continue
+        if words[k:k + 4] in (["in", "the", "first", "frame"], ["at", "the", "first", "frame"]):
+            j = k + 4
+            j += next((len(r) for r in (["in", "which"], ["where"], ["that"], ["when"]) if words[j:j + len(r)] == r), 0)
+            seen = next((v for v in SEEN if words[j:j + 1] == ["it"] and words[j + 1:j + 1 + len(v)] == v), None)
+            if seen:
+                end = j + 1 + len(seen)
+                out += ["when", "it", "first", "appears"]
+                read.append((" ".join(words[k:end]), "when it first appears"))
+                k = end
+                continue
+        out.append(words[k])
+        k += 1
+    return out, tuple(read)
+
+
+# The video's end said by another time word ('once the video is over', 'when the clip is done'): the grammar's
+# 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
+END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
+END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
+               ["given", "that"], ["given"], ["now", "that"], ["with"],
+               *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")))
+FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
+              "replay", "feed", "tape", "playback", "livestream"}
+PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
+            ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
+            ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
+            ["part", "of", "the", "way", "through"], ["part", "of", "the", "way"],
+            ["early"], ["in", "the", "middle"])
+END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
+                  ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
+                  ["has", "stopped"], ["comes", "to", "an", "end"],
+                  # as learners say them ('when video is finish')
+                  ["is", "finish"], ["is", "end"], ["is", "ended"], ["end"], ["finish"], ["ended"], ["finished"],
+                  ["over"], ["wraps", "up"], ["winds", "down"],
+                  *(["'", "s", e] for e in ("over", "done", "finished", "ended", "through")))
+
+
+# the video imagined going on past its end ('had the footage continued past the point where it is cut off, ...'):
+# the time after it, as 'if the video went on' reads (the video otherwise, 'if it were longer', stays refused)
+CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "rolling"], ["gone", "on"], ["went", "on"],
+             ["run", "on"], ["ran", "on"], ["carried", "on"], ["played", "on"], ["not", "stopped"], ["not", "ended"],
+             ["not", "been", "cut", "off"], ["not", "been", "cut"], ["not", "cut", "off"], ["to", "continue"],
+             ["to", "keep", "going"], ["to", "go", "on"], ["to", "run", "on"], ["to", "carry", "on"],
+             *([let, *to] for let in ("allowed", "left") for to in (["to", "carry", "on"], ["to", "continue"],
+                                                                   ["to", "run", "on"], ["to", "play", "on"],
+                                                                   ["to", "run"], ["to", "go", "on"])))
+CONTINUING = (["had"], ["if"], ["were"])
+
+
+def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
+    """Where a clause imagining the video going on lies ('had the video continued, ...'; 'had it played on' once the
+    video is named, here or in the words `before`), to its comma."""
+    for i in range(len(words)):
+        if [words[i]] not in CONTINUING:
+            continue
+        j = i + 1 + (words[i + 1:i + 2] in (["the"], ["this"]))
+        # ('had it played on': only a video plays)
+        named = words[j:j + 1] == ["it"] and (FILM_WORDS.intersection([*before, *words[:i]])
+                                              or words[j + 1:j + 3] == ["played", "on"])
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
+            continue
+        j += 1 + (words[i] == "if" and words[j + 1:j + 2] == ["had"])
+        were = words[i] == "were" or words[i] == "if" and words[j:j + 1] == ["were"]   # 'if the film were allowed to'
+        j += words[i] == "if" and words[j:j + 1] == ["were"]
+        going = next((c for c in CONTINUED if words[j:j + len(c)] == c), None)
+        if going and were == (going[0] in ("to", "allowed", "left")):
+            k = j + len(going)
+            comma = words.index(",", k) if "," in words[k:k + 12] else k
+            return i, comma
+    return None
+
+
+# where a simulation's or an engineer's video stops ('in the predicted rollout after the cutoff', 'past the stop point')
+CUT_POINTS = tuple([*roll, p, "the", *c] for roll in ((), ("in", "the", "predicted", "rollout"),
+                                                     ("in", "the", "rollout"), ("predicted", "rollout"))
+                   for p in ("after", "past", "beyond") for c in (("cutoff",), ("cut", "-", "off"), ("cut", "off"),
+                                                                   ("stop", "point"), ("stopping", "point"),
+                                                                   ("cut", "point"), ("cut",), ("truncation",),
+                                                                   ("truncation", "point"), ("cutoff", "point"),
+                                                                   ("cut", "-", "off", "point"), ("freeze",)))
+
+
+def _at_cut(words: list[str]) -> tuple[int, int] | None:
+    at = _at(words, sorted(map(tuple, CUT_POINTS), key=len, reverse=True))
+    return (at[0], at[0] + len(at[1])) if at else None
+
+
+CLAUSE_SEPARATORS = {",", "-", ":", ";", "."}
+FILM_KINDS = {"broadcast", "camera", "live", "video", "traffic", "tv", "news", "security", "dashcam"}
+
+
+def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
+    """Where a clause of the video's end lies ('once the video is over'; a sentence of its own said first, 'stream
+    froze halfway , ...'; 'after it cuts' once the video is named, here or in the words `before`), as (first,
+    past-last) word."""
+    for i in range(len(words)):
+        opener = next((o for o in END_OPENERS if words[i:i + len(o)] == o), None)
+        alone = not opener and (i == 0 or words[i - 1] in CLAUSE_SEPARATORS)
+        if not opener and not alone:
+            continue
+        j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (["the"], ["this"]))
+        j += words[j:j + 1] != [] and words[j] in FILM_KINDS and words[j + 1:j + 2] != [] and words[j + 1] in FILM_WORDS
+        named = words[j:j + 1] == ["it"] and opener and FILM_WORDS.intersection([*before, *words[:i]])
+        if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
+            continue
+        # said alone, the video stopped ('clip's cut off early , ...'), not ended ('the video is over . did ...?'
+        # may ask about the video)
+        end = next((e for e in sorted(STOPPED_SAID if alone else END_PREDICATES + STOPPED_SAID, key=len, reverse=True)
+                    if words[j + 1:j + 1 + len(e)] == e), None)
+        if end:
+            k = j + 1 + len(end)
+            part = next((p for p in PART_WAY if words[k:k + len(p)] == p), [])
+            k += len(part)
+            # '... before the play finishes ,': what the video stopped before
+            sep = next((m for m in range(k + 1, min(k + 9, len(words))) if words[m] in CLAUSE_SEPARATORS), None)
+            if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]) and \
+                    not asks_impact(words[k:sep]):
+                k = sep
+            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS:
+                continue   # 'the video stops before they collide': the clause is the question's own
+            return i, k
+    return None
+
+
+def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'once the video is over, does it hit ...' -> 'after the video ends, does it hit ...', in a question about
+    collisions (the only ones asked after the video; of any other it asks at the video's end, which
+    `unknown_property` refuses). With the words read so, or the words as they are and ()."""
+    if not asks_impact(words):
+        return words, ()
+    read, start = [], 0
+    # the clause said first, of the video's end, its going on or its cut ('had the footage continued past the point
+    # where it is cut off, ...' is one clause)
+    while where := min(filter(None, (_video_end(words[start:], words[:start]),
+                                     _video_continued(words[start:], words[:start]), _at_cut(words[start:]))),
+                       default=None):
+        i, k = start + where[0], start + where[1]
+        if words[i:k] != ["after", "the", "video", "ends"]:
+            read.append((" ".join(words[i:k]), "after the video ends"))
+            words = words[:i] + ["after", "the", "video", "ends"] + words[k:]
+        start = i + 4
+    return words, tuple(read)

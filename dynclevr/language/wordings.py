@@ -1,0 +1,795 @@
+"""Wordings recast as the grammar's: the decoder learnt only the grammar's phrasings, so `QuestionParser._words`'
+rewrites (each `f(words) -> (words, read_as)`) read what English says another way as the words the grammar says it in.
+Idioms ('flat out': `idioms_as_said`), a vehicle's kind ('what kind of plane' as 'what type of plane': `type_as_said`;
+'what kind of aircraft is it' as 'what kind of vehicle': `type_of_category_as_vehicle`), 'the floating plane' as 'the
+floating vehicle' (`floating_plane_as_vehicle`), an object pointed at first (`attention_as_subject`), a request for the
+question as the grammar's 'tell me' and closed with a full stop (`request_as_imperative`, `imperative_as_stated`), a
+negated auxiliary or a tag (`negative_question_as_asked`), a noun phrase as its question (`noun_phrase_as_question`), a
+height as aloft (`height_as_aloft`), a heading as a direction (`heading_as_direction`), a speed as the subject
+(`speed_as_subject`), 'more fast' as 'faster' (`comparative_as_said`), the asking said last ('..., yes or no?', '... is
+what?': `tail_as_question`), and attributes or alternatives offered (`attributes_offered_dropped`,
+`alternatives_as_asked`)."""
+
+from __future__ import annotations
+
+import re
+
+from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.references import OBJECT_WORDS, phrase_table, phrases_as_said
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
+                                     DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
+                                     MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
+                                     REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, START_ADJECTIVES,
+                                     TIME_OPENERS, YES_NO_OPENERS, _head)
+
+
+def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'... . what kind of aircraft is it ?' -> '... . what kind of vehicle is it ?': the category in a question of
+    the type of what 'it' is names no other object (it was read as a plane of its own, the context's description of
+    'it' lost). With the words read so, or the words as they are and ()."""
+    for k in range(len(words) - 4):
+        if SENTENCE_ENDS.intersection(words[:k]) and words[k] in ("what", "which") and words[k + 1] in SHAPE_ASKED and \
+                words[k + 2] == "of" and words[k + 3] in NOUNS_SAID | PLANE_SAID and \
+                words[k + 4:k + 6] in (["is", "it"], ["was", "it"]):
+            return words[:k + 3] + ["vehicle"] + words[k + 4:], ((f"of {words[k + 3]}", "of vehicle"),)
+    return words, ()
+
+
+def type_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'what kind of plane is ...' -> 'what type of plane is ...': the grammar asks a vehicle's kind or sort only of a
+    'vehicle', its type of any noun (the decoder read 'what kind of plane is floating?' as whether it floats). With
+    the words read so, or the words as they are and (). 'the category of' and 'the class of' ask it too ('identify
+    the category of the object that floats' was read as its colour)."""
+    for k in range(1, len(words) - 2):
+        if words[k - 1] in ASKING and words[k] in ("kind", "sort") and words[k + 1] == "of" and \
+                words[k + 2] in NAMING and words[k + 2] not in COLOR_NAMES or \
+                words[k - 1] in ASKING | {"the"} and words[k] in ("category", "class") and words[k + 1] == "of":
+            return words[:k] + ["type"] + words[k + 1:], ((f"{words[k]} of", "type of"),)
+    return words, ()
+
+
+PLANE_SAID = {"plane", "aeroplane", "airplane", "aircraft"}
+
+
+def floating_plane_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the floating plane' -> 'the floating vehicle': only aeroplanes float, so the noun says nothing more, and the
+    decoder read a bare plane after 'floating' as a second object ('what colour is the floating plane?' as a collision
+    partner's). With the words read so, or the words as they are and ()."""
+    for k in range(2, len(words)):
+        if words[k] in PLANE_SAID and words[k - 1] in AFLOAT_SAID and words[k - 2] in DETERMINERS:
+            return words[:k] + ["vehicle"] + words[k + 1:], ((f"{words[k - 1]} {words[k]}", f"{words[k - 1]} vehicle"),)
+        # 'what kind of aircraft was hovering?' (read as whether one was, where 'is floating' read right)
+        after = words[k + 1 + (words[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"])):][:1]
+        if words[k] in PLANE_SAID and words[k - 2:k] in ([t, "of"] for t in SHAPE_ASKED) and after and \
+                after[0] in AFLOAT_SAID:
+            return words[:k] + ["vehicle"] + words[k + 1:], ((f"of {words[k]}", "of vehicle"),)
+    return words, ()
+
+
+# A first sentence or phrase that points at an object ('Watch the yellow bus. Does it hit anything?', 'How about the
+# blue bus, is it fast?', 'This is about the red sedan. Does it ...', 'There is a red sedan in the video. Is it ...'):
+# the question about it. A sentence of pointing words only: one that says more ('The red sedan is parked.', 'The
+# cruiser shows up at some point.') may set what the question asks, and stays.
+ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "at"], ["watch"], ["consider"],
+             ["circling", "back", "on"], ["circling", "back", "to"], ["following", "up", "on"],
+             ["focus", "on"], ["observe"], ["notice"], ["check"],
+             ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
+             ["as", "to"])
+POINTING_ENDS = {".", ":", ";", ",", "?", "-"}
+POINTING_WORDS = {"this", "that", "it", "is", "s", "'", "am", "m", "are", "i", "we", "you", "my", "our", "me", "one",
+                  "question", "questions", "about", "regarding", "concerning", "concerns", "interested", "in", "have",
+                  "has", "got", "a", "an", "the", "quick", "let", "us", "talk", "look", "at", "watch", "consider",
+                  "focus", "on", "observe", "notice", "check", "out", "take", "there", "here", "now", "want", "to",
+                  "ask", "see", "saw", "spot", "video", "clip", "scene", "of", "please", "just", "ve", "d", "like"}
+
+
+def _pointed_at(words: list[str]) -> int | None:
+    """Where the object begins in a first sentence of pointing words ('this is about the red sedan .'), or None."""
+    k = 0
+    while k < len(words) and words[k] in POINTING_WORDS and words[k] not in OBJECT_WORDS and not (
+            words[k] in DEFINITE and words[k + 1:k + 2] and words[k + 1] in OBJECT_WORDS):
+        k += 1
+    return k if k < len(words) and (words[k] in DEFINITE or words[k] in OBJECT_WORDS) else None
+
+
+def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'watch the yellow bus . does it hit anything ?' -> 'does the yellow bus hit anything ?': the object a first
+    sentence or phrase points at ('how about the blue bus , is it ...', 'this is about the blue bus . is it ...') put
+    for the question's first 'it' (or its 'its'), two objects ('how about the red car and the bus , do they ...') for
+    its first 'they', and the pointing left out. With the words read so, or the words as they are and ()."""
+    verb = next((v for v in ATTENDING if words[:len(v)] == v), None)
+    start = len(verb) if verb else _pointed_at(words)
+    if start is None:
+        return words, ()
+
+    def mention(k: int) -> tuple[list[str], int]:
+        """The object named from word k on ('the', 'a', 'that' or 'this' first) and where it ends."""
+        j = k = k + (words[k:k + 1] != [] and words[k] in DEFINITE)
+        while words[j:j + 1] and words[j] in OBJECT_WORDS:
+            j += 1
+        return ["the", *words[k:j]] if j > k else [], j
+
+    first, j = mention(start)
+    second = []
+    if first and words[j:j + 1] == ["and"]:
+        second, j = mention(j + 1)
+        if not second:
+            return words, ()
+    named = j
+    while verb is None and j < len(words) and words[j] in POINTING_WORDS:   # 'there is a red sedan in the video .'
+        j += 1
+    # after pointing words a sentence ends ('this is about X .'); the object alone is set off by a comma too ('X , is
+    # it ...')
+    ends = POINTING_ENDS if verb or start == 0 and j == named else POINTING_ENDS - {",", "?"}
+    if not first or words[j:j + 1] == [] or words[j] not in ends or not words[j + 1:j + 2] or \
+            words[j + 1] not in QUESTION_OPENERS:
+        return words, ()
+    thing, question = first + (["and", *second] if second else []), words[j + 1:]
+    pronouns = ("they", "them") if second else ("it", "its")
+    for n, w in enumerate(question):
+        if w in pronouns:
+            question = question[:n] + thing + (["'", "s"] if w == "its" else []) + question[n + 1:]
+            break
+    else:
+        if second or verb is None:
+            return words, ()
+    return question, ((" ".join(words[:j + 1]), f"nothing; '{pronouns[0]}' as " + " ".join(thing)),)
+
+
+# A question asked as a request for it: 'Could you tell me ...', 'Do you know ...', 'I'd like to know ...',
+# 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
+# 'Tell me ...'.
+REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
+                     r"(?:(?:can|could|would|will) you (?:please |kindly )?"
+                     r"(?:tell me|let me know|advise(?: me)?"
+                     r"|describe(?: for me| to me)?(?= (?:which|what|how|whether)))"
+                     r"|do you (?:happen to )?know"
+                     r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
+                     r"(?:like to |love to )?know"
+                     r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
+                     r"(?:possibly |kindly |please )?(?:tell me|let me know|say)"
+                     r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
+                     r"(?:settle|answer|help me with|clear up) (?:something|a question|a little question|a matter)"
+                     r"(?: for me)?(?: :)?"
+                     r"|i (?:am |' m |was )?wondering|i wonder|tell me(?= ,)"
+                     r"|(?:would|could|will|can) you be able to (?:tell me|say|tell)"
+                     r"|(?:can|could|would|will) you (?:please |kindly )?tell (?:an?|this|your) (?:old |elderly |poor )?"
+                     r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
+                     r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
+                     r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
+                     r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know"
+                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were) (?:asking|wondering)"
+                     r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how))"
+                     r" (?:, )?(?:please )?")
+# whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
+# 'is it true that'
+CERTAINTY = re.compile(r"^(?:(?:can|could|would) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
+                       r"(?:established|shown|confirmed|verified|determined|"
+                       r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
+                       r"demonstrate) (?:that|whether|if)"
+                       r"|(?:am i|are we) (?:right|correct) (?:in thinking |to think |to say )?that"
+                       # a ticket's ('Need confirmation whether ...', 'Please verify that ...')
+                       r"|(?:please )?(?:(?:i |we )?need (?:to )?)?(?:confirm|verify|confirmation|verification)"
+                       r"(?: of| on| as to)? (?:that|whether|if)) ")
+
+
+def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question that opens with a request for it, the request read as the grammar's 'tell me': 'can you tell me
+    the speed of the red car at the start ?' -> 'tell me the speed of ...'; with the words read so (`Parse.read_as`),
+    or the words as they are and ()."""
+    m = CERTAINTY.match(" ".join(words) + " ")
+    if m:
+        rest = " ".join(words)[m.end():].split()
+        return ["is", "it", "true", "that"] + rest, ((" ".join(words[:len(words) - len(rest)]), "is it true that"),)
+    m = REQUEST.match(" ".join(words) + " ")
+    if not m:
+        return words, ()
+    rest = " ".join(words)[m.end():].split()
+    said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
+    # 'I'd like to know, is the bus fast?', '... , at the start, is it fast?': the question itself
+    asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else \
+        next((j for j in range(2, 7) if rest[:1] and rest[0] in TIME_OPENERS and rest[j:j + 1] and rest[j] in
+              YES_NO_OPENERS and rest[j + 1:j + 2] and rest[j + 1] in SUBJECT_STARTS | set(COLOR_NAMES)), 0)
+    if rest[asked:asked + 1] and rest[asked] in YES_NO_OPENERS:
+        return rest, ((said, "nothing, a request"),)
+    return ["tell", "me"] + rest, ((said, "tell me"),)
+
+
+def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A request closed by a question mark ('Describe the speed of the bus at the start?') as the grammar closes
+    one, with a full stop: the question mark made the decoder read it as yes or no. With the words read so, or the
+    words as they are and ()."""
+    if words[-1:] != ["?"] or not any(words[:len(i)] == i for i in IMPERATIVES):
+        return words, ()
+    return [*words[:-1], "."], (("?", "."),)
+
+
+# A yes/no question asked with its auxiliary negated ('Isn't the red car fast?', 'Doesn't it hit the bus?') asks
+# the same as without: English answers it yes where the car is fast. So does a statement with a tag ('The red car is
+# fast, isn't it?', '..., right?'). Only a negation inside the clause ('Is the red car not moving?') denies.
+SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
+                  "these", "those", "either", "both", "they", "some", "all"}
+TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
+
+
+def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is not the red car fast ?' -> 'is the red car fast ?' (the negation on the auxiliary put before the subject,
+    first or after a clause said first: 'when they collide , is not the sedan faster ?'); 'the red car is fast , is
+    not it ?' and '... , right ?' -> 'the red car is fast ?' (a tag after a statement with no negation of its own).
+    With the words read so, or the words as they are and ()."""
+    for k in range(len(words) - 2):
+        if (k == 0 or words[k - 1] == ",") and words[k] in YES_NO_OPENERS and words[k + 1] == "not" and \
+                (words[k + 2] in SUBJECT_STARTS or words[k + 2] in OBJECT_WORDS) and words[k + 3:] not in ([], ["?"]):
+            return words[:k + 1] + words[k + 2:], ((f"{words[k]} not", words[k]),)
+    end = words[-1:] if words[-1:] in (["?"], ["."]) else []
+    body = words[:len(words) - len(end)]
+    if body[-2:] == [",", "or"]:   # 'is it slower than the bus , or ?' (a learner's tag)
+        return body[:-2] + ["?"], ((", or", "?"),)
+    negative = [[w, "not", p] for w in sorted(YES_NO_OPENERS) for p in sorted(TAG_PRONOUNS)]
+    for tag in negative + list(AGREEING_TAGS):
+        n = len(tag) + 1
+        statement = body[:-n]
+        # 'is it going left , right ?' offers a choice: only a statement takes an agreeing tag
+        asked = tag[1:2] != ["not"] and statement[:1] and statement[0] in YES_NO_OPENERS | ASKING | {"how"}
+        if len(body) <= n or body[-n:] != [","] + tag or asked:
+            continue
+        # a statement's own negation only as 'not moving', which reads as static ('it is not moving , is not it ?')
+        if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
+                   for k, w in enumerate(statement)):
+            return statement + ["?"], ((" ".join(body[-n:]), "?"),)
+    return words, ()
+
+
+def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
+    thing that floats?', 'blue scooter speed at the start?'), or asked for by 'tell me' where the grammar's 'tell me'
+    never does ('tell me the speed of the red car', 'tell me the red car's direction'; it says 'tell me how fast
+    ...'), read as 'what is ...'; with the words read so, or the words as they are and ()."""
+    told = words[:2] == ["tell", "me"]
+    k = 2 * told + (words[2 * told:2 * told + 1] == ["the"])
+    nouns = MOTION_NOUNS if told else QUERY_NOUNS
+    if words[k:k + 1] and words[k] in nouns and words[k + 1:k + 2] == ["of"]:
+        return ["what", "is", "the"] + words[k:], ((" ".join(words[:k + 2]), f"what is the {words[k]} of"),)
+    if told and k == 3:   # 'tell me the red car's speed'
+        end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
+        if end > k and words[end:end + 2] == ["'", "s"] and words[end + 2:end + 3] and words[end + 2] in nouns:
+            return ["what", "is"] + words[2:], (("tell me", "what is"),)
+    # a note's 'speed at start , purple chopper ?': the noun and its time, then the vehicle alone
+    cut = next((i for i in range(k + 2, len(words)) if words[i] in (",", ":", "-")), None)
+    if not told and words[k:k + 1] and words[k] in MOTION_NOUNS and cut is not None:
+        j = cut + 1 + (words[cut + 1:cut + 2] == ["the"])
+        end = next((i for i in range(j, len(words)) if words[i] not in OBJECT_WORDS), len(words))
+        if end > j and words[end:] in ([], ["?"], ["."]):
+            return ["what", "is", "the", words[k], "of", "the", *words[j:end], *words[k + 1:cut], "?"], \
+                ((" ".join(words[k:end]), f"what is the {words[k]} of the {' '.join(words[j:end])} "
+                  + " ".join(words[k + 1:cut])),)
+    # a label's 'blue scooter speed at the start?' (not 'the bus speed up ...', a learner's verb)
+    end = next((i for i in range(k, len(words)) if words[i] not in OBJECT_WORDS), k)
+    if not told and end > k and words[end:end + 1] and words[end] in MOTION_NOUNS and \
+            words[end + 1:end + 2] not in (["up"], ["down"], ["of"]):
+        said = " ".join(words[:end + 1])
+        return ["what", "is", "the", words[end], "of", "the", *words[k:end], *words[end + 1:]], \
+            ((said, f"what is the {words[end]} of the {' '.join(words[k:end])}"),)
+    return words, ()
+
+
+ALOFT_AFTER = {"above", "over", "in", "up", "off", "aloft"}   # words after "high" that make it a height
+
+
+def height_as_aloft(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'high above the ground', 'high in the sky', 'high up' said of a vehicle: up in the air, which the grammar
+    says 'up in the air' ('high' alone is the grammar's speed, as in 'at high speed'); not 'how high up', which
+    asks a height."""
+    out, read = [], []
+    for k, w in enumerate(words):
+        after = words[k + 1] if k + 1 < len(words) else ""
+        if w == "high" and after in ALOFT_AFTER and words[k - 1:k] != ["how"]:
+            read.append((f"high {after}", "up" if after == "up" else f"up {after}"))
+            if after != "up":
+                out.append("up")
+        else:
+            out.append(w)
+    return out, tuple(read)
+
+
+def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'heading' as a noun ('the heading of the red car', 'its heading', 'the car's heading'): its direction. The
+    grammar says 'heading' only as a verb, of motion ('is the red car heading left'), and reads the noun so too
+    ('what is the heading of' was read as the speed). 'how is it heading?' asks which way (it was read as its
+    speed)."""
+    h = len(words) - len(_head(words))
+    if words[h:h + 1] == ["how"] and words[h + 1:h + 2] and words[h + 1] in AUXILIARIES and \
+            {"heading", "headed"} & set(words):
+        return [*words[:h], "which", "way", *words[h + 1:]], (("how", "which way"),)
+    out, read = list(words), []
+    for k, w in enumerate(words):
+        if w == "heading" and k and (words[k - 1] in ("the", "its") or words[k - 2:k] == ["'", "s"]):
+            out[k] = "direction"
+            read.append(("heading", "direction"))
+    return out, tuple(read[:1])
+
+
+# Idioms of this domain's properties, read whole before any word is, as the words the grammar says them in: read
+# word by word they meant something else ('flat out' was 'floating' through a typo fix, 'tearing along' slow,
+# 'sitting tight' fast, 'right off the bat' a direction). The longest phrase at a place wins.
+_START = ("at", "the", "start")
+STAYED = ("stayed", "remained", "kept", "stood")
+STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
+IDIOMS = phrase_table({
+    **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
+                           ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
+                           ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("outta", "the", "gate"),
+                           ("outta", "the", "gates"), ("outta", "the", "blocks"), ("when", "things", "kick", "off"),
+                           ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
+                           ("when", "everything", "kicks", "off"), ("from", "the", "off"))},
+    **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
+                              ("at", "a", "good", "clip"), ("at", "a", "fair", "clip"), ("at", "quite", "a", "clip"),
+                              ("like", "a", "rocket"), ("like", "the", "wind"),
+                              ("like", "a", "bat", "out", "of", "hell"), ("at", "full", "pelt"), ("full", "pelt"))},
+    **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
+        ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
+    # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
+    **{p: () for p in (("in", "fact"), ("in", "actual", "fact"), ("as", "a", "matter", "of", "fact"))},
+    **{("following", "the", "point", *at): ("after",) for at in (("at", "which"), ("where",), ("when",))},
+    # 'when first the scene begins to play', a poet's start
+    **{("when", "first", "the", film, begins): _START for film in ("scene", "video", "clip", "film", "play", "show")
+       for begins in ("begins", "starts", "opens", "began", "started", "opened", "beginneth", "openeth")},
+    # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'
+    **{("the", "picture", *v): ("the", "video", *v) for v in (
+        ("began",), ("begins",), ("started",), ("starts",), ("opened",), ("opens",), ("first", "began"),
+        ("first", "started"), ("stopped",), ("stops",), ("halted",), ("ended",), ("ends",), ("has",), ("is",), ("was",),
+        ("froze",), ("freezes",), ("cuts",), ("cut",))},
+    # the video going on, a bettor's or a commentator's ('once the clip carries on', 'when the action resumes')
+    **{(when, "the", film, *resumes): ("after", "the", "video", "ends") for when in ("once", "when", "after")
+       for film in ("video", "clip", "footage", "film", "tape", "recording", "feed", "action", "play")
+       for resumes in (("resumes",), ("carries", "on"), ("continues",), ("picks", "up", "again"), ("restarts",),
+                       ("starts", "again"), ("plays", "on"), ("rolls", "on"), ("goes", "on"), ("keeps", "going"))},
+    **{(verb + ending, "along"): (moving, "fast") for verb in ("tear", "belt", "bomb", "barrel", "bowl", "motor",
+                                                                 "pelt", "streak", "rocket", "haul", "scream", "zoom",
+                                                                 "whizz", "whiz", "race")
+       for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
+    ("hauling",): ("moving", "fast"),
+    ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",),
+    **{p: ("at", "high", "speed") for p in (("at", "a", "great", "speed"), ("at", "great", "speed"))},
+    **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
+    ("manner", "of", "vehicle"): ("kind", "of", "vehicle"),
+    # a category by an older name of two words (one word: synonyms.txt)
+    ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
+    ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
+    ("stock", "-", "still"): ("still",), ("stock", "still"): ("still",),
+    # falling behind in speed ('is the airliner lagging behind the suv at the beginning?')
+    **{(lag, "behind"): (moving, "slower", "than") for lag, moving in (
+        ("lagging", "moving"), ("lags", "moves"), ("lagged", "moved"), ("trailing", "moving"), ("trails", "moves"),
+        ("trailed", "moved"))},
+    **{p: _START for p in (("right", "off", "the", "gun"), ("off", "the", "gun"), ("from", "the", "gun"),
+                           ("right", "off", "the", "top"), ("off", "the", "top"),
+                           *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape")))},
+    # a ship's words for moving and standing ('dead in the water', 'making less way than')
+    ("dead", "in", "the", "water"): ("static",), ("making", "way"): ("moving",), ("make", "way"): ("move",),
+    **{("making", more, "way", "than"): ("moving", said, "than") for more, said in (("less", "slower"),
+                                                                                    ("more", "faster"))},
+    **{(crash, "together"): (collide,) for crash, collide in (
+        ("crash", "collide"), ("crashes", "collides"), ("crashed", "collided"), ("smash", "collide"),
+        ("bump", "collide"), ("come", "collide"), ("came", "collided"))},
+    ("in", "mid", "-", "air"): ("in", "the", "air"), ("in", "midair"): ("in", "the", "air"),
+    # a physics class's and a simulation's words for the start, floating and collisions
+    **{p: _START for p in (("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
+                           ("at", "the", "first", "timestep"), ("at", "the", "first", "time", "step"),
+                           ("at", "the", "initial", "timestep"), ("at", "the", "first", "time", "-", "step"),
+                           ("in", "the", "initial", "conditions"))},
+    **{(*no, "the", "influence", "of", "gravity"): ("floating",) for no in (("not", "under"), ("free", "from"),
+                                                                             ("free", "of"), ("outside"))},
+    ("unaffected", "by", "gravity"): ("floating",), ("free", "of", "gravity"): ("floating",),
+    ("contact", "event"): ("collision",), ("contact", "events"): ("collisions",),
+    **{(have, "zero", v): (stand, "still") for v in ("velocity", "speed") for have, stand in (
+        ("have", "stand"), ("has", "stands"), ("had", "stood"), ("having", "standing"))},
+    **{(w, "zero", v): ("static",) for v in ("velocity", "speed") for w in ("at", "with")},
+    # a speed class said as a simulation's bin ('the actor in the fast speed bin', 'does it fall in the slow bin')
+    **{(*fall, p, "the", c, *n, b): (*verb, moving if fall else c)
+       for c, moving in (("static", "static"), ("slow", "slowly"), ("fast", "fast"))
+       for n in ((), ("speed",), ("velocity",)) for b in ("bin", "bucket", "class", "category") for p in ("in", "into")
+       for fall, verb in (((), ()), (("fall",), ("move",)), (("falls",), ("moves",)))},
+    **{(be, passed, "by"): (be, "slower", "than") for be in ("is", "was", "be", "being")
+       for passed in ("outpaced", "outrun", "outran", "overtaken", "outstripped")},
+    # acceleration said as a noun ('what kind of vehicle is undergoing acceleration at the start?')
+    **{(verb, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing", "under")},
+    # on a screen is in view ('when it first shows up on screen')
+    **{("on", *the, "screen"): ("in", "view") for the in ((), ("the",))},
+    **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
+    ("bombing", "it"): ("moving", "fast"),
+    ("budging",): ("moving",),
+    **{(punch, *gas): (accelerate,) for punch, accelerate in (("punching", "accelerating"), ("punches", "accelerates"),
+                                                              ("punched", "accelerated"), ("punch", "accelerate"))
+       for gas in (("the", "gas"), ("it",))},
+    # a vehicle as its rider calls it ('what kinda ride is ...', 'the ride that's ...')
+    **{(*before, "ride"): (*said, "vehicle") for before, said in (
+        (("the",), ("the",)), (("kind", "of"), ("kind", "of")), (("sort", "of"), ("sort", "of")),
+        (("type", "of"), ("type", "of")), (("kinda",), ("kind", "of")), (("sorta",), ("sort", "of")))},
+    **{(verb, "along"): (moving, "slowly") for forms in (("poking", "pokes", "poked"), ("inching", "inches", "inched"),
+                                                          ("puttering", "putters", "puttered"),
+                                                          ("pottering", "potters", "pottered"),
+                                                          ("trundling", "trundles", "trundled"),
+                                                          ("plodding", "plods", "plodded"))
+       for verb, moving in zip(forms, ("moving", "moves", "moved"))},
+    # coming into view said of the picture's edge ('enters the field of view', 'comes first into the picture')
+    **{(enter, *seen): (come, "into", "view") for enter, come in (("enters", "comes"), ("entered", "came"),
+                                                                  ("enter", "come"), ("entering", "coming"))
+       for seen in (("the", "field", "of", "view"), ("the", "camera", "'", "s", "field", "of", "view"),
+                    ("the", "frame"), ("the", "shot"), ("the", "image"),
+                    ("first", "in", "the", "view"), ("first", "into", "the", "view"), ("first", "into", "view"))},
+    **{(come, "first", "into"): ("first", come, "into") for come in ("comes", "came", "come", "coming")},
+    **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
+                                                                              ("make", "come"), ("making", "coming"))
+       for its in ("its", "an", "his", "her") for grand in ((), ("grand",), ("big",))},
+    # a small collision by its everyday name
+    **{("fender", *dash, bender): (crash,) for bender, crash in (("bender", "collision"), ("benders", "collisions"))
+       for dash in ((), ("-",))},
+    **{(clip, the): (hit, the) for clip, hit in (("clips", "hits"), ("clipped", "hit"), ("clipping", "hitting"),
+                                                 ("clip", "hit")) for the in ("the", "a", "an", "into")},
+    # a game's words: a vehicle spawns at the start, is afk (away from the keyboard: still), full-sends (fast),
+    # trades paint (collides), has its turbo on (accelerating)
+    **{p: _START for p in (("at", "spawn"), ("on", "spawn"), ("off", "spawn"), ("right", "at", "spawn"),
+                           ("at", "the", "spawn"), *((w, "it", spawned) for w in ("when", "as", "once")
+                                                     for spawned in ("spawned", "spawns", "spawn")))},
+    **{(p, *the, "spawn"): (p, "the", "start") for p in ("from", "since") for the in ((), ("the",))},
+    **{(spawn, *how): (start, *how) for spawn, start in (("spawned", "started"), ("spawns", "starts"),
+                                                        ("spawn", "start"), ("spawning", "starting"))
+       for how in (("slow",), ("fast",), ("static",), ("moving",), ("parked",), ("still",), ("floating",),
+                   ("hovering",), ("accelerating",))},
+    ("afk",): ("static",),
+    # a referee's start ('at kick-off', 'on the whistle'), an engine's power, a clause's start ('as things get under
+    # way'), a stop said 'dead still'
+    **{(*at, *kick): (("from", "the", "start") if at[:1] == ("from",) else _START)
+       for at in (("at",), ("at", "the"), ("right", "at", "the"), ("right", "at"), ("from",), ("from", "the"))
+       for kick in (("kick", "-", "off"), ("kickoff",), ("kick", "off"))},
+    **{p: _START for p in (("on", "the", "whistle"), ("at", "the", "whistle"), ("at", "the", "opening", "whistle"),
+                           ("at", "the", "first", "whistle"), ("on", "the", "opening", "whistle"))},
+    **{("under", *own, "power"): ("with", "its", "engine", "on") for own in ((), ("its", "own"), ("engine",),
+                                                                              ("its", "engine's"))},
+    **{(w, "things", get, *way): _START for w in ("as", "when") for get in ("get", "got", "are", "were")
+       for way in (("under", "way"), ("underway",))},
+    ("dead", "still"): ("still",),
+    # a show's start ('right when our show begins')
+    **{(w, our, show, begins): _START for w in ("when", "as") for our in ("our", "the", "this")
+       for show in ("show", "episode", "programme", "program") for begins in ("begins", "starts", "opens")},
+    **{("let", *us, v): (v,) for us in (("us",), ("'", "s")) for v in ("suppose", "assume", "imagine", "pretend")},
+    ("let", "us", "say"): ("suppose",),
+    **{(draw, "to", its, close): (ends,) for draw, ends in (("draws", "ends"), ("drew", "ended"), ("drawing", "ending"))
+       for its in ("its", "a", "an") for close in ("close", "end")},
+    **{(t, p): (c, p) for t, c in (("tangle", "collide"), ("tangles", "collides"), ("tangled", "collided"))
+       for p in (",", "?", ".")},
+    ("going", "back", "over"): ("looking", "at"),
+    **{(*at, than, *dash, "speed"): (said,) for than, said in (("lower", "slower"), ("higher", "faster"))
+       for dash in ((), ("-",)) for at in ((), ("at", "a"))},
+    **{("speed", "check", on): ("what", "is", "the", "speed", "of") for on in ("on", "for")},
+    **{("full", send): said for send, said in (("send", ("fast",)), ("sending", ("going", "fast")),
+                                               ("sent", ("gone",)), ("sends", ("goes", "fast")))},
+    **{(trade, "paint"): (collide,) for trade, collide in (("trade", "collide"), ("trades", "collides"),
+                                                          ("traded", "collided"), ("trading", "colliding"))},
+    **{(*had, "turbo", "on"): said for had, said in (((), ("accelerating",)), (("had",), ("had", "been",
+                                                                                           "accelerating")),
+                                                     (("has",), ("is", "accelerating")),
+                                                     (("with",), ("accelerating",)))},
+    **{("w", the): ("with", the) for the in ("the", "a", "an", "anything", "something", "any")},
+    **{(verb, "along"): (moving, "fast") for verb, moving in (("barrelling", "moving"), ("barrelled", "moved"),
+                                                             ("flying", "moving"), ("flies", "moves"),
+                                                             ("flew", "moved"),
+                                                             ("haring", "moving"), ("careering", "moving"),
+                                                             ("careening", "moving"))},
+    **{(verb, adverb): (stay, "still") for verb, stay in (("sitting", "staying"), ("sits", "stays"), ("sit", "stay"),
+                                                          ("going", "staying"), ("goes", "stays"), ("go", "stay"))
+       for adverb in (("tight",) if verb.startswith("s") else ("nowhere",))},
+    ("on", "the", "move"): ("moving",),
+    ("stayed", "where", "it", "was"): ("been", "static"),
+    **{(stay, "put"): (stay, "still") for stay in ("stay", "stays", "stayed", "staying")},
+    # a counterfactual's condition: 'had it stayed still' was read as had it stayed in the air
+    **{("had", stayed, still): ("had", "been", "static") for stayed in STAYED for still in STILL},
+    # said of a plane: 'does it come down on the wagon?' (on the ground, a landing: refused as one)
+    **{(come, "down", "on", *top): (crash, "into") for come, crash in (("come", "crash"), ("comes", "crashes"),
+                                                                      ("came", "crashed"), ("coming", "crashing"))
+       for top in ((), ("top", "of"))},
+    # within the video, not after it ('has it hit anything by the end of the video?')
+    **{("by", "the", "end", "of", "the", film): ("during", "the", "video") for film in ("video", "clip", "footage",
+                                                                                       "film", "recording", "movie")},
+    # a learner's 'how much fast' asks how fast (not how many)
+    **{("how", "much", pace): ("how", pace) for pace in ("fast", "quickly", "quick", "speedy", "rapidly")},
+    # 'quick' is 'fast' ('the quick car', 'is it quick' were read as nothing); 'non-moving' is 'stationary'
+    ("quick",): ("fast",),
+    **{("non", *dash, "moving"): ("stationary",) for dash in ((), ("-",))},
+    **{(gather, "speed"): (accelerate,) for gather, accelerate in (
+        ("gathering", "accelerating"), ("gathers", "accelerates"), ("gathered", "accelerated"),
+        ("gather", "accelerate"))},
+    # a comparative said as a class ('the slower-moving vehicle'), as the grammar says the class
+    **{(comparative, *dash, "moving"): said for comparative, said in (("slower", ("slow", "-", "moving")),
+                                                                     ("faster", ("quickly", "moving")))
+       for dash in ((), ("-",))},
+    **{("rear", "-", end): (hit,) for end, hit in (("end", "hit"), ("ends", "hits"), ("ended", "hit"),
+                                                   ("ending", "hitting"))},
+    **{("t", "-", bone): (hit,) for bone, hit in (("bone", "hit"), ("bones", "hits"), ("boned", "hit"),
+                                                  ("boning", "hitting"))},
+    # 'does it end up hitting' is 'does it hit', said of the verbs of a collision
+    **{(end, "up", gerund): (forms[k],) for k, end in enumerate(("end", "ends", "ended"))
+       for gerund, forms in {"hitting": ("hit", "hits", "hit"), "colliding": ("collide", "collides", "collided"),
+                             "crashing": ("crash", "crashes", "crashed"), "smashing": ("smash", "smashes", "smashed"),
+                             "bumping": ("bump", "bumps", "bumped"), "running": ("run", "runs", "ran"),
+                             "striking": ("strike", "strikes", "struck"), "slamming": ("slam", "slams", "slammed"),
+                             "ramming": ("ram", "rams", "rammed")}.items()},
+    **{(adverb, verb): (verb, "slowly") for adverb in ("barely", "hardly", "scarcely")
+       for verb in ("moving", "moves", "move", "moved")},
+    **{(verb, *rest): (accelerate,) for verb, accelerate in (("hitting", "accelerating"), ("hits", "accelerates"),
+                                                              ("hit", "accelerate"), ("stepping", "accelerating"),
+                                                              ("steps", "accelerates"), ("step", "accelerate"),
+                                                              ("stepped", "accelerated"))
+       for rest in ((("the", "gas"),) if verb.startswith("hit") else (("on", "the", "gas"), ("on", "it")))},
+    **{(verb, *rest): (accelerate,) for verb, accelerate in (("putting", "accelerating"), ("puts", "accelerates"),
+                                                              ("put", "accelerate"), ("flooring", "accelerating"),
+                                                              ("floors", "accelerates"), ("floor", "accelerate"),
+                                                              ("gunning", "accelerating"), ("guns", "accelerates"),
+                                                              ("gun", "accelerate"), ("having", "accelerating"),
+                                                              ("has", "accelerates"), ("have", "accelerate"),
+                                                              ("floored", "accelerated"), ("gunned", "accelerated"),
+                                                              ("had", "accelerated"))
+       for rest in ((("its", "foot", "down"),) if verb.startswith("put") else (("it",),) if verb[0] in "fg"
+                    else (("its", "foot", "on", "the", "gas"),) if verb != "had" else (("its", "foot", "down"),))},
+    ("had", "put", "its", "foot", "down"): ("had", "accelerated"),
+    **{p: ("fast",) for p in (("at", "a", "lick"), ("at", "a", "fair", "lick"), ("at", "a", "good", "lick"),
+                              ("at", "quite", "a", "lick"))},
+    # a collision as an idiom says it ('did it come to grief with the bus?', 'tangled with', 'ploughed into')
+    **{(*come, "with"): (collide, "with") for come, collide in (
+        (("come", "to", "grief"), "collide"), (("comes", "to", "grief"), "collides"),
+        (("came", "to", "grief"), "collided"), (("coming", "to", "grief"), "colliding"), (("tangle",), "collide"),
+        (("tangles",), "collides"), (("tangled",), "collided"), (("tangling",), "colliding"))},
+    **{(plough, "into"): (crash, "into") for plough, crash in (
+        ("plough", "crash"), ("ploughs", "crashes"), ("ploughed", "crashed"), ("ploughing", "crashing"),
+        ("plow", "crash"), ("plows", "crashes"), ("plowed", "crashed"), ("plowing", "crashing"))},
+    # a translator's time of the video ('in the beginning time', 'at the end time of video')
+    **{(at, *the, when, "time"): ("at", "the", "end") if when == "end" else _START
+       for at in ("at", "in") for the in ((), ("the",)) for when in ("beginning", "start", "starting", "end")},
+    # a translator's comparison ('faster compared with the bus') and direction ('heading for what direction')
+    **{(comparative, "compared", to): (comparative, "than") for comparative in ("faster", "slower", "quicker")
+       for to in ("with", "to")},
+    **{(prep, which, "direction"): ("in", which, "direction") for prep in ("for", "to", "toward", "towards")
+       for which in ("what", "which")},
+    ("how", "much", "speed"): ("how", "fast"),
+    **{("this", film): ("the", film) for film in ("video", "clip", "footage", "film", "recording", "movie")},
+    **{("right", "when", "it", starts): _START for starts in ("starts", "begins", "opens")},
+    # a race's start ('right off the line') and a commentator's speed ('carrying more speed than the cruiser')
+    **{(*right, "off", "the", *starting, "line"): _START for right in ((), ("right",))
+       for starting in ((), ("starting",))},
+    **{(carrying, "more", "speed", "than"): (going, "faster", "than") for carrying, going in (
+        ("carrying", "going"), ("carries", "goes"), ("carried", "went"), ("carry", "go"))},
+    # a researcher's time of the video ('during the observation window', 'in the post-observation window')
+    **{(*the, "observation", window): (*the, "video") for the in ((), ("the",)) for window in ("window", "period")},
+    **{(*at, "the", "post", "-", "observation", window): ("after", "the", "video") for at in ((), ("in",), ("during",))
+       for window in ("window", "period")},
+    **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
+    **{(when, "it", "all", *began): ("at", "the", "start") for when in ("when", "as") for began in (
+        ("started",), ("starts",), ("began",), ("begins",), ("kicked", "off"), ("kicks", "off"))},
+    # 'jam' said for 'hit' ('when it jammed the bike', 'will they jam each other?'; a traffic jam is refused)
+    **{(jam, after): (hit, after) for jam, hit in (("jam", "hit"), ("jams", "hits"), ("jammed", "hit"),
+                                                   ("jamming", "hitting")) for after in ("the", "each", "into")},
+    **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
+                                      ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
+}.items())
+COMING = ("comes", "come", "came", "coming")
+SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
+APPEARING = ("appears", "appear", "appeared", "appearing")
+
+
+def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
+    read = ()
+    if words[:1] and words[0] in IMAGINING | {"imagine", "suppose"} and words[1:3] in (["this", ":"], ["this", ","],
+                                                                                   ["that", ":"], ["this", "-"]):
+        read, words = ((" ".join(words[:3]), "imagine"),), ["imagine", *words[3:]]   # 'Picture this: the bus ...'
+    if words[:1] and words[0] in IMAGINING:
+        out, more = phrases_as_said(words[1:], IDIOMS)
+        return ["imagine", *out], (*read, (words[0], "imagine"), *more)
+    out, more = phrases_as_said(words, IDIOMS)
+    read += more
+    # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past (or, a sentence
+    # of its own, in the present) is the grammar's 'had been' (it was read as whether the bus is parked at the
+    # collision)
+    if out[:1] and out[0] in ("imagine", "suppose", "supposing"):
+        end = next((k for k, w in enumerate(out) if w in (".", ",", ";", ":", "-", "?")), len(out))
+        now = ("is", "are") if out[end:end + 1] in ([":"], ["."], [";"]) else ()
+        k = next((k for k in range(1, end) if out[k] in ("was", "were", *now)), None)
+        if k is not None:
+            read += ((out[k], "had been"),)
+            out[k:k + 1] = ["had", "been"]
+    # the same condition inverted: 'had the plane stayed still , would it ...' (read as had it stayed in the air)
+    if out[:1] == ["had"]:
+        end = next((k for k, w in enumerate(out) if w in (",", "?")), len(out))
+        k = next((k for k in range(2, end - 1) if out[k] in STAYED and out[k + 1] in STILL), None)
+        if k is not None:
+            read += ((f"{out[k]} {out[k + 1]}", "been static"),)
+            out[k:k + 2] = ["been", "static"]
+    # 'what speed was the suv carrying' is the speed it moves at (refused as what a vehicle carries)
+    for k in range(1, len(out)):
+        if out[k] in SPEED_CARRIED and "speed" in out[:k] and out[k + 1:k + 2] in ([], ["?"], ["-"], [","], ["."],
+                                                                                    [":"]):
+            read += ((out[k], SPEED_CARRIED[out[k]]),)
+            out[k] = SPEED_CARRIED[out[k]]
+    # 'when it comes into view for the first time' is the grammar's 'when it first comes into view' (it was read as
+    # the start)
+    for k in range(len(out)):
+        if out[k:k + 4] == ["for", "the", "first", "time"]:
+            seen = next((n for n in (4, 3, 2, 1) if k >= n and (out[k - n:k] in (
+                [c, "into", "view"] for c in COMING) or out[k - n:k] in ([a] for a in APPEARING))), None)
+            if seen:
+                read += ((f"{' '.join(out[k - seen:k])} for the first time", f"first {' '.join(out[k - seen:k])}"),)
+                out[k - seen:k + 4] = ["first", *out[k - seen:k]]
+                break
+    # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
+    # accelerating, the grammar's 'speeding up')
+    speeding = [k for k, w in enumerate(out) if w == "speeding" and out[k + 1:k + 2] not in (["up"], ["along"])]
+    for k in reversed(speeding):
+        out[k + 1:k + 1] = ["along"]
+    return out, read + (("speeding", "speeding along"),) * bool(speeding)
+
+
+def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question whose asking comes last: '..., yes or no?' and the other answer offered in a clause of its own
+    ('..., or did it miss it?', '... or is it on the ground?', '... or not?': the asking dropped, a yes/no question
+    says it) and '... is what?' (the question word put first: 'the red sedan speed at the start is what?' -> 'what
+    is the red sedan speed at the start?'). With the words read so, or the words as they are and ()."""
+    end = words[-1:] if words[-1:] in (["?"], ["."]) else []
+    body = words[:len(words) - len(end)]
+    for tail in ([",", "yes", "or", "no"], ["?", "yes", "or", "no"], ["yes", "or", "no"]):
+        if body[-len(tail):] == tail and len(body) > len(tail):
+            return body[:-len(tail)] + (end or ["?"]), ((" ".join(tail), "?"),)
+    k = max((i for i, w in enumerate(body) if w == "or"), default=0)
+    other = body[k + 1:]
+    clause = other == ["not"] or other[:1] and other[0] in YES_NO_OPENERS and other[1:2] and (
+        other[1] in TAG_PRONOUNS or other[1:3] in (["not", "it"], ["not", "they"]))   # shares none of the question
+    if k > 1 and clause and not OBJECT_WORDS.intersection(other) and (NEGATIONS | OPPOSITES).intersection(other):
+        return body[:k - (body[k - 1] == ",")] + (end or ["?"]), ((" ".join(body[k:]), "?"),)
+    if body[-2:] in (["is", "what"], ["was", "what"]) and len(body) > 2 and body[0] not in ASKING | {"how"}:
+        return ["what", body[-2], *body[:-2], *end], ((f"... {body[-2]} what", f"what {body[-2]} ..."),)
+    # '(at the start ,) the red sedan is moving at what speed ?': the asking where a statement has its answer
+    k = next((i for i in range(len(body)) if body[i:i + 3] in IN_PLACE), None)
+    first = body.index(",") + 1 if "," in body[:k or 0] else 0
+    c = next((i for i in range(first + 1, k or 0) if body[i] in ("is", "was")), None)
+    if c is not None and body[first] not in ASKING | YES_NO_OPENERS | {"how", "tell"}:
+        phrase = body[k:k + 3]
+        return ([*body[:first], *phrase, body[c], *body[first:c], *body[c + 1:k], *body[k + 3:], *end],
+                ((" ".join(phrase), "said first"),))
+    return words, ()
+
+
+IN_PLACE = (["at", "what", "speed"], ["at", "which", "speed"], ["at", "what", "velocity"], ["with", "what", "speed"],
+            ["with", "which", "speed"], ["with", "what", "velocity"])
+
+
+# A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
+COMPARATIVES = {("more", "fast"): "faster", ("more", "quick"): "quicker", ("more", "slow"): "slower",
+                ("less", "fast"): "slower", ("less", "quick"): "slower", ("less", "slow"): "faster"}
+# longest first
+PAIR_SAID = (["of", "the", "two", "vehicles"], ["of", "the", "two"], ["of", "both"], ["of", "the", "pair"])
+
+
+def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'more fast' -> 'faster', 'less fast' -> 'slower' (the decoder read 'more fast' as 'fast'), 'the faster of the
+    two' -> 'the faster one' (no family was read). With the words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        said = COMPARATIVES.get(tuple(words[k:k + 2]))
+        pair = next((p for p in PAIR_SAID if words[k:k + len(p)] == p), None) if out and out[-1] in COMPARISONS \
+            else None
+        if said:
+            out.append(said)
+            read.append((" ".join(words[k:k + 2]), said))
+            k += 2
+        elif pair:
+            out.append("one")
+            read.append((" ".join(pair), "one"))
+            k += len(pair)
+        else:
+            out.append(words[k])
+            k += 1
+    return out, tuple(read)
+
+
+OFFERS = ((SPEED_CHOICES, "static , slow or fast", {"slow", "fast"}),
+          (DIRECTION_CHOICES, "front , back , left , right , up or down", set(DIRECTION_CHOICES.values())))
+# 'to the left or right of the bus' says where it is, not where it goes
+PLACE_BEFORE = {"the", "to", "its", "of", "on"}
+
+
+def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
+    """The choice said at words[k] and how many words say it (the longest), or None."""
+    return max(((c, len(w)) for w, c in choices.items() if tuple(words[k:k + len(w)]) == w),
+               key=lambda hit: hit[1], default=None)
+
+
+def attributes_offered_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'what sort of aeroplane is hovering at the start , airliner , fighter , jet or biplane ?' -> '... at the start
+    ?': the colours or types offered to choose from by a question asking for one, which its answer names anyway.
+    With the choices read as nothing, or the words as they are and ()."""
+    if words[-1:] != ["?"] or not ATTRIBUTE_NOUNS & set(words[:8]) or not {"what", "which"} & set(words[:6]):
+        return words, ()
+    for k in (j for j, w in enumerate(words) if w in (",", ":")):
+        listed = words[k + 1:-1]
+        names = [w for w in listed if w not in {",", "or", "a", "an", "the", "one", "of", "those", "these", "old"}]
+        if "or" in listed and len(names) >= 2 and all(w in OBJECT_WORDS or w[:-1] in OBJECT_WORDS for w in names):
+            return words[:k] + ["?"], ((" ".join(words[k:-1]), "nothing, the choices offered"),)
+    return words, ()
+
+
+def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?', 'is it going left or right?'
+    -> 'is it going front, back, left, right, up or down?': speed classes or directions offered as alternatives ask
+    which one, as the grammar's lists of them do (the decoder read 'fast or slow' as 'is it fast?', 'left or right'
+    as the speed). Two choices at least, of speeds one slow or fast. With the words read so, or the words as they
+    are and ()."""
+    # asked as yes or no: an auxiliary first, or before its subject after the vehicle or a clause said first ('the
+    # red car at the start , is it fast or slow')
+    asking = [m for m, w in enumerate(words) if w in AUXILIARIES and (m == 0 or words[m + 1:m + 2] and (
+        words[m + 1] in SUBJECT_STARTS or words[m + 1] in OBJECT_WORDS))]
+    if not asking:
+        return words, ()
+    for i in range(asking[0] + 1, len(words)):
+        for choices, listed, needed in OFFERS:
+            first = _choice(words, i, choices)
+            if not first or choices is DIRECTION_CHOICES and words[i - 1:i] and words[i - 1] in PLACE_BEFORE:
+                continue
+            said, k = [first[0]], i + first[1]
+            while True:
+                sep = next((s for s in ([",", "or"], ["or"], [","]) if words[k:k + len(s)] == s), None)
+                nxt = _choice(words, k + len(sep), choices) if sep else None
+                if not nxt:
+                    break
+                said.append(nxt[0])
+                k += len(sep) + nxt[1]
+                if "or" in sep:
+                    break
+            if len(set(said)) >= 2 and set(said) & needed and "or" in words[i:k]:
+                return (words[:i] + listed.split() + words[k:],
+                        ((" ".join(words[i:k]).replace(" ,", ","), listed.replace(" ,", ",")),))
+    return words, ()
+
+
+# A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says
+SPEED_PREDICATES = {"low": "slow", "slow": "slow", "high": "fast", "fast": "fast", "great": "fast", "zero": "static",
+                    "0": "static", "nil": "static"}
+
+
+def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the red car's (initial) speed low ?', 'is the (initial) speed of the red car high at the start ?': the
+    object as the subject, 'is the red car slow (at the start) ?', which the grammar says; the decoder read the speed
+    as the subject as a question about accelerating or a query of the speed. With the words read so, or the words as
+    they are and ()."""
+    if words[:1] not in (["is"], ["was"]) or words[1:2] != ["the"]:
+        return words, ()
+    k = 2
+    while words[k:k + 1] and words[k] in OBJECT_WORDS:
+        k += 1
+    if k > 2 and words[k:k + 2] == ["'", "s"]:                  # 'is the red car 's initial speed low'
+        thing, k = words[1:k], k + 2
+        start = words[k:k + 1] != [] and words[k] in START_ADJECTIVES
+        k += start
+        if words[k:k + 1] not in (["speed"], ["velocity"]):
+            return words, ()
+        k += 1
+    else:                                                        # 'is the initial speed of the red car low'
+        start = words[2:3] != [] and words[2] in START_ADJECTIVES
+        k = 2 + start
+        if words[k:k + 1] not in (["speed"], ["velocity"]) or words[k + 1:k + 3] != ["of", "the"]:
+            return words, ()
+        j = k + 2
+        k += 3
+        while words[k:k + 1] and words[k] in OBJECT_WORDS:
+            k += 1
+        thing = words[j:k]
+        if len(thing) < 2:
+            return words, ()
+    if not words[k:k + 1] or words[k] not in SPEED_PREDICATES:
+        return words, ()
+    rest = words[k + 1:]
+    when = ["at", "the", "start"] if start and not {"start", "beginning", "first", "initially"} & set(rest) else []
+    end = len(rest) - (rest[-1:] == ["?"])
+    out = ["is", *thing, SPEED_PREDICATES[words[k]], *rest[:end], *when, *rest[end:]]
+    return out, ((" ".join(words[:k + 1]).replace(" ' ", "'"), " ".join(out[:len(thing) + 2])),)
+
+
+OPPOSITES = {w for reversers in REVERSERS.values() for w in reversers}
