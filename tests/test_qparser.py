@@ -41,8 +41,8 @@ from dynclevr.language.surface import (archaic_as_said, corrections_starred, glo
                                        quoted_question, shorthand_as_said, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        comparative_as_said, floating_plane_as_vehicle, heading_as_direction,
-                                        height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        class_as_asked, comparative_as_said, floating_plane_as_vehicle,
+                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.code import code_as_said
@@ -2678,3 +2678,31 @@ def test_archaic_english_a_question_relayed_and_a_hypothesis_put_to_a_test():
         "Near the video's end, my friend, does the brown chopper speed up, engine on?": "other than the start",
         "Which colour level corresponds to the vehicle whose initial speed is recorded as slow?": "speeding up",
         "Hark, the yellow biplane enters upon the stage! At what pace doth it arrive?": "into view"})
+
+
+def test_a_thesaurus_a_logician_a_learners_topic_and_a_radio_caller():
+    said, read = class_as_asked(tokenize("into which speed class does the red sedan fall : static , slow or fast ?"))
+    assert said == tokenize("which speed class is the red sedan in : static , slow or fast ?")
+    assert read == (("into which speed class does the red sedan fall", "which speed class is the red sedan in"),)
+    said, _ = dislocated_as_asked(tokenize("Sedan and bus, at the start, sedan is more fast than bus?"))
+    assert said == tokenize("at the start, sedan is more fast than bus?")
+    parser = QuestionParser.load()
+    quiescent, twain, dawdle, affirmed, learner, caller, stalled, onwards = parser.parse_batch([
+        "Does the grey dirt bike lie quiescent at the moment it makes contact with the blue one?",
+        "Is the grey fighter jet dawdling relative to the blue airliner when the twain collide?",
+        "If the blue pickup had set off at a dawdle, would it have jostled the yellow minivan?",
+        "May it be affirmed that the bus exceeds the bicycle in speed at the start of the video?",
+        "If video continue from where it stop, yellow chopper will hit the blue double-decker bus?",
+        "Caller on line five wants the speed of the double-decker the moment it first shows up on screen: stopped, "
+        "slow or fast?",
+        "Line four's asking, was the yellow motorbike sitting stalled, not moving an inch, right at the beginning?",
+        "With the clip stopped partway, is the cyan station wagon going to collide with anything from here on?"])
+    assert quiescent[-1] == "is_static" and twain[-1] == "slower_velocity" and "Counterfactual_moving_slow" in dawdle
+    assert affirmed[-2:] == ["start", "faster_velocity"] and learner[0] == "futureEvents"
+    assert caller[-2:] == ["come_in_frame", "query_moving_velocity"] and stalled[-2:] == ["start", "is_static"]
+    assert onwards[0] == "futureEvents" and onwards[-1] == "exist"
+    assert_refused(parser, {
+        "Is the yellow school bus stationary at the culmination of the footage?": "other than the start",
+        "Once the clip is arrested midway, with which vehicle will the yellow cruiser subsequently collide?": "which",
+        "Blue bus and green car collide at what second?": "when",
+        "Does the blue fighter jet stall at the start?": "stalls"})

@@ -237,7 +237,10 @@ EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know
                                for view in ("opinion", "view", "assessment", "judgement", "judgment",
                                             "estimation")),
                              *(("correct", "me", "if", *i, "wrong", *but) for i in (("i", "'", "m"), ("i", "am"))
-                               for but in ((), (",", "but"), ("but",)))}, key=len, reverse=True)
+                               for but in ((), (",", "but"), ("but",))),
+                             # a formal speaker's ('what kind of vehicle, if one may so ask, is ...')
+                             *(("if", who, may, *so, "ask") for who in ("i", "one", "we") for may in ("may", "might")
+                               for so in ((), ("so",)))}, key=len, reverse=True)
 # the court said for 'me' ('Tell the court whether ...', 'Explain to the jury how fast ...', 'Walk us through ...')
 AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],
             ["me"])
@@ -531,6 +534,11 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     if subject is None:
         return words, ()
     end, named = subject
+    # 'sedan and bus , at the start , sedan is more fast than bus ?': the vehicles said first as a topic, then named
+    # again in the question itself (a learner's topic and comment): the topic is dropped
+    again = [ref for _, _, ref in mentions(words[end + 1:])]
+    if len(named) == 2 and words[end:end + 1] == [","] and all(ref in again for ref in named):
+        return words[end + 1:], ((" ".join(words[:end + 1]), "nothing, the vehicles said first"),)
     pronoun = ["they"] if len(named) == 2 else ["it"]
     if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
         return words, ()
@@ -760,7 +768,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     for k in reversed(range(1, len(out) - 3)):
         other = next((o for o in (["rather", "than"], ["instead", "of"]) if out[k:k + 2] == o), None)
         j = k + 2 + (out[k + 2:k + 3] != [] and out[k + 2] in RESTING)
-        fall = other and out[k + 2:k + 3] in (["falling"], ["dropping"], ["descending"], ["sinking"])
+        fall = other and out[k + 2:k + 3] in ([w] for w in ("falling", "dropping", "descending", "sinking", "fall",
+                                                              "drop", "descend", "sink"))
         if other and (out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) or fall) and \
                 FLOATING_WORDS & set(out[:k]):
             end = k + 3 if fall else j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])

@@ -480,9 +480,11 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     if asked and returns is not str and "or" not in words:
         return (f"the question asks the {asked}, but its nearest reading asks yes or no: no question here reads "
                 "it")
-    # 'after the video ends , which vehicle will the green car run into ?' read as whether it hits anything
+    # 'after the video ends , which vehicle will the green car run into ?' read as whether it hits anything (also
+    # '..., with which vehicle will ...')
     which = next((words[j + 1] for j in range(len(words) - 1) if words[j] in ("which", "what") and (
-        j == 0 or words[j - 1] == ",") and (words[j + 1] in OBJECT_WORDS or words[j + 1] in GENERIC_NOUNS)), None)
+        j == 0 or words[j - 1] == "," or words[j - 1] in ("with", "into") and (j == 1 or words[j - 2] == ","))
+        and (words[j + 1] in OBJECT_WORDS or words[j + 1] in GENERIC_NOUNS)), None)
     # ('which one is faster , is it the sedan ?' asks whether the sedan is)
     if which and returns is not str and not {"faster_velocity", "slower_velocity"} & set(map(operation, program)):
         return f"the question asks which {which}, but its nearest reading asks yes or no: no question here reads it"

@@ -82,8 +82,8 @@ from dynclevr.language.times import first_frames_as_said, inserted_time_last, vi
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, stretched
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        comparative_as_said, floating_plane_as_vehicle, heading_as_direction,
-                                        height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        class_as_asked, comparative_as_said, floating_plane_as_vehicle,
+                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
@@ -335,6 +335,8 @@ class QuestionParser:
         words, stated = imperative_as_stated(words)
         words, negative = negative_question_as_asked(words)
         words, asked = noun_phrase_as_question(words)
+        words, classed = class_as_asked(words)
+        asked += classed
         words, aloft = height_as_aloft(words)
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
@@ -509,7 +511,8 @@ class QuestionParser:
             if j > k + 1 and j < len(words) and words[j] not in self.known and all(v in COLOR_NAMES for v in ref):
                 said = " ".join(words[k + 1:j + 1])
                 return f"the question names the {named} {said}: no vehicle here is called '{said}'"
-            if before and before not in self.known:   # 'the pink suv': a colour the dataset does not use
+            # 'the pink suv': a colour the dataset does not use (not a learner's ', then biplane and ... collide ?')
+            if before and before not in self.known and before != "then":
                 return f"the question names the {before} {named}: no object here is '{before}'"
             # ... said further off ('the pink little stand-up motorbike' was read as any motorbike)
             shade = next((v for v in reversed(words[max(k - 5, 0):k]) if v in OTHER_COLOURS), None)

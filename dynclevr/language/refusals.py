@@ -32,8 +32,8 @@ from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTR
                                      COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS, END_TIMES,
                                      ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES,
                                      MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS, PARTNER_SAID, PLURALS,
-                                     REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, VIEWER,
-                                     YES_NO_OPENERS, asks_impact, _head)
+                                     REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID,
+                                     VIEWER, YES_NO_OPENERS, asks_impact, _head)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -134,7 +134,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     asked, what = _asked(words)
     as_said, what_said = _asked(said)
     labelled, _ = _asked(said[len(said) - said[::-1].index(":"):]) if ":" in said else (None, "")
-    if {asked, as_said, labelled} & TIME_ASKED:   # 'Replay time: at what second does ...'
+    # 'Replay time: at what second does ...', a learner's 'Blue bus and green car collide at what second?'
+    if {asked, as_said, labelled} & TIME_ASKED or any(
+            a in ("at", "in", "on") and b in ASKING and c in TIME_ASKED for a, b, c in zip(said, said[1:], said[2:])):
         return ("the question asks when something happens, which no question here asks (they ask about the start, "
                 "a collision or what comes after the video)")
     why = ("which no question here asks" if {asked, as_said} & SPATIAL else "a word the parser does not know"
@@ -217,7 +219,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if turn and not ENGINE_WORDS & set(said):
         return (f"the question asks whether a vehicle turns ('{turn}'), which no question here asks (they ask which "
                 "way it is moving)")
-    kind = next((why.format(w) for words_of_kind, why in NO_FAMILY_WORDS for w in said if w in words_of_kind), None)
+    # a stall said beside a rest is a traffic report's stalled car, standing ('sitting stalled, not moving an inch')
+    stood = (STATIC_SAID | {"still", "sitting"}) & set(said)
+    kind = next((why.format(w) for words_of_kind, why in NO_FAMILY_WORDS for w in said if w in words_of_kind
+                 and not (words_of_kind is STALLING and stood)), None)
     if kind:
         return kind
     other = next((k for k, w in enumerate(said) if w in OTHER_VEHICLES), None)

@@ -99,6 +99,8 @@ END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "co
 # the time after it, as 'if the video went on' reads (the video otherwise, 'if it were longer', stays refused)
 CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "rolling"], ["gone", "on"], ["went", "on"],
              ["run", "on"], ["ran", "on"], ["carried", "on"], ["played", "on"], ["not", "stopped"], ["not", "ended"],
+             # a learner's unmarked tense ('if video continue from where it stop, ...')
+             ["continue"], ["continues"], ["keep", "going"], ["keeps", "going"], ["go", "on"], ["goes", "on"],
              ["not", "been", "cut", "off"], ["not", "been", "cut"], ["not", "cut", "off"], ["to", "continue"],
              ["to", "keep", "going"], ["to", "go", "on"], ["to", "run", "on"], ["to", "carry", "on"],
              *([let, *to] for let in ("allowed", "left") for to in (["to", "carry", "on"], ["to", "continue"],

@@ -153,18 +153,22 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"(?: for me)?(?: :)?"
                      r"|i (?:am |' m |was )?wondering|i wonder|tell me(?= ,)"
                      r"|(?:would|could|will|can) you be able to (?:tell me|say|tell)"
-                     r"|(?:can|could|would|will) you (?:please |kindly )?tell (?:an?|this|your) (?:old |elderly |poor )?"
+                     r"|(?:can|could|would|will) you (?:please |kindly )?tell (?:an?|this|your) "
+                     r"(?:old |elderly |poor )?"
                      r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
                      r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know"
-                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were) (?:asking|wondering)"
-                     r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how))"
+                     r"|(?:[a-z]+ ){1,3}(?:is|are|was|were|' s) (?:asking|wondering)"
+                     r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how)"
+                     # a caller on the radio ('Line three wants the speed of ...', 'Caller on line five wants ...')
+                     r"|(?:the )?(?:caller|listener|line)(?: on line)?(?: [a-z]+)? (?:wants|needs)(?= the ))"
                      r" (?:, )?(?:please )?")
 # whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
 # 'is it true that'
-CERTAINTY = re.compile(r"^(?:(?:can|could|would) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
-                       r"(?:established|shown|confirmed|verified|determined|"
+CERTAINTY = re.compile(r"^(?:(?:can|could|would|may|might) (?:it|one|we|you) (?:please |kindly )?(?:be )?"
+                       r"(?:established|shown|confirmed|verified|determined|affirmed|asserted|maintained|held|"
+                       r"affirm|assert|maintain|"
                        r"concluded|said|demonstrated|establish|show|confirm|verify|determine|conclude|say|tell|"
                        r"demonstrate) (?:that|whether|if)"
                        r"|(?:am i|are we) (?:right|correct) (?:in thinking |to think |to say )?that"
@@ -237,6 +241,31 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
                    for k, w in enumerate(statement)):
             return statement + ["?"], ((" ".join(body[-n:]), "?"),)
+    return words, ()
+
+
+# a class a vehicle falls into ('into which speed class does the red sedan fall : static , slow or fast ?')
+CLASS_NOUNS = {"class", "category", "group", "bracket", "band"}
+FALLING_INTO = (["fall", "into"], ["fall", "in"], ["fall"], ["fit", "into"], ["fit", "in"], ["fit"], ["belong", "to"],
+                ["belong", "in"], ["belong"])
+
+
+def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'into which speed class does the red sedan fall ?' -> 'which speed class is the red sedan in ?'. With the
+    words read so, or the words as they are and ()."""
+    for k, w in enumerate(words):
+        j = k + (words[k + 1:k + 2] == ["speed"]) + 1
+        if w not in ("which", "what") or words[j:j + 1] == [] or words[j] not in CLASS_NOUNS or \
+                words[j + 1:j + 2] not in (["does"], ["did"]):
+            continue
+        end = next((m for m in range(j + 2, min(j + 8, len(words)))
+                    for f in FALLING_INTO if words[m:m + len(f)] == f), None)
+        if end is None:
+            return words, ()
+        into = next(f for f in FALLING_INTO if words[end:end + len(f)] == f)
+        start = k - (words[k - 1:k] in (["into"], ["in"], ["to"]))
+        out = [*words[:start], *words[k:j + 1], "is", *words[j + 2:end], "in", *words[end + len(into):]]
+        return out, ((" ".join(words[start:end + len(into)]), " ".join(out[start:start + end - k + 1])),)
     return words, ()
 
 
@@ -349,10 +378,25 @@ IDIOMS = phrase_table({
                                                                  "whizz", "whiz", "race")
        for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
     ("hauling",): ("moving", "fast"),
-    ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",),
+    ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",), ("speed", "reading"): ("speed",),
+    # what follows the stopped video ('is it going to collide with anything from here on?', '... after this point?')
+    **{p: ("afterwards",) for p in (("from", "here", "on"), ("from", "this", "point", "on"), ("from", "now", "on"),
+                                    ("after", "this", "point"), ("beyond", "this", "point"), ("past", "this", "point"),
+                                    ("from", "this", "point", "onwards"), ("from", "here", "onwards"))},
     **{p: ("at", "high", "speed") for p in (("at", "a", "great", "speed"), ("at", "great", "speed"))},
     **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
-    ("manner", "of", "vehicle"): ("kind", "of", "vehicle"),
+    ("manner", "of", "vehicle"): ("kind", "of", "vehicle"), ("what", "manner", "of"): ("what", "kind", "of"),
+    # a thesaurus's starts and speeds ('had it set off at a dawdle', 'begun at a breakneck clip', 'embarked with
+    # alacrity'), and comparisons ('dawdling relative to the airliner')
+    **{(set, off): (started,) for set, started in (("set", "started"), ("sets", "starts"), ("setting", "starting"))
+       for off in ("off", "out")},
+    **{("at", "a", slow): ("slowly",) for slow in ("dawdle", "crawl", "snail's", "walk", "amble", "trundle")},
+    **{p: ("fast",) for p in (*(("at", "a", "breakneck", pace) for pace in ("clip", "pace", "speed", "rate")),
+                              ("at", "breakneck", "speed"), ("at", "breakneck", "pace"), ("with", "alacrity"),
+                              ("with", "great", "alacrity"))},
+    **{(pace, "relative", "to"): (said, "than") for pace, said in (
+        *((w, "slower") for w in ("slow", "slower", "dawdling", "crawling", "lagging", "sluggish", "leisurely")),
+        *((w, "faster") for w in ("fast", "faster", "quick", "quicker", "speedy", "swift", "racing")))},
     # a category by an older name of two words (one word: synonyms.txt)
     ("motor", "car"): ("car",), ("flying", "machine"): ("aeroplane",),
     ("the", "pair", "of", "them"): ("the", "two", "of", "them"),
@@ -363,7 +407,8 @@ IDIOMS = phrase_table({
         ("trailed", "moved"))},
     **{p: _START for p in (("right", "off", "the", "gun"), ("off", "the", "gun"), ("from", "the", "gun"),
                            ("right", "off", "the", "top"), ("off", "the", "top"),
-                           *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape")))},
+                           *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape",
+                                                                             "hour")))},
     # a ship's words for moving and standing ('dead in the water', 'making less way than')
     ("dead", "in", "the", "water"): ("static",), ("making", "way"): ("moving",), ("make", "way"): ("move",),
     **{("making", more, "way", "than"): ("moving", said, "than") for more, said in (("less", "slower"),
@@ -496,9 +541,9 @@ IDIOMS = phrase_table({
     # 'quick' is 'fast' ('the quick car', 'is it quick' were read as nothing); 'non-moving' is 'stationary'
     ("quick",): ("fast",),
     **{("non", *dash, "moving"): ("stationary",) for dash in ((), ("-",))},
-    **{(gather, "speed"): (accelerate,) for gather, accelerate in (
+    **{(gather, speed): (accelerate,) for gather, accelerate in (
         ("gathering", "accelerating"), ("gathers", "accelerates"), ("gathered", "accelerated"),
-        ("gather", "accelerate"))},
+        ("gather", "accelerate")) for speed in ("speed", "velocity", "pace", "momentum")},
     # a comparative said as a class ('the slower-moving vehicle'), as the grammar says the class
     **{(comparative, *dash, "moving"): said for comparative, said in (("slower", ("slow", "-", "moving")),
                                                                      ("faster", ("quickly", "moving")))

@@ -221,7 +221,8 @@ ACCELERATION_SAID = tuple(tokenize(phrase) for key in ("ACCELERATING", "ACCELERA
                           for phrase in templates()["lexicon"][key][pool])
 
 
-END_WORDS = {"end", "ends", "ended", "ending", "endeth", "finish", "finishes", "finished", "finale", "conclusion"}
+END_WORDS = {"end", "ends", "ended", "ending", "endeth", "finish", "finishes", "finished", "finale", "conclusion",
+             "culmination", "denouement", "termination"}
 
 
 ATTRIBUTE_SAID = {w for w, query in ASKED_QUERIES.items() if query.startswith("query_attributes")} | {
@@ -234,8 +235,8 @@ FUTURE_CUES = {"will", "would", "going", "gonna", "later", "after", "future", "n
 
 # ... and the video stopped, said in words a predictive question may use alone ('once the clip is halted, does ...')
 STOP_CUES = {w for stop in STOPPED_SAID for w in stop if w.isalpha() and w not in {"is", "was", "gets", "got", "s"}} \
-    | {"hereafter", "thereafter", "past", "forecast", "forecasting", "projected", "extrapolate", "extrapolating", "ahead",
-       "onward", "onwards", "resumes", "prediction", "predicting", "destined", "freeze", "paused", "cutoff",
+    | {"hereafter", "thereafter", "past", "forecast", "forecasting", "projected", "extrapolate", "extrapolating",
+       "ahead", "onward", "onwards", "resumes", "prediction", "predicting", "destined", "freeze", "paused", "cutoff",
        "truncation"}
 
 
