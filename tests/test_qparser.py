@@ -2706,3 +2706,28 @@ def test_a_thesaurus_a_logician_a_learners_topic_and_a_radio_caller():
         "Once the clip is arrested midway, with which vehicle will the yellow cruiser subsequently collide?": "which",
         "Blue bus and green car collide at what second?": "when",
         "Does the blue fighter jet stall at the start?": "stalls"})
+
+
+def test_everyday_speeds_offered_a_topic_after_a_time_and_an_engineers_words():
+    said, _ = dislocated_as_asked(tokenize("When they collide, the blue truck and the gray mountain bike, the truck "
+                                           "is more fast than the bike?"))
+    assert said == tokenize("When they collide, the blue truck is more fast than the gray mountain bike?")
+    # a statement about the pair in a sentence of its own is context, not a topic
+    kept = tokenize("Purple road bike and green truck, they crash. Is the bike slower than the truck?")
+    assert dislocated_as_asked(kept)[0] != kept[kept.index(",") + 1:]
+    parser = QuestionParser.load()
+    offered, leisurely, dash, grey, rest, propulsion = parser.parse_batch([
+        "In the opening moments, is the cyan scooter sat there, pottering along, or zipping about?",
+        "At the instant the brown double-decker clips the yellow sedan, is the double-decker the more leisurely one?",
+        "Suppose the grey SUV was standing still from the starting itself, will it dash the red bicycle?",
+        "When the airliner grey appears for the first time in the image, it moves slow, fast or it is static?",
+        "Given an initial condition of rest for the red SUV, would it still undergo an impact with the blue bicycle?",
+        "Which colour is the vehicle with propulsion active at t = 0?"])
+    assert offered[-2:] == ["start", "query_moving_velocity"] and leisurely[-1] == "slower_velocity"
+    assert "Counterfactual_static" in dash and grey[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert "filter_attributes[gray]" in grey and "Counterfactual_static" in rest
+    assert propulsion[-3:] == ["filter_accelerating", "unique", "query_attributes[color]"]
+    # an alternative that offers no speed is no choice of one ('..., would it crash the cyan bus, or keep apart?')
+    apart = parser.parse("Had the fighter jet hovered in the air from the start, would it crash the cyan bus, or keep "
+                         "apart?")
+    assert apart[-1] == "exist"

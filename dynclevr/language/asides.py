@@ -14,7 +14,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import coordinated_subject
-from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, mentions
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
                                      COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
@@ -22,9 +22,9 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, C
                                      FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
                                      IMAGINING, INTERJECTIONS, LATER_TIMES, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
                                      NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PLURALS, QUERY_NOUNS,
-                                     QUESTION_OPENERS, REST_WORDS, RESTING, SENTENCE_ENDS, SPEED_CLASS_WORDS,
-                                     START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES, TIME_OPENERS, UNNAMED,
-                                     YES_NO_OPENERS, asks_impact)
+                                     QUESTION_OPENERS, REST_WORDS, RESTING, SENTENCE_ENDS, SPEED_CHOICES,
+                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
+                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -115,6 +115,10 @@ def _says_something(span: list[str]) -> bool:
         w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() for w in span)
 
 
+def _offers_speed(span: list[str]) -> bool:
+    return any(tuple(span[k:k + len(c)]) == c for k in range(len(span)) for c in SPEED_CHOICES)
+
+
 def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
     the digressions read as nothing, or the words as they are and ()."""
@@ -124,14 +128,16 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     drop, read, start = set(), [], 0
     for c in commas:
         span = words[start:c]
-        if span and not _says_something(span):
+        # (not a speed offered to choose: 'is it still , dawdling , or hurrying ?')
+        if span and not _says_something(span) and not (words[c + 1:c + 2] == ["or"] and _offers_speed(span)):
             drop |= set(range(start, c + 1))
             read.append(" ".join(span))
         start = c + 1
     # ... and after the last comma, before the question mark ('..., my dear fellow?'), where it asks nothing itself
     # (', is it crawlig?' is the question, its slip not yet read)
     end = len(words) - (words[-1:] in (["?"], ["."]))
-    if words[start:end] and end - start <= 4 and not _says_something(words[start:end]) and \
+    if words[start:end] and end - start <= 4 and not _says_something(words[start:end]) and not _offers_speed(
+            words[start:end]) and \
             not (YES_NO_OPENERS | QUESTION_OPENERS | {"it", "they"}).intersection(words[start:end]):
         drop |= set(range(start - 1, end))
         read.append(" ".join(words[start:end]))
@@ -530,15 +536,28 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     """'blue minivan and green chopper , they collide ?' -> 'do blue minivan and green chopper collide ?', and 'the
     sedan , it is fast ?' -> 'is the sedan fast ?': the vehicles said first, then asked about as 'they' or 'it' in
     a statement with a question mark. With the words read so, or the words as they are and ()."""
+    # 'sedan and bus , at the start , sedan is more fast than bus ?': the vehicles said first as a topic (after a
+    # clause of time: 'when they collide , the blue pickup and the bike , the pickup is ...'), then named again in
+    # the question itself (a learner's topic and comment): the question, its shorter mentions named as the topic
+    # names them
+    lead = words.index(",") + 1 if words[:1] and words[0] in TIME_OPENERS and "," in words else 0
+    topic = coordinated_subject(words[lead:]) if words[-1:] == ["?"] else None
+    end = lead + topic[0] if topic else 0
+    if topic and len(topic[1]) == 2 and words[end:end + 1] == [","] and \
+            words[end + 1:end + 2] not in (["they"], ["it"]) and not SENTENCE_ENDS & set(words[end + 1:-1]):
+        named = [(words[lead + i:lead + j], ref) for i, j, ref in mentions(words[lead:end])]
+        out, k = words[:lead], end + 1
+        for i, j, ref in mentions(words[end + 1:]):
+            full = next((said for said, whole in named if generalises(ref, whole)), None)
+            out += words[k:end + 1 + i] + (full or words[end + 1 + i:end + 1 + j])
+            k = end + 1 + j
+        again = [ref for _, _, ref in mentions(words[end + 1:])]
+        if all(any(generalises(r, whole) for r in again) for _, whole in named):
+            return out + words[k:], ((" ".join(words[lead:end + 1]), "nothing, the vehicles said first"),)
     subject = coordinated_subject(words) if words[-1:] == ["?"] else None
     if subject is None:
         return words, ()
     end, named = subject
-    # 'sedan and bus , at the start , sedan is more fast than bus ?': the vehicles said first as a topic, then named
-    # again in the question itself (a learner's topic and comment): the topic is dropped
-    again = [ref for _, _, ref in mentions(words[end + 1:])]
-    if len(named) == 2 and words[end:end + 1] == [","] and all(ref in again for ref in named):
-        return words[end + 1:], ((" ".join(words[:end + 1]), "nothing, the vehicles said first"),)
     pronoun = ["they"] if len(named) == 2 else ["it"]
     if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
         return words, ()
@@ -750,7 +769,9 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         close = next((j for j in range(k + 2, min(k + 12, len(out))) if out[j] == ","), None) \
             if out[k] == "," and out[k + 1:k + 2] and out[k + 1] in ASIDE_STARTS and _coloured_before(out, k) else None
         # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
-        if close and "?" not in out[k:close] and set(out[close + 1:]) - ASKING_ONLY:
+        # (nor where speeds are offered after it: '..., the velocity of the suv is static, slow or fast?')
+        rest = set(out[close + 1:]) if close else set()
+        if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED):
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []
             continue
@@ -796,6 +817,7 @@ RENAMING = ASIDE_WORDS | OBJECT_WORDS | set(COLOR_NAMES) | {"gray", "grey"} | {
                                                           "middle", "centre", "center", "of", "picture", "frame"}
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
 ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
+SPEED_OFFERED = ASKING_ONLY | {",", *(w for choice in SPEED_CHOICES for w in choice)}
 
 
 def _coloured_before(words: list[str], k: int) -> bool:

@@ -295,7 +295,8 @@ COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured',
 # ... or straight after it, as Romance languages put it ('the sedan red, how fast ...', 'the bus yellow is moving?'),
 # where a comma or a verb follows ('is the bus red?' asks a colour)
 AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", "moves", "moved", "moving", "goes",
-                "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it"}
+                "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it", "appears", "appeared",
+                "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first"}
 
 
 def _noun_at(words: list[str], i: int) -> int:

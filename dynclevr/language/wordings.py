@@ -251,8 +251,9 @@ FALLING_INTO = (["fall", "into"], ["fall", "in"], ["fall"], ["fit", "into"], ["f
 
 
 def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'into which speed class does the red sedan fall ?' -> 'which speed class is the red sedan in ?'. With the
-    words read so, or the words as they are and ()."""
+    """'into which speed class does the red sedan fall ?' -> 'which speed class is the red sedan in ?' (asked as yes
+    or no, 'does it fall into the slow class', it is an idiom). With the words read so, or the words as they are and
+    ()."""
     for k, w in enumerate(words):
         j = k + (words[k + 1:k + 2] == ["speed"]) + 1
         if w not in ("which", "what") or words[j:j + 1] == [] or words[j] not in CLASS_NOUNS or \
@@ -379,6 +380,31 @@ IDIOMS = phrase_table({
        for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
     ("hauling",): ("moving", "fast"),
     ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",), ("speed", "reading"): ("speed",),
+    # Indian English's 'dash' for a collision ('will it dash the red bicycle?'; 'dashing along' stays a speed), and its
+    # 'itself' after a time ('from the starting itself')
+    **{(dash, after): (hit, after) for dash, hit in (("dash", "hit"), ("dashes", "hits"), ("dashed", "hit"),
+                                                     ("dashing", "hitting")) for after in ("the", "a", "an", "each")},
+    **{(start, "itself"): (start,) for start in ("start", "starting", "beginning", "outset")},
+    # everyday speeds and starts ('has it got its foot down', 'going like mad', 'when things get going', 'started out')
+    **{(got, "its", "foot", "down"): ("accelerating",) for got in ("got", "with")},
+    ("like", "mad"): ("fast",), ("like", "crazy"): ("fast",),
+    **{p: _START for p in (("when", "things", "get", "going"), ("as", "things", "get", "going"),
+                           ("when", "things", "got", "going"))},
+    **{(start, "out"): (start,) for start in ("started", "starts", "start", "starting")},
+    # an engineer's words ('velocity magnitude class', 'kinematic state', 'undergo an impact with', 'propulsion active',
+    # 'positive longitudinal acceleration', 'heading vector', 'holding a hover')
+    ("velocity", "magnitude", "class"): ("speed",), ("velocity", "class"): ("speed",),
+    ("velocity", "magnitude"): ("velocity",), ("speed", "magnitude"): ("speed",),
+    ("kinematic", "state"): ("state",), ("kinematic", "states"): ("state",), ("heading", "vector"): ("direction",),
+    **{(undergo, *an, impact, *w): (collide, *w) for undergo, collide in (
+        ("undergo", "collide"), ("undergoes", "collides"), ("underwent", "collided"), ("undergoing", "colliding"))
+       for an in ((), ("an",), ("a",)) for impact in ("impact", "collision") for w in ((), ("with",))},
+    ("propulsion", "active"): ("engine", "on"), ("propulsion", "on"): ("engine", "on"),
+    **{(shows, "positive", *longitudinal, "acceleration"): ("is", "accelerating") for shows in (
+        "shows", "has", "exhibits", "undergoes", "experiences") for longitudinal in ((), ("longitudinal",))},
+    **{(holding, "a", "hover"): ("hovering",) for holding in ("holding", "in", "maintaining")},
+    ("over", "the", "duration", "of"): ("during",), ("for", "the", "duration", "of"): ("during",),
+    ("field", "of", "view"): ("view",),
     # what follows the stopped video ('is it going to collide with anything from here on?', '... after this point?')
     **{p: ("afterwards",) for p in (("from", "here", "on"), ("from", "this", "point", "on"), ("from", "now", "on"),
                                     ("after", "this", "point"), ("beyond", "this", "point"), ("past", "this", "point"),
@@ -432,7 +458,8 @@ IDIOMS = phrase_table({
     # a speed class said as a simulation's bin ('the actor in the fast speed bin', 'does it fall in the slow bin')
     **{(*fall, p, "the", c, *n, b): (*verb, moving if fall else c)
        for c, moving in (("static", "static"), ("slow", "slowly"), ("fast", "fast"))
-       for n in ((), ("speed",), ("velocity",)) for b in ("bin", "bucket", "class", "category") for p in ("in", "into")
+       for n in ((), ("speed",), ("velocity",), ("velocity", "magnitude"), ("speed", "magnitude"))
+       for b in ("bin", "bucket", "class", "category") for p in ("in", "into")
        for fall, verb in (((), ()), (("fall",), ("move",)), (("falls",), ("moves",)))},
     **{(be, passed, "by"): (be, "slower", "than") for be in ("is", "was", "be", "being")
        for passed in ("outpaced", "outrun", "outran", "overtaken", "outstripped")},
@@ -707,8 +734,15 @@ IN_PLACE = (["at", "what", "speed"], ["at", "which", "speed"], ["at", "what", "v
 
 
 # A comparative said with 'more' or 'less' ('is the red car more fast than the bus?'), as the grammar says it
-COMPARATIVES = {("more", "fast"): "faster", ("more", "quick"): "quicker", ("more", "slow"): "slower",
-                ("less", "fast"): "slower", ("less", "quick"): "slower", ("less", "slow"): "faster"}
+COMPARATIVES = {("more", "quick"): "quicker", ("less", "fast"): "slower", ("less", "quick"): "slower",
+                ("less", "slow"): "faster",
+                # 'the more leisurely one'
+                **{("more", w): "slower" for w in ("slow", "leisurely", "sluggish", "sedate", "unhurried")},
+                **{("more", w): "faster" for w in ("fast", "rapid", "speedy", "swift", "hasty")}}
+# ... and an adverb's, only before 'than' ('moving more rapidly than the bus'; 'is it moving more slowly?' compares
+# it with itself)
+COMPARED_ADVERBS = {**{("more", w): "slower" for w in ("slowly", "sluggishly")},
+                    **{("more", w): "faster" for w in ("quickly", "rapidly", "swiftly")}}
 # longest first
 PAIR_SAID = (["of", "the", "two", "vehicles"], ["of", "the", "two"], ["of", "both"], ["of", "the", "pair"])
 
@@ -718,7 +752,8 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     two' -> 'the faster one' (no family was read). With the words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
-        said = COMPARATIVES.get(tuple(words[k:k + 2]))
+        said = COMPARATIVES.get(tuple(words[k:k + 2])) or (
+            COMPARED_ADVERBS.get(tuple(words[k:k + 2])) if words[k + 2:k + 3] == ["than"] else None)
         pair = next((p for p in PAIR_SAID if words[k:k + len(p)] == p), None) if out and out[-1] in COMPARISONS \
             else None
         if said:

@@ -105,7 +105,17 @@ SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "p
                  # 'moving fast, slowly, or not at all', 'or standing still'
                  ("not", "at", "all"): "static", ("standing", "still"): "static", ("at", "rest"): "static",
                  ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
-                 ("rapidly",): "fast", ("chill",): "slow"}   # a game's chat: 'afk, chill or full send?'
+                 ("rapidly",): "fast", ("chill",): "slow",   # a game's chat: 'afk, chill or full send?'
+                 # everyday words offered ('is it sat there, pottering along, or zipping about?')
+                 **{w: "static" for w in (("sat", "there"), ("sitting", "there"), ("sitting", "still"), ("idle",),
+                                          ("not", "budging"), ("at", "a", "standstill"), ("idling",))},
+                 **{w: "slow" for w in (("crawling",), ("dawdling",), ("creeping",), ("pottering",), ("plodding",),
+                                        ("trundling",), ("moving", "slowly"), ("going", "slowly"), ("going", "slow"),
+                                        ("moving", "slow"), ("sluggish",), ("leisurely",))},
+                 **{w: "fast" for w in (("speeding",), ("racing",), ("hurrying",), ("zipping",), ("zooming",),
+                                        ("whizzing",), ("rushing",), ("speedy",), ("swift",), ("swiftly",),
+                                        ("zipping", "about"), ("zipping", "along"), ("whizzing", "along"),
+                                        ("moving", "fast"), ("going", "fast"), ("moving", "quickly"))}}
 VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
 DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front", "back")},
                      ("upwards",): "up", ("upward",): "up", ("downwards",): "down", ("downward",): "down",
