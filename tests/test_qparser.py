@@ -27,7 +27,7 @@ from dynclevr.language.asides import (asides_dropped, corrections_dropped, digre
                                       ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
-                                      form_unasked, form_unmatched, future_unread, impact_like, impact_unsaid,
+                                      form_unasked, form_unmatched, future_unread, impact_unsaid,
                                       motion_unfiltered, named_attribute, reversed_reading, speed_unsaid, time_unasked)
 from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first,
                                        told_otherwise_as_imagined)
@@ -38,13 +38,14 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
                                         times_joined)
 from dynclevr.language.surface import (archaic_as_said, corrections_starred, glosses_read, homophones_as_said,
-                                       quoted_question, shorthand_as_said, worksheet_as_said)
+                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
                                         heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
+from dynclevr.language.words import impact_like
 from dynclevr.language.code import code_as_said
 from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
                                           concrete_program, corefer, delexicalise, described_as_named,
@@ -52,7 +53,8 @@ from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstrac
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import EOS_ID, UNK_ID, Vocab, run_together, slipped, slips, stretched
+from dynclevr.language.vocab import (EOS_ID, UNK_ID, Vocab, run_together, slipped, slips, sound_index, sound_key,
+                                     sounded, stretched)
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -2257,7 +2259,7 @@ def test_a_reading_must_read_what_is_imagined_and_what_floats():
     parser = QuestionParser.load()
     # each was read as a question about the video as it is (the final measure's wrong readings)
     assert_refused(parser, {"brown motorbike starting slow instead, it hits the gray car or not?": "instead",
-                            "cf: gray one starts slow instead -> does gray collide w/ the pickup?": "instead",
+                            "cf: gray one starts slow instead -> does gray collide w/ the pickup?": "'cf'",
                             "imagine the chopper begins fast. does it collide with the bus then": "imagine",
                             "quick check, plane floating at the beginning or not?": "floating",
                             "How fast is the school bus moving in the very last frame?": "end"})
@@ -2731,3 +2733,30 @@ def test_everyday_speeds_offered_a_topic_after_a_time_and_an_engineers_words():
     apart = parser.parse("Had the fighter jet hovered in the air from the start, would it crash the cyan bus, or keep "
                          "apart?")
     assert apart[-1] == "exist"
+
+
+def test_a_vehicle_spelt_by_ear_and_a_label_that_imagines():
+    assert sound_key("fiter") == sound_key("fighter") and sound_key("stayshun") == sound_key("station")
+    index = sound_index({"fighter", "future", "blue", "school"})
+    assert sounded("fiter", index) == "fighter" and sounded("skool", index) == "school"
+    assert sounded("fiter", sound_index({"fighter", "fitter"})) is None   # two alike: none clearly the one
+    parser = QuestionParser.load()
+    said, read = spelt_by_ear(tokenize("is the blu skool bus fast ? the plain red car"), parser.sounds,
+                              parser.readable)
+    assert said == tokenize("is the blue school bus fast ? the plain red car")
+    assert read == (("blu", "blue"), ("skool", "school"))
+    # only in a vehicle's description ('beyond the truncation point' is no 'bendy'), and spelt somewhat alike ('on a
+    # scale of 1 to 10' is no 'school')
+    assert spelt_by_ear(tokenize("beyond the point , is it blu ?"), parser.sounds, parser.readable)[1] == ()
+    assert spelt_by_ear(tokenize("on a scale of 1 to 10"), parser.sounds, parser.readable)[1] == ()
+    fighter, private = parser.parse_batch([
+        "supose the green fiter jet was hovering in the air from the very beginning, would it still hit the yellow car?",
+        "does the green privit jet hit anything at all in the video?"])
+    assert "filter_attributes[fighter]" in fighter and "Counterfactual_floating" in fighter
+    assert private[-1] == "exist" and "filter_attributes[jet]" in private
+    assert_refused(parser, {
+        "CF: yellow city bike starts fast / hits blue pickup? Y/N": "imagines otherwise",
+        "Subject: yellow motorbike; State @ start = not moving? (y/n)": "answer's form",
+        "Wasn't the green pickup moving slowly at the moment the video was paused?": "other than the start",
+        "Which colour has the ground under the vehicles?": "ground",
+        "why did the brown pickup crash into the perple scooter?": "why"})

@@ -20,11 +20,12 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, C
                                      COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
                                      CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
                                      FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
+                                     IMAGINING_LABELS,
                                      IMAGINING, INTERJECTIONS, LATER_TIMES, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
                                      NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PLURALS, QUERY_NOUNS,
                                      QUESTION_OPENERS, REST_WORDS, RESTING, SENTENCE_ENDS, SPEED_CHOICES,
                                      SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
-                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact)
+                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -111,8 +112,10 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # is the part I love, was the red sedan ...', 'at what speed, I wonder, was it moving?'): no vehicle, motion,
 # collision, time, place, condition, negation or asking in it.
 def _says_something(span: list[str]) -> bool:
+    # (an impact's word misspelt too: 'wen they colide ,')
     return bool(set(span) & SAYING) or asks_impact(span) or any(
-        w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() for w in span)
+        w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() or len(w) > 4 and impact_like(w)
+        for w in span)
 
 
 def _offers_speed(span: list[str]) -> bool:
@@ -722,8 +725,9 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
         elif end is None or end + 1 == len(words) or set(heading) & (
-                OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING | MOTION_WORDS | MOTION_DESCRIPTIONS
-                | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading) or _video_end(words[:end + 1]):
+                OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING_LABELS | IMAGINING
+                | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading) or \
+                _video_end(words[:end + 1]):
             break   # one that says what is asked stays, and one that says the video stopped ('video stops here .')
         # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
         # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')

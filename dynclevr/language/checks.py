@@ -13,7 +13,7 @@ of who or what read as yes or no (`form_unasked`); a direction or a place asked 
 `direction_unasked`); the video's end or another time than the start ('in the middle', 'after two seconds':
 `time_unasked`), a time window ('within 2 seconds': `clock_unasked`), a collision at the start (`collision_at_start`); a
 reading of two named objects that drops an indefinite one (`anything_unasked`); a collision no word says
-(`impact_unsaid`, unless an unknown word may be an impact's misspelt: `impact_like`) or one left unread
+(`impact_unsaid`, unless an unknown word may be an impact's misspelt: `words.impact_like`) or one left unread
 (`collision_unread`); what a vehicle does or what happens (`what_happens`); a colour or a type no word asks
 (`attribute_unsaid`); 'faster' of nothing (`uncompared`); 'afterwards' read within the video or a reading after the
 video no word says (`future_unread`); a speed, floating or a comparison no word says (`speed_unsaid`, `floating_unsaid`,
@@ -28,16 +28,14 @@ start (`end_unread`); a size (`size_unread`)."""
 
 from __future__ import annotations
 
-from difflib import SequenceMatcher
-
 from dynclevr.language.context import _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
 from dynclevr.language.refusals import _asked
-from dynclevr.language.times import FILM_WORDS
+from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
                                      ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMPARING, COMPARISONS, CONDITION_LABELS,
                                      DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES,
-                                     GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS,
+                                     GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS,
                                      MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, REST_WORDS, RESTING,
                                      REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOP_CUES, UNMOVED, VIEWER,
                                      YES_NO_OPENERS, asks_impact, _head)
@@ -227,6 +225,9 @@ CLOCK_WORDS = {"second", "seconds", "frame", "frames", "s", "sec", "secs"}
 ORDINAL_WORDS = {"first", "1", "0", "one", "zero"}   # 'frame 1', 'the first second': the start
 
 
+STOPPING = END_SAID | {"paused", "pauses", "cut", "cuts", "froze", "freezes", "halted", "halts"}
+
+
 def time_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading at the start is not the question's ('' when it is): the question says no word of the start but
     another time ('in the middle of the video, is the red car fast?', 'after two seconds', 'at frame 50', 'ever'),
@@ -234,7 +235,10 @@ def time_unasked(words: list[str], program: list[str]) -> str:
     if "start" not in program or START_WORDS & set(words) or "first" in words:
         return ""
     said = next((" ".join(t) for k in range(len(words)) for t in (*NOT_START, ["before"], ["until"])
-                 if words[k:k + len(t)] == t), None) or _future_said(words)   # 'faster than the bus after the video?'
+                 if words[k:k + len(t)] == t), None) or _future_said(words) or next(
+        # 'faster than the bus after the video?', 'moving slowly at the moment the video was paused?'
+        (f"the {w} {s}" for k, w in enumerate(words) if w in FILM_WORDS for s in words[k + 1:k + 4] if s in STOPPING),
+        None)
     clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if (a in CLOCK_WORDS and b.isdigit() or
                                                                    b in CLOCK_WORDS and (a.isdigit() or a in NUMBERS))
                   and not {a, b} & ORDINAL_WORDS), None)
@@ -410,7 +414,7 @@ def imagining_unread(words: list[str], program: list[str]) -> str:
     if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program or \
             "futureEvents" in program:
         return ""
-    said = next((w for w in words if w in IMAGINING_SAID | {"assume", "assuming"}), None) or \
+    said = next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
         next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
              None)   # 'the engine is on from the very start. Would the SUV hit the bike?'
@@ -496,15 +500,18 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     return ""
 
 
+def answer_form_unmatched(read_as: tuple[tuple[str, str], ...], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question gives yes or no as its answer's form ('State
+    @ start = not moving? (y/n)'), and its nearest reading asks which."""
+    if any(why == "nothing, an answer's form" for _, why in read_as) and OPS[operation(program[-1])].output is str:
+        return ("the question asks yes or no (its answer's form), but its nearest reading asks which (a speed, a "
+                "direction, a colour or a type)")
+    return ""
+
+
 COLLISION_OPERATIONS = {"filter_collision", "get_all_col_partners"}
 # besides IMPACT_STEMS, the words a collision is said with: 'run into', 'drive into', 'each other'
 IMPACT_SAID = {"into", "onto", "run", "runs", "ran", "running", "other", "another"}
-
-
-def impact_like(word: str) -> bool:
-    """Whether an unknown word may be an impact's word misspelt ('collied', 'crahsed', 'tocuh'), which the decoder
-    reads a collision in from the rest of the question; 'too', 'while' are not."""
-    return any(SequenceMatcher(None, word[:len(s) + 1], s).ratio() >= 0.7 for s in IMPACT_STEMS)
 
 
 def impact_unsaid(words: list[str], program: list[str]) -> str:

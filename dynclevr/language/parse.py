@@ -54,14 +54,15 @@ from dynclevr.language.asides import (asides_dropped, corrections_dropped, digre
                                       examination_as_asked, framing_dropped, hedges_dropped, hypothesis_as_asked,
                                       interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
                                       requested_as_asked, ticket_fields_read, wagers_read)
-from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, anything_unasked, attribute_unsaid,
-                                      clock_unasked, collision_at_start, collision_unread, compared_unsaid,
-                                      comparison_imagined, comparison_unsaid, condition_subject_first, condition_unsaid,
-                                      direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
-                                      form_unmatched, future_unread, imagining_unread, impact_like, impact_unsaid,
-                                      motion_unfiltered, motion_unread, named_attribute, operation, property_unread,
-                                      reversed_reading, size_unread, speed_unsaid, still_continuing, time_unasked,
-                                      uncompared, visibility_unread, what_happens)
+from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched,
+                                      anything_unasked, attribute_unsaid, clock_unasked, collision_at_start,
+                                      collision_unread, compared_unsaid, comparison_imagined, comparison_unsaid,
+                                      condition_subject_first, condition_unsaid, direction_unasked, end_unread,
+                                      floating_unread, floating_unsaid, form_unasked, form_unmatched, future_unread,
+                                      imagining_unread, impact_unsaid, motion_unfiltered, motion_unread,
+                                      named_attribute, operation, property_unread, reversed_reading, size_unread,
+                                      speed_unsaid, still_continuing, time_unasked, uncompared, visibility_unread,
+                                      what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first, scenario_as_asked,
                                        settings_as_imagined, told_otherwise_as_imagined)
@@ -76,11 +77,13 @@ from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW
                                         several_asked, speed_measure, speed_measured, speeds_alike, times_joined,
                                         unknown_property, _unknown_vehicle)
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.surface import (archaic_as_said, colour_clause_as_named, corrections_starred, glosses_read,
-                                       homophones_as_said, quoted_question, shorthand_as_said, worksheet_as_said)
+from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, colour_clause_as_named, corrections_starred,
+                                       glosses_read, homophones_as_said, quoted_question, shorthand_as_said,
+                                       spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, stretched
+from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, sound_index,
+                                     stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
                                         heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
@@ -88,7 +91,8 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
-                                     PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS)
+                                     PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
+                                     impact_like)
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -155,6 +159,8 @@ class QuestionParser:
         self.synonyms = {w: known for w, known in synonyms().items()
                          if w not in self.known and all(k in self.known for k in known)}
         self.readable = self.known | set(self.synonyms)
+        # ... and a word spelt as it sounds, as the vehicle's name or the word of the questions' own it sounds like
+        self.sounds = sound_index(SPELT_BY_EAR)
         # ... and so does a word of a known word's stem, or else of a lexicon word's
         self.stems = {**_by_stem(self.synonyms), **_by_stem({w: [w] for w in self.known})}
         # Last, WordNet's: an unknown word that shares a main sense with a known one (wordnet.py), read by its stem
@@ -247,7 +253,8 @@ class QuestionParser:
         # a collision against the words as read, typos fixed ('colide'), where no word it does not know may be an
         # impact's misspelt (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
-            why := form_unmatched(said, c.program) or direction_unasked(said, c.program)
+            why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
+            or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
@@ -287,7 +294,8 @@ class QuestionParser:
         words, shorthand = shorthand_as_said(words)
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
-        shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded
+        words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
+        shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
         words, clause = colour_clause_as_named(words)

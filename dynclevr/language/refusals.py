@@ -31,9 +31,9 @@ from dynclevr.language.times import FILM_WORDS, _video_end
 from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, COMES_IN_WORDS,
                                      COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS, END_TIMES,
                                      ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES,
-                                     MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS, PARTNER_SAID, PLURALS,
-                                     REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID,
-                                     VIEWER, YES_NO_OPENERS, asks_impact, _head)
+                                     MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_VEHICLES,
+                                     PARTNER_SAID, PLURALS, REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS,
+                                     START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS, asks_impact, _head)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -191,6 +191,11 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if scenery:
         return (f"the question asks about a collision with the '{scenery}', which is no vehicle here (they ask about "
                 "collisions between vehicles)")
+    # the colour of what is no vehicle ('Which colour has the ground under the vehicles?' was read as a slow one's)
+    ground = next((w for k, w in enumerate(said) if w in SCENE_PARTS and said[k - 1:k] == ["the"] and
+                   {"colour", "color", "colours", "colors"} & set(said[max(k - 4, 0):k])), None)
+    if ground:
+        return f"the question asks the colour of the '{ground}', which is no vehicle here (they ask a vehicle's colour)"
     path = next((w for w in said if w in PATH_SHAPES), None)
     if path:
         return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "
@@ -324,16 +329,11 @@ TRYING = {"try", "tries", "tried", "trying", "attempt", "attempts", "attempted",
 ARRANGEMENT = {"queue", "queues", "queued", "queueing", "queuing", "convoy", "convoys", "formation", "traffic", "jam",
                "lined"}
 STALLING = {"stall", "stalls", "stalled", "stalling"}
-# what a vehicle has that no question asks ('what's the license plate on the truck' was read as its speed), and
-# vehicles no video shows ('what colour is the boat floating ...' as the floating vehicle's colour)
+# what a vehicle has that no question asks ('what's the license plate on the truck' was read as its speed); vehicles
+# no video shows are words.OTHER_VEHICLES
 FITTINGS = {"license", "licence", "plate", "plates", "registration", "brand", "logo", "logos", "wheel", "wheels",
             "tire", "tires", "tyre", "tyres", "window", "windows", "door", "doors", "headlight", "headlights", "price",
             "owner", "horsepower", "fuel", "mileage", "seat", "seats", "propeller", "propellers", "wing", "wings"}
-OTHER_VEHICLES = {"boat", "boats", "ship", "ships", "train", "trains", "tram", "trams", "tractor", "tractors",
-                  "helicopter", "helicopters", "drone", "drones", "balloon", "balloons", "rocket", "rockets",
-                  "skateboard", "skateboards", "submarine", "yacht", "canoe", "kayak", "horse", "horses", "cart",
-                  "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine",
-                  "locomotive", "locomotives", "glider", "gliders", "hovercraft"}
 # who caused a collision ('which vehicle was at fault in the collision ...' was read as whether they collide)
 FAULT = {"fault", "faults", "blame", "blamed", "blameworthy", "liable", "liability", "guilty", "culpable"}
 # an opinion of a vehicle ('would you recommend the bus?' was read as whether it collides), how the video was made
@@ -368,6 +368,7 @@ NO_FAMILY_WORDS = (
 )
 SCENERY = {"wall", "walls", "barrier", "barriers", "fence", "building", "buildings", "tree", "trees", "curb", "kerb",
            "pole", "sign"}   # 'does the jet hit the wall?' was read as whether it hits anything
+SCENE_PARTS = SCENERY | {"ground", "floor", "sky", "background", "road", "surface", "scene", "shadow", "shadows"}
 # one vehicle's motion relative to another's ('is it chasing the bike?', 'does it overtake the bus?' were read as
 # collisions), said of a vehicle ('passes the bus'; not 'passed by', 'the frames that follow')
 RELATIVE_MOTION = {"overtake", "overtakes", "overtook", "overtaking", "chase", "chases", "chased", "chasing", "follow",

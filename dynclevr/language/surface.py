@@ -14,8 +14,11 @@ from difflib import SequenceMatcher
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
+from dynclevr.language.tokenize import SPELLINGS
+from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
-                                     NAMING, QUERY_NOUNS, QUESTION_OPENERS, SPEED_CHOICES, asks_impact)
+                                     GENERIC_NOUNS, NAMING, OTHER_COLOURS, OTHER_VEHICLES, QUERY_NOUNS,
+                                     QUESTION_OPENERS, SPEED_CHOICES, asks_impact)
 
 # A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
 # false: the red sedan is moving fast.', 'Circle one: static / slow / fast', 'it is moving ______ (static/slow/fast).')
@@ -360,3 +363,33 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 
 # the words a note offers split by slashes ('static/slow/fast', 'left/right')
 SLASHED = {w for choices in (SPEED_CHOICES, DIRECTION_CHOICES) for said in choices for w in said}
+
+
+# what a word spelt by ear is read as: a colour or a word of a vehicle's name only. Real words the parser does not know
+# carry a question's meaning ('end' is no 'and', 'weight' no 'what', 'clear' no 'colour', 'pile-up' no 'people'),
+# and without a dictionary a misspelling of a sentence's word cannot be told from a word of its own
+SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pickup", "city", "dirt", "airplane",
+                                            "motorcycle"}
+# ... and never from a word that names what no vehicle is ('white', 'tractor'), nor from a real word said like a
+# vehicle's ('the plain red car')
+NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great"}
+
+
+def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[str]
+                 ) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the blu skool bus ...' -> 'is the blue school bus ...', 'the stayshun wagon' -> 'the station wagon': a word
+    the parser cannot read (not of `readable`), spelt as it sounds, read as the colour or name's word of `index`
+    (`vocab.sound_index` of SPELT_BY_EAR) it sounds like (`vocab.sounded`), where it stands in a vehicle's
+    description. With the words read so, or the words as they are and ()."""
+    # (a slip of the fingers is read as one first: 'cash' is 'crash', 'fater' 'faster')
+    heard = {w: k for w in set(words) if w not in readable | SPELT_BY_EAR | NOT_SPELT_BY_EAR
+             and not slips(w, readable, SPELLINGS) and (k := sounded(w, index))}
+    fixed = [heard.get(w, w) for w in words]
+    # in a vehicle's description: a colour before a vehicle's name, a name's word after a determiner, a colour or
+    # another name's word, or before one ('beyond the truncation point' is no 'bendy')
+    names = SPELT_BY_EAR - set(COLOR_NAMES)
+    out = [w if said not in heard or (nxt in names | GENERIC | GENERIC_NOUNS if w in COLOR_NAMES else
+                                      before in DETERMINERS | names or nxt in names | GENERIC_NOUNS) else said
+           for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
+    read = tuple((said, w) for said, w in zip(words, out) if said != w)
+    return (out, tuple(dict.fromkeys(read))) if read else (words, ())

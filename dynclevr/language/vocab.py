@@ -6,6 +6,7 @@ import itertools
 import json
 import re
 from collections import Counter
+from difflib import SequenceMatcher
 from pathlib import Path
 from typing import Iterable
 
@@ -131,3 +132,44 @@ def run_together(word: str, words: set[str]) -> str | None:
     space or hyphen between them, where it splits so one way only; else None."""
     splits = [f"{word[:k]} {word[k:]}" for k in range(2, len(word) - 1) if word[:k] in words and word[k:] in words]
     return splits[0] if len(splits) == 1 else None
+
+
+# How English letters are said, as a speller by ear writes them ('fiter' for 'fighter', 'stayshun' for 'station',
+# 'culler' for 'colour', 'enjin' for 'engine'): rewrites applied in order ('%' is the sound of 'sh'), then vowels after
+# the first letter dropped and doubled letters made one.
+SOUNDS = ((r"x", "ks"), (r"ough", "o"), (r"ould", "ud"), (r"igh", "i"), (r"gh", ""), (r"ph", "f"), (r"wh", "w"),
+          (r"sch", "sk"), (r"[ts]ion", "%n"), (r"sh", "%"), (r"ch", "%"), (r"ck", "k"), (r"c(?=[eiy])", "s"),
+          (r"c", "k"), (r"q", "k"), (r"z", "s"), (r"g(?=[eiy])", "j"), (r"kn", "n"), (r"wr", "r"), (r"y", "i"),
+          (r"our$", "or"))
+
+
+def sound_key(word: str) -> str:
+    """A key that words said alike share: 'fighter' and 'fiter' -> 'ftr', 'school' and 'skool' -> 'skl'."""
+    for pattern, said in SOUNDS:
+        word = re.sub(pattern, said, word)
+    head, rest = ("a" if word[:1] in "aeiou" else word[:1]), re.sub(r"[aeiou]", "", word[1:])
+    return re.sub(r"(.)\1+", r"\1", head + rest)
+
+
+def sound_index(words: Iterable[str]) -> dict[str, list[str]]:
+    """`words` of 3+ letters by their `sound_key`."""
+    index: dict[str, list[str]] = {}
+    for w in sorted(words):
+        if len(w) >= 3 and w.isalpha():
+            index.setdefault(sound_key(w), []).append(w)
+    return index
+
+
+def sounded(word: str, index: dict[str, list[str]]) -> str | None:
+    """The word of `index` that `word` (3+ letters) sounds like as its letters are said and is spelt somewhat like:
+    the only one of its key, or of several the one spelt most like it, where it is clearly so ('fiter': 'fighter',
+    not 'future'); else None."""
+    if len(word) < 3 or not word.isalpha():
+        return None
+    ranked = sorted(((SequenceMatcher(None, word, w).ratio(), w) for w in index.get(sound_key(word), [])),
+                    reverse=True)
+    # spelt somewhat alike as well ('heavier' is no 'hover')
+    if not ranked or ranked[0][0] < 0.55 or len(ranked) > 1 and (ranked[0][0] < 0.6
+                                                                  or ranked[0][0] - ranked[1][0] < 0.1):
+        return None
+    return ranked[0][1]

@@ -5,6 +5,8 @@ said first (`_head`), and whether it speaks of a collision (`asks_impact`)."""
 
 from __future__ import annotations
 
+from difflib import SequenceMatcher
+
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.language.references import CATEGORY_SAID, OBJECT_WORDS
 from dynclevr.language.tokenize import tokenize
@@ -46,6 +48,9 @@ IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "prete
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
                     "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate"}
+# ... of them, a label that makes what follows imagined ('Hypothetical: brown SUV starts slow -> collision with ...?')
+IMAGINING_LABELS = {"assume", "assuming", "hypothetical", "hypothetically", "counterfactual", "cf", "what-if", "whatif",
+                    "intervention"}
 # A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
 # 'The SUV hits a vehicle. What kind of vehicle is that?'): the question is left whole, which reads it so
 UNNAMED = {"something", "someone", "somebody"}
@@ -59,6 +64,12 @@ SHAPE_ASKED = ("type", "kind", "sort", "shape", "model", "category", "class")   
 OTHER_COLOURS = {"pink", "orange", "white", "black", "silver", "navy", "teal", "tan", "khaki", "magenta", "beige",
                  "cream", "ivory", "lime", "olive", "peach", "coral", "lavender", "rose", "mauve", "copper", "amber",
                  "lilac", "fuchsia", "rainbow", "striped", "spotted"}
+# vehicles no video shows ('what colour is the boat floating ...' was read as the floating vehicle's colour)
+OTHER_VEHICLES = {"boat", "boats", "ship", "ships", "train", "trains", "tram", "trams", "tractor", "tractors",
+                  "helicopter", "helicopters", "drone", "drones", "balloon", "balloons", "rocket", "rockets",
+                  "skateboard", "skateboards", "submarine", "yacht", "canoe", "kayak", "horse", "horses", "cart",
+                  "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine",
+                  "locomotive", "locomotives", "glider", "gliders", "hovercraft"}
 
 NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
 NAMING = OBJECT_WORDS | NOUNS_SAID   # the words of a vehicle's name
@@ -285,6 +296,12 @@ START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "be
 
 def _at(words: list[str], phrases) -> tuple[int, tuple] | None:
     return next(((k, p) for k in range(len(words)) for p in phrases if tuple(words[k:k + len(p)]) == p), None)
+
+
+def impact_like(word: str) -> bool:
+    """Whether an unknown word may be an impact's word misspelt ('collied', 'crahsed', 'tocuh'), which the decoder
+    reads a collision in from the rest of the question; 'too', 'while' are not."""
+    return any(SequenceMatcher(None, word[:len(s) + 1], s).ratio() >= 0.7 for s in IMPACT_STEMS)
 
 
 def asks_impact(words: list[str]) -> bool:
