@@ -373,23 +373,27 @@ SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pic
 # ... and never from a word that names what no vehicle is ('white', 'tractor'), nor from a real word said like a
 # vehicle's ('the plain red car')
 NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great"}
+NAME_SAID = SPELT_BY_EAR - set(COLOR_NAMES)
+BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
+NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS
 
 
 def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[str]
                  ) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'is the blu skool bus ...' -> 'is the blue school bus ...', 'the stayshun wagon' -> 'the station wagon': a word
+    """'is the blu skool bus ...' -> 'is the blue school bus ...', 'the privit jet' -> 'the private jet': a word
     the parser cannot read (not of `readable`), spelt as it sounds, read as the colour or name's word of `index`
     (`vocab.sound_index` of SPELT_BY_EAR) it sounds like (`vocab.sounded`), where it stands in a vehicle's
     description. With the words read so, or the words as they are and ()."""
     # (a slip of the fingers is read as one first: 'cash' is 'crash', 'fater' 'faster')
-    heard = {w: k for w in set(words) if w not in readable | SPELT_BY_EAR | NOT_SPELT_BY_EAR
+    heard = {w: k for w in set(words) if w not in readable and w not in SPELT_BY_EAR | NOT_SPELT_BY_EAR
              and not slips(w, readable, SPELLINGS) and (k := sounded(w, index))}
+    if not heard:
+        return words, ()
     fixed = [heard.get(w, w) for w in words]
     # in a vehicle's description: a colour before a vehicle's name, a name's word after a determiner, a colour or
     # another name's word, or before one ('beyond the truncation point' is no 'bendy')
-    names = SPELT_BY_EAR - set(COLOR_NAMES)
-    out = [w if said not in heard or (nxt in names | GENERIC | GENERIC_NOUNS if w in COLOR_NAMES else
-                                      before in DETERMINERS | names or nxt in names | GENERIC_NOUNS) else said
-           for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
+    out = [w if said not in heard or (nxt in NAMED_AFTER if w in COLOR_NAMES else
+                                      before in BEFORE_NAME or nxt in NAMED_AFTER)
+           else said for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
     read = tuple((said, w) for said, w in zip(words, out) if said != w)
     return (out, tuple(dict.fromkeys(read))) if read else (words, ())

@@ -134,7 +134,7 @@ def run_together(word: str, words: set[str]) -> str | None:
     return splits[0] if len(splits) == 1 else None
 
 
-# How English letters are said, as a speller by ear writes them ('fiter' for 'fighter', 'stayshun' for 'station',
+# How English letters are said, as a speller by ear writes them ('fiter' for 'fighter', 'privit' for 'private',
 # 'culler' for 'colour', 'enjin' for 'engine'): rewrites applied in order ('%' is the sound of 'sh'), then vowels after
 # the first letter dropped and doubled letters made one.
 SOUNDS = ((r"x", "ks"), (r"ough", "o"), (r"ould", "ud"), (r"igh", "i"), (r"gh", ""), (r"ph", "f"), (r"wh", "w"),
@@ -168,7 +168,7 @@ def sounded(word: str, index: dict[str, list[str]]) -> str | None:
         return None
     ranked = sorted(((SequenceMatcher(None, word, w).ratio(), w) for w in index.get(sound_key(word), [])),
                     reverse=True)
-    # spelt somewhat alike as well ('heavier' is no 'hover')
+    # spelt somewhat alike as well ('scale' is no 'school')
     if not ranked or ranked[0][0] < 0.55 or len(ranked) > 1 and (ranked[0][0] < 0.6
                                                                   or ranked[0][0] - ranked[1][0] < 0.1):
         return None
