@@ -217,7 +217,8 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 # A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
 # in the middle, at the 2-second mark, throughout or ever (they ask at the start, when it comes into view, at a
 # collision)
-NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["throughout"], ["during"], ["later"], ["ever"],
+NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["midpoint"], ["mid", "-", "point"],
+             ["throughout"], ["during"], ["later"], ["ever"],
              ["always"], ["eventually"], ["afterwards"], ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
              ["at", "any", "time"], ["at", "one", "point"], ["most", "of", "the", "time"], ["all", "the", "time"],
              ["the", "whole", "time"], ["whole"], ["entire"], ["now"], ["currently"], ["presently"])

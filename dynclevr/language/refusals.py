@@ -276,7 +276,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if around:
         return (f"the question asks about the time {around} a collision, which no question here asks (they ask at "
                 "the collision itself)")
-    place = next((" ".join(p) for k in range(len(said)) for p in PLACE_PHRASES if said[k:k + len(p)] == p), None)
+    place = next((" ".join(p) for k in range(len(said)) for p in PLACE_PHRASES if said[k:k + len(p)] == p
+                  and not (p in (["further"], ["farther"]) and said[k - 1:k] and said[k - 1] in GOING_ON)), None)
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
                 "it is moving)")
@@ -296,6 +297,9 @@ PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "
                  *(["parking", w] for w in ("spot", "space", "lot", "bay")))
 
 
+# a video that goes on further is a later time, not a place ('if video would continue further, ...')
+GOING_ON = {"continue", "continues", "continued", "continuing", "on", "play", "plays", "played", "playing", "run",
+            "runs", "ran", "running", "rolling", "rolls", "rolled"}
 ORDINALS = {"second", "third", "fourth", "fifth", "last", "final", "next", "previous"}   # 'the second vehicle it hits'
 TURNING = {"turn", "turns", "turning", "turned", "swerve", "swerves", "swerving", "steer", "steers", "steering", "veer",
            "veers", "veering", "u-turn", "rotate", "rotates", "rotating", "rotated", "spin", "spins", "spinning",

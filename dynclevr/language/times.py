@@ -106,7 +106,9 @@ CONTINUED = (["continued"], ["kept", "going"], ["kept", "running"], ["kept", "ro
              *([let, *to] for let in ("allowed", "left") for to in (["to", "carry", "on"], ["to", "continue"],
                                                                    ["to", "run", "on"], ["to", "play", "on"],
                                                                    ["to", "run"], ["to", "go", "on"])))
-CONTINUING = (["had"], ["if"], ["were"])
+# ... in a condition ('had the video ...', 'if ...', or a premise's 'assuming the clip continued past where it stops')
+IF_SAID = {"if", "assuming", "supposing", "suppose"}
+CONTINUING = (["had"], ["were"], *([w] for w in IF_SAID))
 
 
 def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int] | None:
@@ -115,15 +117,17 @@ def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int
     for i in range(len(words)):
         if [words[i]] not in CONTINUING:
             continue
-        j = i + 1 + (words[i + 1:i + 2] in (["the"], ["this"]))
+        j = i + 1 + (words[i] in IF_SAID and words[i + 1:i + 2] == ["that"])
+        j += words[j:j + 1] in (["the"], ["this"])
         # ('had it played on': only a video plays)
         named = words[j:j + 1] == ["it"] and (FILM_WORDS.intersection([*before, *words[:i]])
                                               or words[j + 1:j + 3] == ["played", "on"])
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
-        j += 1 + (words[i] == "if" and words[j + 1:j + 2] == ["had"])
-        were = words[i] == "were" or words[i] == "if" and words[j:j + 1] == ["were"]   # 'if the film were allowed to'
-        j += words[i] == "if" and words[j:j + 1] == ["were"]
+        j += 1 + (words[i] in IF_SAID and words[j + 1:j + 2] == ["had"])
+        # ('if the film were allowed to')
+        were = words[i] == "were" or words[i] in IF_SAID and words[j:j + 1] == ["were"]
+        j += words[i] in IF_SAID and words[j:j + 1] == ["were"]
         going = next((c for c in CONTINUED if words[j:j + len(c)] == c), None)
         if going and were == (going[0] in ("to", "allowed", "left")):
             k = j + len(going)

@@ -142,7 +142,9 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"(?:(?:can|could|would|will) you (?:please |kindly )?"
                      r"(?:tell me|let me know|advise(?: me)?"
-                     r"|describe(?: for me| to me)?(?= (?:which|what|how|whether)))"
+                     r"|describe(?: for me| to me)?(?= (?:which|what|how|whether))"
+                     # an assistant's verb of the answer ('could you identify what kind of vehicle ...')
+                     r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
                      r"|do you (?:happen to )?know"
                      r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
                      r"(?:like to |love to )?know"
@@ -490,6 +492,9 @@ IDIOMS = phrase_table({
                     ("the", "frame"), ("the", "shot"), ("the", "image"),
                     ("first", "in", "the", "view"), ("first", "into", "the", "view"), ("first", "into", "view"))},
     **{(come, "first", "into"): ("first", come, "into") for come in ("comes", "came", "come", "coming")},
+    # a learner's 'coming in the picture'
+    **{(come, "in", *the, view): (come, "into", "view") for come in ("comes", "came", "come", "coming")
+       for the in ((), ("the",)) for view in ("view", "picture", "frame", "shot", "image")},
     **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
                                                                               ("make", "come"), ("making", "coming"))
        for its in ("its", "an", "his", "her") for grand in ((), ("grand",), ("big",))},
@@ -617,6 +622,8 @@ IDIOMS = phrase_table({
     # a translator's time of the video ('in the beginning time', 'at the end time of video')
     **{(at, *the, when, "time"): ("at", "the", "end") if when == "end" else _START
        for at in ("at", "in") for the in ((), ("the",)) for when in ("beginning", "start", "starting", "end")},
+    # a learner's preposition before the start ('moving fast on start', 'in beginning')
+    **{(on, when): _START for on in ("on", "in") for when in ("start", "beginning")},
     # a translator's comparison ('faster compared with the bus') and direction ('heading for what direction')
     **{(comparative, "compared", to): (comparative, "than") for comparative in ("faster", "slower", "quicker")
        for to in ("with", "to")},
@@ -684,13 +691,15 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             out[k] = SPEED_CARRIED[out[k]]
     # 'when it comes into view for the first time' is the grammar's 'when it first comes into view' (it was read as
     # the start)
+    # (and a learner's 'when it comes into view first time')
     for k in range(len(out)):
-        if out[k:k + 4] == ["for", "the", "first", "time"]:
+        said = next((n for n in (4, 3, 2) if out[k:k + n] == ["for", "the", "first", "time"][4 - n:]), None)
+        if said:
             seen = next((n for n in (4, 3, 2, 1) if k >= n and (out[k - n:k] in (
                 [c, "into", "view"] for c in COMING) or out[k - n:k] in ([a] for a in APPEARING))), None)
             if seen:
-                read += ((f"{' '.join(out[k - seen:k])} for the first time", f"first {' '.join(out[k - seen:k])}"),)
-                out[k - seen:k + 4] = ["first", *out[k - seen:k]]
+                read += ((" ".join(out[k - seen:k + said]), f"first {' '.join(out[k - seen:k])}"),)
+                out[k - seen:k + said] = ["first", *out[k - seen:k]]
                 break
     # 'speeding' alone is going fast, as the grammar's 'speeding along' ('is the car speeding?' was read as
     # accelerating, the grammar's 'speeding up')

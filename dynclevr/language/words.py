@@ -115,6 +115,9 @@ SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "p
                                                           ("in", "motion")) for a in ((), ("at", "all"))},
                  # 'moving fast, slowly, or not at all', 'or standing still'
                  ("not", "at", "all"): "static", ("standing", "still"): "static", ("at", "rest"): "static",
+                 # a learner's 'it stands, goes slow or fast?'
+                 ("standing",): "static", ("stands",): "static",
+                 **{(g, s): s for g in ("go", "goes") for s in ("slow", "fast")},
                  ("slow",): "slow", ("slowly",): "slow", ("fast",): "fast", ("quickly",): "fast", ("quick",): "fast",
                  ("rapidly",): "fast", ("chill",): "slow",   # a game's chat: 'afk, chill or full send?'
                  # everyday words offered ('is it sat there, pottering along, or zipping about?')
@@ -201,7 +204,8 @@ CONDITION_OPENERS = {"if", "had", "suppose", "supposing", "imagine", "assuming"}
 
 # A change at a time after the start ('at the end', 'halfway', 'after the collision'); 'the whole time' and 'always'
 # are from the start on, as every intervention here is
-LATER_TIMES = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["later"], ["eventually"], ["afterwards"],
+LATER_TIMES = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["midpoint"], ["mid", "-", "point"],
+               ["later"], ["eventually"], ["afterwards"],
                ["at", "some", "point"], ["at", "one", "point"], ["now"])
 
 
