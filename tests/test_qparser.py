@@ -2760,3 +2760,22 @@ def test_a_vehicle_spelt_by_ear_and_a_label_that_imagines():
         "Wasn't the green pickup moving slowly at the moment the video was paused?": "other than the start",
         "Which colour has the ground under the vehicles?": "ground",
         "why did the brown pickup crash into the perple scooter?": "why"})
+
+
+def test_a_premise_of_the_video_going_on_an_assistants_verb_and_learners_times():
+    parser = QuestionParser.load()
+    assuming, identify, stands, first, further = parser.parse_batch([
+        "Assuming the clip continued past where it stops, is the blue airliner going to collide with the red fighter "
+        "jet?",
+        "Could you identify what kind of vehicle is picking up speed in the first moments?",
+        "How quick is red sedan moving on start - it stands, goes slow or fast?",
+        "With which speed the grey car is coming in the picture first time?",
+        "If video would continue further, grey one and red one will crash?"])
+    assert assuming[0] == "futureEvents" and further[0] == "futureEvents"
+    assert identify[-3:] == ["filter_accelerating", "unique", "query_attributes[shape]"]
+    assert stands[-2:] == ["start", "query_moving_velocity"]
+    assert first[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert_refused(parser, {
+        "What is the speed of the brown tandem bike at the exact midpoint of the video?": "other than the start",
+        "Assuming the video continued, is the bus fast?": "premise",
+        "Is the bus further from the camera than the car?": "where a vehicle is"})
