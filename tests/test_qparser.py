@@ -2779,3 +2779,35 @@ def test_a_premise_of_the_video_going_on_an_assistants_verb_and_learners_times()
         "What is the speed of the brown tandem bike at the exact midpoint of the video?": "other than the start",
         "Assuming the video continued, is the bus fast?": "premise",
         "Is the bus further from the camera than the car?": "where a vehicle is"})
+
+
+def test_a_scene_set_before_the_question_a_cleft_and_types_offered():
+    parser = QuestionParser.load()
+    like, pictured, restated, cleft, offered, version = parser.parse_batch([
+        "A grey mountain bike shows up in the scene at some point, as far as I can tell; what I'd like to know is how "
+        "fast that grey mountain bike is going at the moment it first comes into view.",
+        "Picture the moment the green SUV runs into the brown school bus, since those two do bump at some point; how "
+        "fast is the green SUV travelling right when it hits the school bus - stopped, slow or fast?",
+        "Focusing on the double-decker bus here: the first time it enters the frame, what's its speed like - static, "
+        "slow, or fast? In other words, how quickly is the double-decker moving when it first appears?",
+        "Is it the grey car that is moving more slowly when it and the brown bus collide?",
+        "Is it an airliner, a fighter, a private jet or a biplane that is hovering at the start?",
+        "Imagine a different version of this clip where the mountain bike starts off going fast; in that version, "
+        "would the mountain bike collide with the brown pickup?"])
+    assert like[-2:] == ["come_in_frame", "query_moving_velocity"] and "filter_attributes[mountain_bike]" in like
+    assert pictured[-2:] == ["get_frame", "query_moving_velocity"] and "filter_attributes[school_bus]" in pictured
+    assert restated[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert cleft[-1] == "slower_velocity" and "filter_attributes[bus]" in cleft
+    assert offered == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    assert "Counterfactual_moving_fast" in version
+    # 'the bus or the car' offers two vehicles, not their types; a scene's aside that imagines is no scene
+    assert parser.parse("Is it the bus or the car that is faster at the start?")[-1] == "faster_velocity"
+    assert "Counterfactual_moving_fast" in parser.parse(
+        "Had the yellow minivan been moving fast from the very start, would it, I wonder, have ended up colliding "
+        "with the gray cruiser?")
+    assert_refused(parser, {
+        "The purple scooter bumps into the cyan pickup in this clip; what colour is the scooter that does the "
+        "bumping?": "vehicle it names",
+        "Is the grey car moving more slowly when it and the brown bus collide?": "compares speeds",
+        "Is the car fast or slow, or does it collide with the bus?": "two questions",
+        "Does the car come into view fast?": "comes into view"})

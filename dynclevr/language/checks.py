@@ -34,11 +34,11 @@ from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
                                      ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMPARING, COMPARISONS, CONDITION_LABELS,
-                                     DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES,
-                                     GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS,
-                                     MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, REST_WORDS, RESTING,
-                                     REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOP_CUES, UNMOVED, VIEWER,
-                                     YES_NO_OPENERS, asks_impact, _head)
+                                     DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS, FLOATING_WORDS,
+                                     FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS,
+                                     MOTION_KINDS, MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS,
+                                     REST_WORDS, RESTING, REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID,
+                                     STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS, asks_impact, _head)
 from dynclevr.questions.programs import OPS
 
 
@@ -235,7 +235,8 @@ def time_unasked(words: list[str], program: list[str]) -> str:
     which the decoder read as the start."""
     if "start" not in program or START_WORDS & set(words) or "first" in words:
         return ""
-    said = next((" ".join(t) for k in range(len(words)) for t in (*NOT_START, ["before"], ["until"])
+    # (or when it comes into view: 'does the car come into view fast?' was read at the start)
+    said = next((" ".join(t) for k in range(len(words)) for t in (*NOT_START, ["before"], ["until"], ["into", "view"])
                  if words[k:k + len(t)] == t), None) or _future_said(words) or next(
         # 'faster than the bus after the video?', 'moving slowly at the moment the video was paused?'
         (f"the {w} {s}" for k, w in enumerate(words) if w in FILM_WORDS for s in words[k + 1:k + 4] if s in STOPPING),
@@ -245,6 +246,9 @@ def time_unasked(words: list[str], program: list[str]) -> str:
                   and not {a, b} & ORDINAL_WORDS), None)
     if not (said or clock):
         return ""
+    if said == "into view":
+        return ("the question asks when a vehicle comes into view, but its nearest reading asks at the start: ask how "
+                "fast it moves when it first comes into view")
     return (f"the question asks at a time other than the start ('{said or clock}'), which no question here asks of a "
             "vehicle's motion (they ask at the start, when it comes into view, or at a collision)")
 
@@ -399,6 +403,24 @@ def comparison_unsaid(words: list[str], program: list[str]) -> str:
 
 
 PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
+GETTING = {"getting", "gets", "got", "get", "going", "becoming", "becomes", "became", "growing", "and"}
+
+
+def comparison_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of one vehicle's speed is not the question's ('' when it is): the question compares ('is the
+    car moving more slowly when it and the bus collide?' was read as whether it is slow), but the reading compares
+    nothing. Not a speed that changes ('getting faster', 'faster and faster')."""
+    if not program or operation(program[-1]) in SPEED_COMPARISONS or "slower_velocity" in program or \
+            "faster_velocity" in program:
+        return ""
+    said = next((w for k, w in enumerate(words) if w in COMPARED_SAID and words[k - 1:k] != [] and
+                 words[k - 1] not in GETTING and words[k + 1:k + 2] != ["and"] or
+                 w in ("more", "less") and words[k + 1:k + 2] and words[k + 1] in PACE_SIGN
+                 and (not k or words[k - 1] not in GETTING)), None)
+    if said is None or not program[-1].startswith(("is_moving_velocity", "query_moving_velocity", "is_static")):
+        return ""
+    return (f"the question compares speeds ('{said}'), but its nearest reading asks one vehicle's: ask whether it is "
+            "faster (or slower) than the other")
 
 
 # the words that say a question imagines its video otherwise (a label, an opener or 'instead')
@@ -759,6 +781,25 @@ def attribute_unsaid(said: list[str], read: list[str], program: list[str]) -> st
         return ""
     return ("the question asks which vehicle, which no question here answers but by its colour or its type: ask what "
             "colour (or type) it is")
+
+
+def own_attribute_asked(said: list[str], program: list[str]) -> str:
+    """Why a reading of a partner's colour or type is not the question's ('' when it is): the vehicle whose colour is
+    asked is named, and it does the hitting ('what colour is the scooter that does the bumping?' asks the scooter's
+    own, and was read as its partner's; 'what colour is the car that hit the bus?' names the partner)."""
+    if "get_all_col_partners" not in program or not program[-1].startswith("query_attributes"):
+        return ""
+    for k in range(len(said) - 3):
+        if said[k:k + 2] not in (["is", "the"], ["was", "the"]):
+            continue
+        j = k + 2
+        while said[j:j + 1] and said[j] in OBJECT_WORDS:
+            j += 1
+        if j > k + 2 and said[j:j + 1] in (["that"], ["which"]) and said[j + 1:j + 2] and \
+                said[j + 1] not in DETERMINERS | {"it", "they", "he", "she"} and not OBJECT_WORDS & set(said[j:]):
+            return ("the question asks the colour or type of a vehicle it names, which it answers itself: ask what "
+                    "colour (or type) the vehicle it hits is")
+    return ""
 
 
 def what_happens(words: list[str], program: list[str]) -> str:

@@ -62,7 +62,7 @@ THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "
              *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
              ("then",))
 # a collision said without its partner ('At the moment of impact, how fast is the bike?'), the context's
-IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash")
+IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash", "bump")
 IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for m in ("moment", "instant", "time")
                          for the in ((), ("the",), ("that",), ("this",)) for n in IMPACT_NOUNS}
                         | {(p, n) for p in ("at", "on", "upon") for n in ("impact", "contact")}
@@ -71,17 +71,26 @@ IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for 
 OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
 
 
+def _time_then_asked(words: list[str], k: int) -> bool:
+    """Whether words[k:] open on a clause of time and a question follows it ('... ; right at the beginning , does
+    the green one ...?')."""
+    return words[k:k + 1] != [] and words[k] in TIME_OPENERS | {"right", "over", "throughout"} and any(
+        words[m] == "," and words[m + 1:m + 2] and (words[m + 1] in QUESTION_OPENERS or words[m + 1] in ASKING)
+        for m in range(k + 1, min(k + 12, len(words))))
+
+
 def _sentence_spans(words: list[str]) -> list[tuple[int, int]]:
     """(first, past-last) word of each sentence; a run of ends ('?!') closes one; an ellipsis after a statement
     closes it ('the bike seems to dodge everything... does it'), after a word or two ('well... is it') or a word
     that cannot end one ('which...') none; a point
-    after a letter ('i.e.') or between digits closes none; a semicolon before a question closes one ('a plane is
-    hanging in the air ; which colour is ...'), except after a condition ('suppose it had ... ; would it ...')."""
+    after a letter ('i.e.') or between digits closes none; a semicolon before a question, or a clause of time and a
+    question, closes one ('a plane is hanging in the air ; which colour is ...'), except after a condition
+    ('suppose it had ... ; would it ...')."""
     spans, start = [], 0
     for k, w in enumerate(words):
         before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
         said = [v for v in words[start:k] if v != "."]
-        if w == ";" and (after in QUESTION_OPENERS or after in ASKING) and not \
+        if w == ";" and (after in QUESTION_OPENERS or after in ASKING or _time_then_asked(words, k + 1)) and not \
                 (IMAGINED_SAID | {"if", "had"}) & set(words[start:k]):   # not a condition's ('suppose ... ; would')
             pass
         elif w not in SENTENCE_ENDS or after in SENTENCE_ENDS or w == "." and (
@@ -727,6 +736,10 @@ def told_otherwise_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple
     'under an alternative ruling where ...' -> 'in a world where ...'; 'spin a tale in which ...' -> 'imagine ...'.
     With the words read so, or the words as they are and ()."""
     j = next((len(t) for t in TELLING if tuple(words[:len(t)]) == t), 0)
+    # ('imagine a different version of this clip where ...')
+    if not j and words[:1] in (["imagine"], ["picture"]) and words[1:2] in (["a"], ["an"]) and \
+            words[2:3] and words[2] in OTHERWISE and words[3:4] and words[3] in TOLD:
+        j = 4 + next((len(o) for o in TOLD_OF if tuple(words[4:4 + len(o)]) == o), 0)
     if j:
         which = next((w for w in WHICH if tuple(words[j:j + len(w)]) == w), None)
         if which:

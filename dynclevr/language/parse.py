@@ -54,15 +54,15 @@ from dynclevr.language.asides import (asides_dropped, corrections_dropped, digre
                                       examination_as_asked, framing_dropped, hedges_dropped, hypothesis_as_asked,
                                       interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
                                       requested_as_asked, ticket_fields_read, wagers_read)
-from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched,
-                                      anything_unasked, attribute_unsaid, clock_unasked, collision_at_start,
-                                      collision_unread, compared_unsaid, comparison_imagined, comparison_unsaid,
+from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
+                                      attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
+                                      compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
                                       condition_subject_first, condition_unsaid, direction_unasked, end_unread,
                                       floating_unread, floating_unsaid, form_unasked, form_unmatched, future_unread,
                                       imagining_unread, impact_unsaid, motion_unfiltered, motion_unread,
-                                      named_attribute, operation, property_unread, reversed_reading, size_unread,
-                                      speed_unsaid, still_continuing, time_unasked, uncompared, visibility_unread,
-                                      what_happens)
+                                      named_attribute, operation, own_attribute_asked, property_unread,
+                                      reversed_reading, size_unread, speed_unsaid, still_continuing, time_unasked,
+                                      uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first, scenario_as_asked,
                                        settings_as_imagined, told_otherwise_as_imagined)
@@ -80,15 +80,17 @@ from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_b
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, colour_clause_as_named, corrections_starred,
                                        glosses_read, homophones_as_said, quoted_question, shorthand_as_said,
                                        spelt_by_ear, worksheet_as_said)
-from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
+from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, sound_index,
                                      stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        class_as_asked, comparative_as_said, floating_plane_as_vehicle,
-                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
-                                        negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
-                                        speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
+                                        choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
+                                        floating_plane_as_vehicle, heading_as_direction, height_as_aloft,
+                                        idioms_as_said, imperative_as_stated, negative_question_as_asked,
+                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
+                                        restated_dropped, speed_as_subject, tail_as_question, type_as_said,
+                                        type_of_category_as_vehicle)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -260,9 +262,11 @@ class QuestionParser:
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
             or what_happens(read, c.program) or attribute_unsaid(said, read, c.program)
+            or own_attribute_asked(said, c.program)
             or collision_unread(said, c.program) or uncompared(read, c.program)
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
+            or comparison_unread(read, c.program)
             or imagining_unread(said, c.program) or floating_unread(said, c.program)
             or condition_unsaid(said + [w for a, _ in c.read_as for w in a.split()], c.program)
             or motion_unread(said, c.program)
@@ -286,7 +290,9 @@ class QuestionParser:
         held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
+        words, pictured = moment_pictured(words)
         words, starred = corrections_starred(words, self.readable)
+        starred = pictured + starred
         words, archaic = archaic_as_said(words, self.readable)
         words, relayed = quoted_question(words)
         starred += archaic + relayed
@@ -319,8 +325,10 @@ class QuestionParser:
         words, prompted = prompt_dropped(words)
         prompted = ticket + prompted
         words, kind = type_of_category_as_vehicle(words)
+        words, restated = restated_dropped(words)
+        words = request_after_setting(words)
         words, context = context_as_question(words, self.known)
-        context = prompted + kind + context
+        context = prompted + kind + restated + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
         after += impact
@@ -349,11 +357,14 @@ class QuestionParser:
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
         words, first = first_frames_as_said(words)
+        words, cleft = cleft_as_asked(words)
         words, more = comparative_as_said(words)
+        more = cleft + more
         words, tail = tail_as_question(words)
         words, choices = attributes_offered_dropped(words)
+        words, which = choices_as_which(words)
         words, offered = alternatives_as_asked(words)
-        offered = choices + offered
+        offered = choices + which + offered
         request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms
                    + described + typed + afloat + end + framing + attended + request + stated + negative + asked + aloft
                    + heading + subject + first + more + tail + offered)

@@ -247,8 +247,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
                     and said[k - 2:k] not in (["in", "your"], ["in", "my"])), None)   # 'in your opinion': a hedge
     if opinion:
         return f"the question asks an opinion ('{opinion}'), which no question here asks (they ask what happens)"
+    # (not 'after the video stops', nor a speed offered: 'slow or fast or stop ?')
     stop = next((w for k, w in enumerate(said) if w in ("stop", "stops", "stopping") and k
-                 and said[k - 1] not in FILM_WORDS), None)   # not 'after the video stops'
+                 and said[k - 1] not in FILM_WORDS and not ("or" in (said[k - 1], said[k + 1:k + 2] and said[k + 1])
+                                                         and {"slow", "fast"} & set(said[k - 4:k + 5]))), None)
     if stop:
         return (f"the question asks whether a vehicle comes to a stop ('{stop}'), which no question here asks (they "
                 "ask whether it is static at the start or at a collision)")
@@ -587,9 +589,12 @@ def otherwise_compared(words: list[str], read: list[str]) -> str:
 
 
 def questions_joined(words: list[str]) -> str:
-    """Two questions joined by 'and' ('is it fast at the start, and does it hit the bus?'), or ''."""
-    said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 2) if words[k] == "and"
-                 and words[k + 1] in YES_NO_OPENERS and words[k + 2] in SUBJECTS), None)
+    """Two questions joined by 'and' ('is it fast at the start, and does it hit the bus?'), or by 'or' where the
+    second asks about a collision and the first not ('is the car fast or slow, or does it hit the bus?'; not 'is it
+    fast, or is it slow?', 'does it hit something, or does it stay clean?'), or ''."""
+    said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 2) if words[k + 1] in YES_NO_OPENERS
+                 and words[k + 2] in SUBJECTS and (words[k] == "and" or words[k] == "or" and
+                                                   asks_impact(words[k:]) and not asks_impact(words[:k]))), None)
     if said is None:
         return ""
     return (f"the question asks two questions ('{said}'), which the parser reads one at a time: ask them apart")

@@ -206,3 +206,24 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             words = words[:i] + ["after", "the", "video", "ends"] + words[k:]
         start = i + 4
     return words, tuple(read)
+
+
+# A moment pointed at by picturing it ('Picture the moment the green SUV runs into the bus; how fast is it then?',
+# 'Imagine that instant when they smash together - at that point, ...'): a time in the video, not a change imagined
+PICTURING = (["imagine"], ["picture"], ["consider"], ["envision"], ["visualise"], ["visualize"], ["take"],
+             ["think", "of"], ["think", "about"], ["thinking", "of"], ["thinking", "about"], ["picturing"],
+             ["imagining"], ["considering"])
+MOMENTS = {"moment", "instant", "point", "second"}
+
+
+def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'picture the moment the suv runs into the bus , ...' -> 'at the moment the suv runs into the bus , ...'.
+    With the words read so, or the words as they are and ()."""
+    for k in range(len(words)):
+        said = next((p for p in PICTURING if words[k:k + len(p)] == p), None)
+        j = k + len(said) if said else 0
+        if said and (k == 0 or words[k - 1] in CLAUSE_SEPARATORS) and words[j:j + 1] in (["the"], ["that"], ["this"]) \
+                and words[j + 1:j + 2] and words[j + 1] in MOMENTS and words[j + 2:j + 3] != ["of"]:
+            return (words[:k] + ["at", "the", "moment"] + words[j + 2:],
+                    ((" ".join(words[k:j + 2]), "at the moment"),))
+    return words, ()

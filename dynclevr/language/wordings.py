@@ -16,6 +16,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, phrase_table, phrases_as_said
+from dynclevr.language.times import FILM_WORDS
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
                                      DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
                                      MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
@@ -158,13 +159,22 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"|(?:can|could|would|will) you (?:please |kindly )?tell (?:an?|this|your) "
                      r"(?:old |elderly |poor )?"
                      r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
-                     r"|(?:i (?:am |' m )|just )curious(?: to know)?|please tell me|let me know"
+                     r"|(?:i (?:am |' m )|just )curious(?: to know)?(?! about)|please tell me|let me know"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
-                     r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know"
+                     r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know(?! is )"
                      r"|(?:[a-z]+ ){1,3}(?:is|are|was|were|' s) (?:asking|wondering)"
                      r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how)"
                      # a caller on the radio ('Line three wants the speed of ...', 'Caller on line five wants ...')
-                     r"|(?:the )?(?:caller|listener|line)(?: on line)?(?: [a-z]+)? (?:wants|needs)(?= the ))"
+                     r"|(?:the )?(?:caller|listener|line)(?: on line)?(?: [a-z]+)? (?:wants|needs)(?= the )"
+                     # said after what sets the scene ('..., so what i'd like to know is how fast ...', 'here's
+                     # what i'm wondering :', 'i'm curious about its first moments :')
+                     r"|(?:so |and )?what i (?:would |' d |want to |need to |wanna )?(?:really )?(?:like to |love to )?"
+                     r"(?:know|find out|ask|wonder|am wondering|' m wondering) is(?: this)?(?: :)?"
+                     r"|here (?:' s|is) (?:what i (?:' m |am )?(?:wondering|asking|curious about)|my question)(?: :)?"
+                     r"|(?:so |and )?my question(?: is| here is)?(?: :| -)?(?! about| is about)"
+                     r"|(?:i (?:' m|am) (?:curious|asking|wondering)|i (?:want|' d like|would like) to know"
+                     r"|my question(?: is)?) about "
+                     r"(?:[a-z']+ ){1,10}(?::|-))"
                      r" (?:, )?(?:please )?")
 # whether a statement holds, asked formally ('Can it be established that ...', 'Am I right that ...'): the grammar's
 # 'is it true that'
@@ -177,6 +187,45 @@ CERTAINTY = re.compile(r"^(?:(?:can|could|would|may|might) (?:it|one|we|you) (?:
                        # a ticket's ('Need confirmation whether ...', 'Please verify that ...')
                        r"|(?:please )?(?:(?:i |we )?need (?:to )?)?(?:confirm|verify|confirmation|verification)"
                        r"(?: of| on| as to)? (?:that|whether|if)) ")
+
+
+RESTATING = (["in", "other", "words"], ["that", "is", "to", "say"], ["put", "another", "way"],
+             ["to", "put", "it", "another", "way"], ["put", "differently"], ["to", "put", "it", "differently"],
+             ["to", "rephrase"], ["rephrased"], ["said", "another", "way"], ["said", "differently"])
+
+
+def restated_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'... what ' s its speed like ? in other words , how quickly is the bus moving when it first appears ?' ->
+    'how quickly is ...': a question asked again in other words asks what it asked, as the last words say it. With
+    the words read so, or the words as they are and ()."""
+    for k in range(1, len(words) - 1):
+        said = next((r for r in RESTATING if words[k - 1] in ("?", ".") and words[k:k + len(r)] == r), None)
+        if said and words[-1] == "?" and "?" in words[:k]:
+            rest = words[k + len(said) + (words[k + len(said):k + len(said) + 1] == [","]):]
+            return rest, ((" ".join(words[:k + len(said)]), "nothing, the question asked again"),)
+    return words, ()
+
+
+SUPPOSING = {"if", "had", "were", "would", "will", "suppose", "supposing", "imagine", "assuming", "what"}
+
+
+def request_after_setting(words: list[str]) -> list[str]:
+    """'there ' s a bike somewhere , and what i ' d like to know is how fast ...' -> 'there ' s a bike somewhere .
+    what i ' d like to know is how fast ...': a request for the question said after what sets the scene ends a
+    sentence there, so that the scene is read as the question's context and the request as a request (asked, if
+    it ends with a full stop)."""
+    for k in range(2, len(words) - 2):
+        # (a scene set: a vehicle or the video named, and nothing asked or imagined in it)
+        if words[k] not in (",", ";", ":", "-", ".") or "?" in words[:k] or \
+                not (OBJECT_WORDS | FILM_WORDS) & set(words[:k]) or SUPPOSING & set(words[:k]):
+            continue
+        said = " ".join(words[k + 1 + (words[k + 1] in ("and", "so", "but")):]) + " "
+        if (m := REQUEST.match(said)) and len(rest := said[m.end():].split()) >= 3:
+            # (the request itself dropped where the question follows it whole: 'i'm asking about the pickup :
+            # after the clip stops , will it ...?')
+            asked = rest if rest[:1] and rest[0] in YES_NO_OPENERS | TIME_OPENERS else words[k + 1:]
+            return words[:k] + ["."] + asked[:-1] + ["?" if asked[-1] == "." else asked[-1]]
+    return words
 
 
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -492,9 +541,16 @@ IDIOMS = phrase_table({
                     ("the", "frame"), ("the", "shot"), ("the", "image"),
                     ("first", "in", "the", "view"), ("first", "into", "the", "view"), ("first", "into", "view"))},
     **{(come, "first", "into"): ("first", come, "into") for come in ("comes", "came", "come", "coming")},
-    # a learner's 'coming in the picture'
-    **{(come, "in", *the, view): (come, "into", "view") for come in ("comes", "came", "come", "coming")
-       for the in ((), ("the",)) for view in ("view", "picture", "frame", "shot", "image")},
+    # a learner's 'coming in the picture', 'when just come inside the video'
+    **{(come, inside, *the, view): (come, "into", "view") for come in ("comes", "came", "come", "coming")
+       for inside in ("in", "inside") for the in ((), ("the",))
+       for view in ("view", "picture", "frame", "shot", "image", "video", "clip", "screen")},
+    # a learner's past ('purple one got collide with something?') and first moment ('in the first moment, ...')
+    **{(got, verb): (past,) for got in ("got", "get") for verb, past in (("collide", "collided"),
+                                                                          ("crash", "crashed"), ("bump", "bumped"))},
+    **{(p, "the", "first", "moment"): _START for p in ("in", "at")},
+    # a learner's 'is stop' ('the dirtbike is stop already?')
+    **{(be, "stop"): (be, "static") for be in ("is", "was", "are", "were")},
     **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
                                                                               ("make", "come"), ("making", "coming"))
        for its in ("its", "an", "his", "her") for grand in ((), ("grand",), ("big",))},
@@ -786,9 +842,13 @@ PLACE_BEFORE = {"the", "to", "its", "of", "on"}
 
 
 def _choice(words: list[str], k: int, choices: dict) -> tuple[str, int] | None:
-    """The choice said at words[k] and how many words say it (the longest), or None."""
-    return max(((c, len(w)) for w, c in choices.items() if tuple(words[k:k + len(w)]) == w),
-               key=lambda hit: hit[1], default=None)
+    """The choice said at words[k] and how many words say it (the longest, with an adverb that says it again:
+    'creeping along slowly', 'zipping by fast'), or None."""
+    hit = max(((c, len(w)) for w, c in choices.items() if tuple(words[k:k + len(w)]) == w),
+              key=lambda hit: hit[1], default=None)
+    if hit and hit[1] > 1 and choices.get(tuple(words[k + hit[1]:k + hit[1] + 1])) == hit[0]:
+        return hit[0], hit[1] + 1
+    return hit
 
 
 def attributes_offered_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -802,6 +862,88 @@ def attributes_offered_dropped(words: list[str]) -> tuple[list[str], tuple[tuple
         names = [w for w in listed if w not in {",", "or", "a", "an", "the", "one", "of", "those", "these", "old"}]
         if "or" in listed and len(names) >= 2 and all(w in OBJECT_WORDS or w[:-1] in OBJECT_WORDS for w in names):
             return words[:k] + ["?"], ((" ".join(words[k:-1]), "nothing, the choices offered"),)
+    return words, ()
+
+
+CLEFT_COMPARED = (["faster"], ["slower"], ["quicker"], ["more", "slowly"], ["more", "quickly"], ["less", "quickly"],
+                  ["less", "slowly"])
+
+
+def cleft_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it the red car that is fast at the start ?' -> 'is the red car fast at the start ?'; a comparison in it
+    is with the other vehicle its collision names ('is it the car that is moving more slowly when it and the bus
+    collide ?' -> '... moving more slowly than the bus when they collide ?'). With the words read so, or the words as
+    they are and ()."""
+    if words[:3] not in (["is", "it", "the"], ["was", "it", "the"]):
+        return words, ()
+    j = 3
+    while words[j:j + 1] and words[j] in OBJECT_WORDS:
+        j += 1
+    if j == 3 or words[j:j + 1] not in (["that"], ["which"]) or words[j + 1:j + 2] not in (["is"], ["was"]):
+        return words, ()
+    out = [words[0], *words[2:j], *words[j + 2:]]
+    c = next(((k, len(p)) for k in range(len(out)) for p in CLEFT_COMPARED if out[k:k + len(p)] == p), None)
+    m = next((k for k in range(len(out)) if out[k:k + 4] == ["when", "it", "and", "the"]), None)
+    if c and out[c[0] + c[1]:c[0] + c[1] + 1] != ["than"] and m is not None:
+        e = m + 4
+        while out[e:e + 1] and out[e] in OBJECT_WORDS:
+            e += 1
+        if e > m + 4 and out[e:e + 1] in (["collide"], ["collided"], ["crash"], ["crashed"]):
+            other = out[m + 3:e]
+            out = out[:c[0] + c[1]] + ["than", *other] + out[c[0] + c[1]:m] + ["when", "they"] + out[e:]
+    return out, ((" ".join(words), " ".join(out)),)
+
+
+TYPE_WORDS = OBJECT_WORDS - set(COLOR_NAMES)
+ARTICLES = {"a", "an"}   # (not 'the': 'is it the bus or the car that ...' picks one of two vehicles)
+
+
+def _offered_names(words: list[str], k: int) -> tuple[str, int] | None:
+    """The kind of names offered from words[k] on ('an airliner , a fighter , a jet or a biplane': 'type'; 'red ,
+    blue or green': 'color') and where the list ends; None unless two names at least, one after 'or', all of one
+    kind."""
+    kinds, names, said_or = set(), 0, False
+    while True:
+        k += words[k:k + 1] != [] and words[k] in ARTICLES
+        start = k
+        if words[k:k + 1] == ["the"]:
+            return None
+        while words[k:k + 1] and words[k] in OBJECT_WORDS:
+            k += 1
+        if k == start:
+            return None
+        kinds.add("type" if set(words[start:k]) <= TYPE_WORDS else "color" if k - start == 1 else "both")
+        names += 1
+        sep = next((n for n in ([",", "or"], ["or"], [","]) if words[k:k + len(n)] == n), None)
+        if said_or or not sep:
+            break
+        said_or = "or" in sep
+        k += len(sep)
+    return (kinds.pop(), k) if names >= 2 and said_or and len(kinds) == 1 and "both" not in kinds else None
+
+
+def choices_as_which(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it an airliner , a fighter , a jet or a biplane that is hovering at the start ?' and 'which is hovering at
+    the start : an airliner , a fighter , a jet or a biplane ?' -> 'what type of vehicle is hovering at the start ?':
+    a vehicle's types (or colours) offered as the answers ask which one, as a family asks its attribute. With the words
+    read so, or the words as they are and ()."""
+    def which(kind: str, rest: list[str]) -> list[str]:
+        return ["what", "type", "of", "vehicle", *rest] if kind == "type" else ["what", "color", "is", "the",
+                                                                              "vehicle", "that", *rest]
+    # a cleft: 'is it A , B or C that ...'
+    if words[:2] in (["is", "it"], ["was", "it"]) and (offered := _offered_names(words, 2)):
+        kind, k = offered
+        if words[k:k + 1] in (["that"], ["which"]) and words[k + 1:k + 2] in (["is"], ["was"]):
+            out = which(kind, words[k + 1:])
+            return out, ((" ".join(words), " ".join(out)),)
+    # 'which (one / vehicle) is ... : A , B or C ?'
+    if words[:1] == ["which"] and words[-1:] == ["?"]:
+        j = 1 + (words[1:2] in (["one"], ["vehicle"]))
+        for k in (k for k, w in enumerate(words) if w in (":", ",", "-") and k > j):
+            offered = _offered_names(words, k + 1)
+            if offered and offered[1] == len(words) - 1 and words[j:j + 1] in (["is"], ["was"]):
+                out = which(offered[0], words[j:k] + ["?"])
+                return out, ((" ".join(words), " ".join(out)),)
     return words, ()
 
 
@@ -830,8 +972,6 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
                     break
                 said.append(nxt[0])
                 k += len(sep) + nxt[1]
-                if "or" in sep:
-                    break
             if len(set(said)) >= 2 and set(said) & needed and "or" in words[i:k]:
                 return (words[:i] + listed.split() + words[k:],
                         ((" ".join(words[i:k]).replace(" ,", ","), listed.replace(" ,", ",")),))

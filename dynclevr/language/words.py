@@ -110,7 +110,8 @@ COMPARISONS = set(SPEED_ORDER)
 
 # What a question offers to choose from ('is it fast or slow?', 'is it going left or right?'), each by the words that
 # say it; the grammar's list of the choices asks which one
-SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "parked", "motionless", "stopped")},
+SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "parked", "motionless", "stopped",
+                                              "stop")},
                  **{("not", *m, *a): "static" for m in (("moving",), ("going",), ("travelling",), ("traveling",),
                                                           ("in", "motion")) for a in ((), ("at", "all"))},
                  # 'moving fast, slowly, or not at all', 'or standing still'
@@ -125,11 +126,14 @@ SPEED_CHOICES = {**{(w,): "static" for w in ("static", "stationary", "still", "p
                                           ("not", "budging"), ("at", "a", "standstill"), ("idling",))},
                  **{w: "slow" for w in (("crawling",), ("dawdling",), ("creeping",), ("pottering",), ("plodding",),
                                         ("trundling",), ("moving", "slowly"), ("going", "slowly"), ("going", "slow"),
-                                        ("moving", "slow"), ("sluggish",), ("leisurely",))},
+                                        ("moving", "slow"), ("sluggish",), ("leisurely",), ("creeping", "along"),
+                                        ("crawling", "along"))},
                  **{w: "fast" for w in (("speeding",), ("racing",), ("hurrying",), ("zipping",), ("zooming",),
                                         ("whizzing",), ("rushing",), ("speedy",), ("swift",), ("swiftly",),
                                         ("zipping", "about"), ("zipping", "along"), ("whizzing", "along"),
-                                        ("moving", "fast"), ("going", "fast"), ("moving", "quickly"))}}
+                                        ("moving", "fast"), ("going", "fast"), ("moving", "quickly"),
+                                        *((w, "by") for w in ("zipping", "whizzing", "zooming", "speeding", "racing",
+                                                              "rushing")))}}
 VIEWER = (("us",), ("me",), ("the", "camera"), ("the", "viewer"))
 DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front", "back")},
                      ("upwards",): "up", ("upward",): "up", ("downwards",): "down", ("downward",): "down",
