@@ -2811,3 +2811,14 @@ def test_a_scene_set_before_the_question_a_cleft_and_types_offered():
         "Is the grey car moving more slowly when it and the brown bus collide?": "compares speeds",
         "Is the car fast or slow, or does it collide with the bus?": "two questions",
         "Does the car come into view fast?": "comes into view"})
+
+
+def test_a_templates_colour_after_its_vehicle_and_a_pick_up():
+    parser = QuestionParser.load()
+    pickup, estate, their = parser.parse_batch([
+        "How fast is the cyan-coloured scooter travelling when it crashes into the brown pick-up?",
+        "State whether the estate car of grey colour is moving fast when it hits the red minivan.",
+        "At their meeting, was the green bendy bus slower than the red motorbike?"])
+    assert "filter_attributes[truck]" in pickup and "filter_attributes[brown]" in pickup
+    assert ["filter_attributes[gray]", "filter_attributes[wagon]"] == estate[1:3]
+    assert estate[-1] == "is_moving_velocity[fast]" and their[-1] == "slower_velocity"

@@ -33,7 +33,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "sport utility vehicle": "suv", "sports utility vehicle": "suv", "motor scooter": "scooter",
                   "saloon": "sedan", "saloon car": "sedan", "people carrier": "minivan", "4x4": "suv",
                   "four by four": "suv", "racing bike": "road bike", "racing bicycle": "road bike",
-                  "mtb": "mountain bike", "pickup": "truck",
+                  "mtb": "mountain bike", "pickup": "truck", "pick - up": "truck", "pick - up truck": "truck",
                   # a vehicle's everyday noun (as synonyms.txt reads it), here so that the context of a question and
                   # what follows it are read for it ('The red airliner ... is the plane going slower?')
                   "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
@@ -290,7 +290,8 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 # or with a word the grammar never puts between colour and vehicle ('the green-coloured SUV'), as the grammar says
 # it: colour first. Without it the colour is a second object that no family reads.
 COLOUR_CLAUSES = (("that", "is"), ("which", "is"), ("that", "was"), ("which", "was"), ("that", "'", "s"),
-                  ("painted",), ("coloured",), ("colored",), ("in",), (",", "the"), (",", "a"), ("(", "the"))
+                  ("painted",), ("coloured",), ("colored",), ("in",), ("of",), (",", "the"), (",", "a"),
+                  ("(", "the"))
 COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured', 'yellow painted', 'red colour'
 # ... or straight after it, as Romance languages put it ('the sedan red, how fast ...', 'the bus yellow is moving?'),
 # where a comma or a verb follows ('is the bus red?' asks a colour)
@@ -331,8 +332,10 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
                         clause = None
                     else:
                         end += 1 + (words[end + 1:end + 2] in ([","], [")"]))
-                elif words[end:end + 1] == ["color"]:   # 'the bus in yellow colour'
+                elif words[end:end + 1] == ["color"]:   # 'the bus in yellow colour', 'the bus of yellow colour'
                     end += 1
+                elif clause == ("of",):
+                    clause = None
                 if clause:
                     out += [words[j], *words[i:i + n]]
                     read.append((" ".join(words[i:end]), " ".join([words[j], *words[i:i + n]])))

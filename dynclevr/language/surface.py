@@ -123,7 +123,9 @@ def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     for k, w in enumerate(out):
         after = out[k + 1] if k + 1 < len(out) else ""
         said = ("than" if w == "then" and k and out[k - 1] in COMPARISONS | {"more", "less"} else
+                # ('at the moment of their collision' is theirs)
                 "there" if w == "their" and after not in NAMING | GENERIC | QUERY_NOUNS and not after.endswith("s")
+                and not asks_impact([after])
                 else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"} else None)
         if said:
             read.append((w, said))

@@ -545,6 +545,10 @@ IDIOMS = phrase_table({
     **{(come, inside, *the, view): (come, "into", "view") for come in ("comes", "came", "come", "coming")
        for inside in ("in", "inside") for the in ((), ("the",))
        for view in ("view", "picture", "frame", "shot", "image", "video", "clip", "screen")},
+    # a pair's collision said as a moment ('at the moment of their collision, is the plane faster than the jet?')
+    **{(*at, "their", crash): ("when", "they", "collide") for crash in ("collision", "crash", "impact")
+       for at in (*((p, "the", m, "of") for p in ("at", "in", "during") for m in ("moment", "instant", "time")),
+                  ("at",), ("during",), ("upon",), ("on",))},
     # a learner's past ('purple one got collide with something?') and first moment ('in the first moment, ...')
     **{(got, verb): (past,) for got in ("got", "get") for verb, past in (("collide", "collided"),
                                                                           ("crash", "crashed"), ("bump", "bumped"))},
