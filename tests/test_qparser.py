@@ -2822,3 +2822,19 @@ def test_a_templates_colour_after_its_vehicle_and_a_pick_up():
     assert "filter_attributes[truck]" in pickup and "filter_attributes[brown]" in pickup
     assert ["filter_attributes[gray]", "filter_attributes[wagon]"] == estate[1:3]
     assert estate[-1] == "is_moving_velocity[fast]" and their[-1] == "slower_velocity"
+
+
+def test_a_quiz_items_label_and_attribute_and_a_creative_paraphrase():
+    parser = QuestionParser.load()
+    changed, colour, planted, runin, clash = parser.parse_batch([
+        "Change one thing: the blue road bike is speeding up from the start with its engine on. Does it now collide "
+        "with the green car?",
+        "Give the colour only: which vehicle is moving slowly at the start?",
+        "Had the yellow SUV stayed planted in place from the start, would it have struck the purple bus?",
+        "Is there ever a run-in between the red one and the blue pickup?",
+        "Is the red private jet zipping along faster than the yellow one at the instant they clash?"])
+    assert "Counterfactual_accelerating" in changed and "Counterfactual_static" in planted
+    assert colour == ["Objects", "start", "filter_moving_velocity[slow]", "unique", "query_attributes[color]"]
+    assert runin[-1] == "exist" and clash[-1] == "faster_velocity" and "filter_collision" in clash
+    assert_refused(parser, {
+        "After the red car and the blue bus collide, in which direction does the bus rebound?": "after a collision"})

@@ -712,6 +712,16 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return (out, tuple(read)) if read else (words, ())
 
 
+def attribute_kept(dropped: list[str], question: list[str]) -> list[str]:
+    """The question after words dropped before it, which asks which vehicle in the attribute they named ('give the
+    colour only : which vehicle is moving slowly ...' -> 'what colour is the vehicle that is moving slowly ...')."""
+    asked = next((w for w in dropped if w in ("color", "type", "kind", "sort", "shape")), None)
+    if asked is None or question[:2] not in (["which", "vehicle"], ["which", "one"]):
+        return question
+    return (["what", "color", "is", "the", "vehicle", "that"] if asked == "color" else
+            ["what", "type", "of", "vehicle"]) + question[2:]
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -736,7 +746,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                 set(words[:end]) & (HEADING_KEPT | START_WORDS) - {"true", "false", "yes", "no"}:
             break
         read.append((" ".join(words[:end + 1]), "nothing, a remark"))
-        words = words[end + 1:]
+        words = attribute_kept(words[:end], words[end + 1:])
     if any(a == "this" and b in OBJECT_WORDS for a, b in zip(words, words[1:])):   # 'is this green bus ...'
         read.append(("this", "the"))
         words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
@@ -895,7 +905,7 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
                                                   or named):
         return words, ()
-    return main, ((" ".join(words[:k + 1]), "nothing, a preamble"),)
+    return attribute_kept(pre, main), ((" ".join(words[:k + 1]), "nothing, a preamble"),)
 
 
 # the words a digression (`digressions_dropped`) never says

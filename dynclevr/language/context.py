@@ -107,7 +107,9 @@ def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
     """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...', or as a label:
     'Counterfactual: the pickup ...'): its place, its words and the opener it is read as; None where it does not."""
     colon = sentence.index(":") if ":" in sentence else None
-    if colon and sentence[colon - 1] in CONDITION_LABELS and (mentions(sentence[colon:]) or "it" in sentence):
+    # ('Counterfactual: ...', and a label that opens on its word: 'Change one thing: ...')
+    if colon and (sentence[colon - 1] in CONDITION_LABELS or colon <= 3 and sentence[0] in CONDITION_LABELS) and (
+            mentions(sentence[colon:]) or "it" in sentence):
         return colon + 1, (), ("suppose",)
     for k in (0, colon + 1 if colon is not None else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:

@@ -273,7 +273,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if compared:
         return (f"the question compares how fast vehicles accelerate ('{compared}'), which no question here asks: ask "
                 "whether one is accelerating, or which is faster")
-    around = next((w for k, w in enumerate(said) if w in ("before", "after") and asks_impact(said[k + 1:k + 5])
+    # (in the clause it opens: 'after the red car and the blue bus collide , which way does the bus rebound ?')
+    around = next((w for k, w in enumerate(said) if w in ("before", "after") and asks_impact(
+        said[k + 1:next((m for m in range(k + 1, len(said)) if said[m] in (",", "?", ".")), len(said))][:8])
                    and not FILM_WORDS & set(said[k + 1:k + 3])), None)
     if around:
         return (f"the question asks about the time {around} a collision, which no question here asks (they ask at "

@@ -549,6 +549,10 @@ IDIOMS = phrase_table({
     **{(*at, "their", crash): ("when", "they", "collide") for crash in ("collision", "crash", "impact")
        for at in (*((p, "the", m, "of") for p in ("at", "in", "during") for m in ("moment", "instant", "time")),
                   ("at",), ("during",), ("upon",), ("on",))},
+    # a run-in, and never budging or staying planted in place ('had the suv never budged from the outset')
+    ("run", "-", "in"): ("collision",), ("run", "-", "ins"): ("collisions",),
+    **{("had", "never", moved): ("had", "been", "static") for moved in ("budged", "moved", "stirred")},
+    ("planted", "in", "place"): ("still",), ("rooted", "to", "the", "spot"): ("still",),
     # a learner's past ('purple one got collide with something?') and first moment ('in the first moment, ...')
     **{(got, verb): (past,) for got in ("got", "get") for verb, past in (("collide", "collided"),
                                                                           ("crash", "crashed"), ("bump", "bumped"))},
