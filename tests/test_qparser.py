@@ -2838,3 +2838,13 @@ def test_a_quiz_items_label_and_attribute_and_a_creative_paraphrase():
     assert runin[-1] == "exist" and clash[-1] == "faster_velocity" and "filter_collision" in clash
     assert_refused(parser, {
         "After the red car and the blue bus collide, in which direction does the bus rebound?": "after a collision"})
+
+
+def test_everyday_users_choices_in_brackets_and_a_video_stopped():
+    parser = QuestionParser.load()
+    none, stopped = parser.parse_batch([
+        "At what speed (none, slow or fast) is the brown car moving as it first enters the picture?",
+        "After the point where the video is stopped, will the blue double-decker run into anything?"])
+    assert none[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert stopped[0] == "futureEvents" and stopped[-1] == "exist"
+    assert_refused(parser, {"what is the grey ground made of": "ground"})

@@ -593,7 +593,9 @@ def motion_unread(words: list[str], program: list[str]) -> str:
     if not COLLISION_OPERATIONS.intersection(map(operation, program)) or \
             any(part in t for t in program for part in MOTION_READ):
         return ""
-    said = next((w for w in words if w in MOTION_DESCRIPTIONS), None)
+    # (not the video's: 'after the point where the video is stopped')
+    said = next((w for k, w in enumerate(words) if w in MOTION_DESCRIPTIONS
+                 and not FILM_WORDS & set(words[max(k - 2, 0):k])), None)
     if said is None:
         return ""
     return (f"the question describes a vehicle by its motion ('{said}'), which no question here reads beside a "

@@ -192,10 +192,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         return (f"the question asks about a collision with the '{scenery}', which is no vehicle here (they ask about "
                 "collisions between vehicles)")
     # the colour of what is no vehicle ('Which colour has the ground under the vehicles?' was read as a slow one's)
-    ground = next((w for k, w in enumerate(said) if w in SCENE_PARTS and said[k - 1:k] == ["the"] and
-                   {"colour", "color", "colours", "colors"} & set(said[max(k - 4, 0):k])), None)
+    # (or what is said of the grey ground, where no vehicle is named: 'what is the grey ground made of')
+    ground = next((w for k, w in enumerate(said) if w in SCENE_PARTS and (said[k - 1:k] == ["the"] and
+                   {"colour", "color", "colours", "colors"} & set(said[max(k - 4, 0):k]) or said[k - 1:k] and
+                   said[k - 1] in COLOR_NAMES and not (OBJECT_WORDS - set(COLOR_NAMES)) & set(said))), None)
     if ground:
-        return f"the question asks the colour of the '{ground}', which is no vehicle here (they ask a vehicle's colour)"
+        return (f"the question asks about the '{ground}', which is no vehicle here (they ask a vehicle's colour, type "
+                "and motion)")
     path = next((w for w in said if w in PATH_SHAPES), None)
     if path:
         return (f"the question asks about the shape of a vehicle's path ('{path}'), which no question here asks (they "

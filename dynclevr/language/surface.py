@@ -158,7 +158,7 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
 GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in", "other", "words"])
 CHOICE_LABELS = {"levels", "options", "choices", "classes", "categories", "answers"}
 CHOICES_SAID = {"static", "stationary", "parked", "still", "moving", "slow", "slowly", "fast", "quick", "quickly",
-                "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down"}
+                "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down", "none", "zero"}
 # the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
 SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
             "?"}

@@ -88,7 +88,8 @@ PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "th
             ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
                   ["has", "finished"], ["ends"], ["finishes"], ["stops"], ["is", "through"], ["runs", "out"],
-                  ["has", "stopped"], ["comes", "to", "an", "end"],
+                  ["has", "stopped"], ["comes", "to", "an", "end"], ["is", "stopped"], ["is", "paused"],
+                  ["is", "halted"],
                   # as learners say them ('when video is finish')
                   ["is", "finish"], ["is", "end"], ["is", "ended"], ["end"], ["finish"], ["ended"], ["finished"],
                   ["over"], ["wraps", "up"], ["winds", "down"],
