@@ -71,6 +71,17 @@ IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for 
 OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
 
 
+def closing_mark_added(words: list[str]) -> list[str]:
+    """A question asked again after its question mark without one of its own ('what did the dirtbike hit ? like
+    what kind of vehicle') closed with one, so that it is read as what is said after the question."""
+    last = max((k for k, w in enumerate(words) if w == "?"), default=None)
+    if last is None or words[-1] in SENTENCE_ENDS:
+        return words
+    after = words[last + 1:]
+    after = after[1:] if after[:1] == ["like"] else after
+    return words + ["?"] if after[:1] and after[0] in ASKING | {"how"} else words
+
+
 def _time_then_asked(words: list[str], k: int) -> bool:
     """Whether words[k:] open on a clause of time and a question follows it ('... ; right at the beginning , does
     the green one ...?')."""

@@ -64,8 +64,8 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       reversed_reading, size_unread, speed_unsaid, still_continuing, time_unasked,
                                       uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
-from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first, scenario_as_asked,
-                                       settings_as_imagined, told_otherwise_as_imagined)
+from dynclevr.language.context import (afterthoughts_read, closing_mark_added, context_as_question, impact_said_first,
+                                       scenario_as_asked, settings_as_imagined, told_otherwise_as_imagined)
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
                                           described_as_named, description_as_said, heard_as_said, is_description,
@@ -290,6 +290,7 @@ class QuestionParser:
         held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
         words = [held.get(w, w) for w in words]
+        words = closing_mark_added(words)
         words, pictured = moment_pictured(words)
         words, starred = corrections_starred(words, self.readable)
         starred = pictured + starred
