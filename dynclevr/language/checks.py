@@ -218,8 +218,8 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
 # in the middle, at the 2-second mark, throughout or ever (they ask at the start, when it comes into view, at a
 # collision)
 NOT_START = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["midpoint"], ["mid", "-", "point"],
-             ["throughout"], ["during"], ["later"], ["ever"],
-             ["always"], ["eventually"], ["afterwards"], ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
+             ["throughout"], ["during"], ["later"], ["ever"], ["always"], ["eventually"], ["afterwards"],
+             ["sometimes"], ["at", "some", "point"], ["at", "any", "point"],
              ["at", "any", "time"], ["at", "one", "point"], ["most", "of", "the", "time"], ["all", "the", "time"],
              ["the", "whole", "time"], ["whole"], ["entire"], ["now"], ["currently"], ["presently"])
 CLOCK_WORDS = {"second", "seconds", "frame", "frames", "s", "sec", "secs"}
@@ -410,14 +410,13 @@ def comparison_unread(words: list[str], program: list[str]) -> str:
     """Why a reading of one vehicle's speed is not the question's ('' when it is): the question compares ('is the
     car moving more slowly when it and the bus collide?' was read as whether it is slow), but the reading compares
     nothing. Not a speed that changes ('getting faster', 'faster and faster')."""
-    if not program or operation(program[-1]) in SPEED_COMPARISONS or "slower_velocity" in program or \
-            "faster_velocity" in program:
+    if not program or not program[-1].startswith(("is_moving_velocity", "query_moving_velocity", "is_static")):
         return ""
     said = next((w for k, w in enumerate(words) if w in COMPARED_SAID and words[k - 1:k] != [] and
                  words[k - 1] not in GETTING and words[k + 1:k + 2] != ["and"] or
                  w in ("more", "less") and words[k + 1:k + 2] and words[k + 1] in PACE_SIGN
                  and (not k or words[k - 1] not in GETTING)), None)
-    if said is None or not program[-1].startswith(("is_moving_velocity", "query_moving_velocity", "is_static")):
+    if said is None:
         return ""
     return (f"the question compares speeds ('{said}'), but its nearest reading asks one vehicle's: ask whether it is "
             "faster (or slower) than the other")
