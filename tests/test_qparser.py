@@ -2848,3 +2848,23 @@ def test_everyday_users_choices_in_brackets_and_a_video_stopped():
     assert none[-2:] == ["come_in_frame", "query_moving_velocity"]
     assert stopped[0] == "futureEvents" and stopped[-1] == "exist"
     assert_refused(parser, {"what is the grey ground made of": "ground"})
+
+
+def test_a_casual_speaker_and_african_learners():
+    parser = QuestionParser.load()
+    offered, booking, sitting, pointed, jammed, going = parser.parse_batch([
+        "dude what's the scooter doing speed-wise when the clip kicks off, parked, crawling or booking it?",
+        "what kind of vehicle is booking it at the start?",
+        "the green one's just sitting there when it starts, right? like not moving at all?",
+        "The grey one, did it collide with something at all?",
+        "Did the brown sedan and the cyan scooter jam?",
+        "When the video is continuing after the stop, will the cyan pickup knock into anything?"])
+    assert offered == ["Objects", "filter_attributes[scooter]", "unique", "start", "query_moving_velocity"]
+    assert booking == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    assert sitting == ["Objects", "filter_attributes[green]", "unique", "start", "is_static"]
+    assert pointed == ["Events", "Objects", "filter_attributes[gray]", "unique", "filter_collision", "exist"]
+    assert jammed[-1] == "exist" and "filter_attributes[scooter]" in jammed
+    assert going[0] == "futureEvents" and "filter_attributes[truck]" in going
+    # what a vehicle does, with no speeds offered, is still refused; a traffic jam is no collision
+    assert_refused(parser, {"what is the red car doing at the start?": "what a vehicle does",
+                            "is there a traffic jam?": "arranged"})

@@ -17,7 +17,7 @@ from dynclevr.language.context import coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
-                                     COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
+                                     COMMA_INTERJECTIONS, COMPARING, PARTICLES, CONDITION_LABELS, CONDITION_OPENERS,
                                      CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
                                      FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
                                      IMAGINING_LABELS,
@@ -57,6 +57,9 @@ def _says_nothing(tail: list[str]) -> bool:
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
+    particles = [j for j in range(1, len(words) - 1) if words[j] in PARTICLES and words[j + 1] in (",", "?", "!", ".")]
+    said = tuple((words[j], "nothing, a particle") for j in particles)
+    words = [w for j, w in enumerate(words) if j not in particles]
     addressed = [j for j in range(1, len(words) - 1) if words[j] in ADDRESSED and words[j - 1] == ","
                  and words[j + 1] in (",", "?", "!", ".")]
     addressees = " ".join(words[j] for j in addressed)
@@ -101,7 +104,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         closing = ((" ".join(words[j] for j in within), "nothing, a filler"), *closing)
         kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
         words, end = kept + words[end:], len(kept)
-    closing = ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
+    closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
             not ADDRESSED & set(words[:k]):
         return words[:end], closing

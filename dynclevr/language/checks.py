@@ -806,10 +806,12 @@ def own_attribute_asked(said: list[str], program: list[str]) -> str:
 def what_happens(words: list[str], program: list[str]) -> str:
     """Why a reading is not the question's ('' when it is): the question (`words`: typos fixed) asks what a vehicle
     does ('what is the red car doing at the start?' was read as its speed), or what happens and asks no question
-    after it ('what would happen if it were static?' was read as whether it is)."""
+    after it ('what would happen if it were static?' was read as whether it is). What it does among speeds offered
+    asks its speed ('what's the scooter doing at the start, parked, crawling or booking it?')."""
     head = _head(words)
+    speeds_offered = "or" in words and len({"static", "slow", "fast"}.intersection(words)) >= 2
     if head[:1] == ["what"] and head[1:2] and head[1] in AUXILIARIES | {"will", "would"} and (
-            "doing" in head or "do" in head[2:]):   # not 'what speed is it doing'
+            "doing" in head or "do" in head[2:]) and not speeds_offered:   # not 'what speed is it doing'
         return ("the question asks what a vehicle does, which no question here answers: ask how fast it moves, which "
                 "way, or whether it collides")
     if OPS[operation(program[-1])].output is not bool or head[:1] != ["what"] or \

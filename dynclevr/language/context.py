@@ -608,20 +608,45 @@ def _compatible(ref: tuple, meant: tuple) -> bool:
     return not any(v in COLOR_NAMES for v in ref)
 
 
+# a speed said again after the question, in its own words ('..., right? like not moving at all?')
+SPEEDS_SAID = {"static": {"still", "stationary", "parked", "static", "stopped", "standing", "sitting", "motionless"},
+               "fast": {"fast", "quick", "quickly", "speeding", "racing", "zooming"},
+               "slow": {"slow", "slowly", "crawling", "creeping"}}
+ELABORATING = {w for said in SPEEDS_SAID.values() for w in said} | {
+    "not", "moving", "at", "all", "really", "totally", "completely", "just", "there", "very", "super", "going", "pretty"}
+
+
+def _speeds_said(words: list[str]) -> set[str]:
+    said = {speed for speed, ws in SPEEDS_SAID.items() if ws & set(words)}
+    return said | {"static"} if any(words[k:k + 2] == ["not", "moving"] for k in range(len(words))) else said
+
+
+def _elaborates(core: list[str], question: list[str]) -> bool:
+    """Whether what is asked after the question only says again the speed it asks ('like not moving at all?' after
+    'the green one is just sitting there when it starts, right?')."""
+    core = [w for w in core if w not in AFTER_OPENERS]
+    said = _speeds_said(core)
+    return bool(core) and set(core) <= ELABORATING and bool(said) and said <= _speeds_said(question)
+
+
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question with what is said after it read into it, and what was said after it read as nothing; the words
     as they are and () where nothing is said after it, it asks again, or what it says cannot be read so (a vehicle
     said with a word the parser does not know, of `known`: 'The white sedan, I mean.')."""
-    spans = _sentence_spans(words)
+    spans, again = _sentence_spans(words), ()
+    if len(spans) > 1 and words[spans[-2][1] - 1] == words[-1] == "?" and \
+            _elaborates(words[spans[-1][0]:-1], words[spans[-2][0]:spans[-2][1]]):
+        again = ((" ".join(words[spans[-1][0]:]), "nothing, the question said again"),)
+        words, spans = words[:spans[-1][0]], spans[:-1]
     asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
     if asked_at is None or asked_at == len(spans) - 1:
-        return words, ()
+        return words, again
     start, end = spans[asked_at]
-    out, read = words[:end], []
+    out, read = words[:end], list(again)
     for a, b in spans[asked_at + 1:]:
         said = words[a:b]
         if said[-1] == "?":
-            return words, ()
+            return words, again
         k, e = 0, len(said)
         while k < e and said[k] in AFTER_OPENERS:
             k += 1
@@ -636,7 +661,7 @@ def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[t
         runs = mentions(question)
         if vehicle is None or wrong is None or any(_unknown_beside(core, *run, known) for run in mentions(core)) or \
                 {"tell", "give", "name", "state", "say", "list"} & set(core):   # '? Give its colour.' asks
-            return words, ()
+            return words, again
         if vehicle:
             hits = [r for r in runs if wrong and (_fits(wrong, r[2]) or _fits(r[2], wrong))] or \
                 [r for r in runs if _compatible(r[2], vehicle)]
@@ -647,7 +672,7 @@ def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[t
             elif not runs and it is not None:
                 question[it:it + 1] = _said(vehicle)
             else:
-                return words, ()
+                return words, again
         elif ASKED_PROPERTY.keys() & set(core):
             asked = ASKED_PROPERTY[next(w for w in core if w in ASKED_PROPERTY)]
             if question[:2] in (["which", "vehicle"], ["which", "one"]):   # 'which vehicle is ...? the type'
@@ -657,7 +682,7 @@ def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[t
             if not (START_WORDS | COMES_IN_WORDS | OWN_TIMES) & set(question) and not asks_impact(question):
                 question[-1:] = ["at", "the", "start", "?"]
         elif set(core) & (FILM_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS):
-            return words, ()
+            return words, again
         out = out[:start] + question
         read.append((" ".join(said), " ".join(question)))
     return out, tuple(read)

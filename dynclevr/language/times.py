@@ -202,6 +202,11 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
                                      _video_continued(words[start:], words[:start]), _at_cut(words[start:]))),
                        default=None):
         i, k = start + where[0], start + where[1]
+        # '..., (so) after that, will ...': the time after the end it has just said
+        m = k + (words[k:k + 1] == [","])
+        m += words[m:m + 1] in (["so"], ["and"])
+        if words[m:m + 2] in (["after", "that"], ["after", "this"]):
+            k = m + 2
         if words[i:k] != ["after", "the", "video", "ends"]:
             read.append((" ".join(words[i:k]), "after the video ends"))
             words = words[:i] + ["after", "the", "video", "ends"] + words[k:]

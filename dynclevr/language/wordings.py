@@ -104,10 +104,11 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
         return words, ()
 
     def mention(k: int) -> tuple[list[str], int]:
-        """The object named from word k on ('the', 'a', 'that' or 'this' first) and where it ends."""
+        """The object named from word k on ('the', 'a', 'that' or 'this' first; 'the gray one') and where it ends."""
         j = k = k + (words[k:k + 1] != [] and words[k] in DEFINITE)
         while words[j:j + 1] and words[j] in OBJECT_WORDS:
             j += 1
+        j += j > k and words[j:j + 1] in (["one"], ["thing"])
         return ["the", *words[k:j]] if j > k else [], j
 
     first, j = mention(start)
@@ -276,10 +277,14 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         if (k == 0 or words[k - 1] == ",") and words[k] in YES_NO_OPENERS and words[k + 1] == "not" and \
                 (words[k + 2] in SUBJECT_STARTS or words[k + 2] in OBJECT_WORDS) and words[k + 3:] not in ([], ["?"]):
             return words[:k + 1] + words[k + 2:], ((f"{words[k]} not", words[k]),)
+    # '..., right? Or no?': the tag asked again as a choice
+    again = ((" ".join(words[-4:]), "?"),) if len(words) > 4 and words[-4] == words[-1] == "?" and \
+        words[-3] == "or" and words[-2] in ("no", "not", "nah", "nope") else ()
+    words = words[:-3] if again else words
     end = words[-1:] if words[-1:] in (["?"], ["."]) else []
     body = words[:len(words) - len(end)]
     if body[-2:] == [",", "or"]:   # 'is it slower than the bus , or ?' (a learner's tag)
-        return body[:-2] + ["?"], ((", or", "?"),)
+        return body[:-2] + ["?"], again + ((", or", "?"),)
     negative = [[w, "not", p] for w in sorted(YES_NO_OPENERS) for p in sorted(TAG_PRONOUNS)]
     for tag in negative + list(AGREEING_TAGS):
         n = len(tag) + 1
@@ -291,8 +296,8 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         # a statement's own negation only as 'not moving', which reads as static ('it is not moving , is not it ?')
         if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
                    for k, w in enumerate(statement)):
-            return statement + ["?"], ((" ".join(body[-n:]), "?"),)
-    return words, ()
+            return statement + ["?"], again + ((" ".join(body[-n:]), "?"),)
+    return words, again
 
 
 # a class a vehicle falls into ('into which speed class does the red sedan fall : static , slow or fast ?')
@@ -421,7 +426,7 @@ IDIOMS = phrase_table({
         ("first", "started"), ("stopped",), ("stops",), ("halted",), ("ended",), ("ends",), ("has",), ("is",), ("was",),
         ("froze",), ("freezes",), ("cuts",), ("cut",))},
     # the video going on, a bettor's or a commentator's ('once the clip carries on', 'when the action resumes')
-    **{(when, "the", film, *resumes): ("after", "the", "video", "ends") for when in ("once", "when", "after")
+    **{(when, "the", film, *resumes): ("after", "the", "video", "ends") for when in ("once", "when", "after", "if")
        for film in ("video", "clip", "footage", "film", "tape", "recording", "feed", "action", "play")
        for resumes in (("resumes",), ("carries", "on"), ("continues",), ("picks", "up", "again"), ("restarts",),
                        ("starts", "again"), ("plays", "on"), ("rolls", "on"), ("goes", "on"), ("keeps", "going"))},
@@ -520,6 +525,22 @@ IDIOMS = phrase_table({
     **{("on", *the, "screen"): ("in", "view") for the in ((), ("the",))},
     **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
     ("bombing", "it"): ("moving", "fast"),
+    # 'the green one's just sitting there' ('one's' as 'one is': the decoder read "one 's just" as nothing)
+    **{("one", "'", "s", w): ("one", "is", w) for w in ("just", "still", "not", "really", "actually", "totally",
+                                                         "sitting", "moving", "going", "parked", "hovering", "floating",
+                                                         "speeding", "accelerating", "standing", "driving", "flying")},
+    # the video going on 'after the stop' (its own stop: 'when the video is continuing after the stop, will ...')
+    **{(*goes, "after", "the", stop): goes for stop in ("stop", "pause", "cut", "freeze")
+       for goes in (("continuing",), ("continues",), ("continued",), ("continue",), ("resumes",), ("resumed",),
+                    ("resuming",), ("going", "on"), ("goes", "on"), ("carries", "on"), ("carrying", "on"),
+                    ("plays", "on"), ("playing", "on"), ("rolls", "on"), ("rolling", "on"))},
+    # a casual speaker's 'booking it' (fast), 'when the clip kicks off' (the start), 'pauses right there' (no direction)
+    **{(pauses, "right", there): (pauses, there) for there in ("there", "here")
+       for pauses in ("pauses", "paused", "stops", "stopped", "ends", "ended", "cuts", "freezes", "froze")},
+    **{(book, "it"): (moving, "fast") for book, moving in (("booking", "moving"), ("books", "moves"),
+                                                           ("booked", "moved"))},
+    **{(when, "the", film, kicks, "off"): _START for when in ("when", "as", "once", "right", "where")
+       for film in ("video", "clip", "footage", "film", "recording", "vid", "action") for kicks in ("kicks", "kicked")},
     ("budging",): ("moving",),
     **{(punch, *gas): (accelerate,) for punch, accelerate in (("punching", "accelerating"), ("punches", "accelerates"),
                                                               ("punched", "accelerated"), ("punch", "accelerate"))
@@ -708,9 +729,13 @@ IDIOMS = phrase_table({
     **{(into, *the, "screen"): ("into", "view") for into in ("into", "onto") for the in ((), ("the",))},
     **{(when, "it", "all", *began): ("at", "the", "start") for when in ("when", "as") for began in (
         ("started",), ("starts",), ("began",), ("begins",), ("kicked", "off"), ("kicks", "off"))},
-    # 'jam' said for 'hit' ('when it jammed the bike', 'will they jam each other?'; a traffic jam is refused)
+    # 'jam' said for 'hit' ('when it jammed the bike', 'will they jam each other?', 'did they jam?', 'when it jam with
+    # the bus'; a traffic jam is refused)
     **{(jam, after): (hit, after) for jam, hit in (("jam", "hit"), ("jams", "hits"), ("jammed", "hit"),
                                                    ("jamming", "hitting")) for after in ("the", "each", "into")},
+    **{(jam, after): (collide, after) for jam, collide in (("jam", "collide"), ("jams", "collides"),
+                                                           ("jammed", "collided"), ("jamming", "colliding"))
+       for after in ("with", "?", ".")},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
 }.items())

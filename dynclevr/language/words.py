@@ -24,15 +24,19 @@ PLURALS = {"vehicles", "objects", "things", "cars", "buses", "bikes", "bicycles"
 CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
                  "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
-                 "evening", "sure", "roger", "copy"} | CHAT
+                 "evening", "sure", "roger", "copy", "dude", "bro"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
+# a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
+# halfway na, so ...', 'it hits the bus lah, or not?')
+PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
            "honestly"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
                          "thanks", "cheers", "tho",
                          # and the particles regional Englishes close with ('they collide or not, lah?', '..., abi?')
-                         "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah",
+                         "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah", "na", "yaar", "diba",
+                         "naman", "po",
                          # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
                          "affirmative", "roger"} | CHAT
 
