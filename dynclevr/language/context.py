@@ -613,7 +613,8 @@ SPEEDS_SAID = {"static": {"still", "stationary", "parked", "static", "stopped", 
                "fast": {"fast", "quick", "quickly", "speeding", "racing", "zooming"},
                "slow": {"slow", "slowly", "crawling", "creeping"}}
 ELABORATING = {w for said in SPEEDS_SAID.values() for w in said} | {
-    "not", "moving", "at", "all", "really", "totally", "completely", "just", "there", "very", "super", "going", "pretty"}
+    "not", "moving", "at", "all", "really", "totally", "completely", "just", "there", "very", "super", "going",
+    "pretty"}
 
 
 def _speeds_said(words: list[str]) -> set[str]:
