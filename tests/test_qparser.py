@@ -2868,3 +2868,24 @@ def test_a_casual_speaker_and_african_learners():
     # what a vehicle does, with no speeds offered, is still refused; a traffic jam is no collision
     assert_refused(parser, {"what is the red car doing at the start?": "what a vehicle does",
                             "is there a traffic jam?": "arranged"})
+
+
+def test_a_philosopher_and_a_drafter_and_code_switchers():
+    parser = QuestionParser.load()
+    world, stipulated, provided, anywhere, ought, particle = parser.parse_batch([
+        "Consider the nearest possible world in which the red city bike stands still from the start; does it, in "
+        "that world, collide with the cyan SUV?",
+        "Let it be stipulated that the blue fighter jet hovered aloft from the outset; under that stipulation, would "
+        "it collide with the brown pickup?",
+        "Provided the clip stops partway through, will the grey dirt bike afterwards collide with anything?",
+        "Is there, anywhere in the footage, a collision between the grey tandem bicycle and the red thing?",
+        "Taking only the first moments of the video into account, how ought one to characterise the speed of the "
+        "cyan scooter: stationary, slow, or fast?",
+        "Video stops midway, accha, after that will the green bus hit anything?"])
+    assert "Counterfactual_static" in world and "Counterfactual_floating" in stipulated
+    assert provided[0] == particle[0] == "futureEvents" and anywhere[0] == "Events" and anywhere[-1] == "exist"
+    assert ought == ["Objects", "filter_attributes[cyan]", "filter_attributes[scooter]", "unique", "start",
+                     "query_moving_velocity"]
+    assert_refused(parser, {"Consider the blue sedan at the instant it leaves the frame: is it then moving slowly or "
+                            "fast?": "leaves the view"})
+

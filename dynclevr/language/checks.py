@@ -265,14 +265,19 @@ def visibility_unread(words: list[str], program: list[str]) -> str:
         # ... or goes out of it ('goes out from the view'; 'comes out from behind' is coming into it)
         leaving = next((w for w in words if w in LEAVING), None) or next(
             (f"{a} out" for a, b in zip(words, words[1:]) if a in GOING_OUT and b == "out"), None)
-        if leaving and "come_in_frame" in program:   # 'when it leaves the view' was read as when it comes into it
-            return (f"the question asks when a vehicle leaves the view ('{leaving}'), which no question here asks "
-                    "(they ask how fast it moves when it comes into view)")
+        # 'when it leaves the view' was read as when it comes into it, 'at the instant it leaves the frame' at the
+        # start
+        left_view = next((f"{w} the {v}" for w, t, v in zip(words, words[1:], words[2:]) if w in LEAVING
+                          and t == "the" and v in VIEW_NOUNS), None)
+        if leaving and "come_in_frame" in program or left_view and "start" in program:
+            return (f"the question asks when a vehicle leaves the view ('{left_view or leaving}'), which no question "
+                    "here asks (they ask how fast it moves when it comes into view)")
         return ""
     return (f"the question asks whether a vehicle can be seen ('{said}'), which no question here asks (they ask how "
             "fast it moves when it comes into view)")
 
 
+VIEW_NOUNS = {"frame", "view", "picture", "screen", "shot", "scene", "image"}
 GOING_OUT = {"go", "goes", "going", "went", "gone", "move", "moves", "moving", "moved", "drive", "drives", "driving",
              "drove", "fly", "flies", "flying", "flew", "get", "gets", "getting", "got", "pass", "passes", "passed"}
 LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "exited", "disappear", "disappears",

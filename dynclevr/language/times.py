@@ -13,15 +13,18 @@ from dynclevr.language.words import NAMING, QUESTION_OPENERS, START_ADJECTIVES, 
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
 # the red car , when it hits the bus , fast ?'): the grammar says it last
 INSERTED_TIMES = {"at", "in", "during", "ever", "right", "initially", "once", "when", "while", "after", "before",
-                  "later", "from"}
+                  "later", "from", "anywhere"}
 
 
 def inserted_time_last(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question with a time between commas after its first vehicle put last ('does the red biplane , at any
     point , collide with the green sedan ?' -> '... collide with the green sedan at any point ?'), where the sentence
-    goes on after it. With the words read so, or the words as they are and ()."""
+    goes on after it; or after 'is there' ('is there , anywhere in the footage , a collision between ...'). With the
+    words read so, or the words as they are and ()."""
     for k in range(1, len(words) - 2):
-        if words[k] != "," or words[k - 1] not in OBJECT_WORDS or words[k + 1] not in INSERTED_TIMES:
+        if words[k] != "," or words[k - 1] not in OBJECT_WORDS and words[k - 2:k] not in (["is", "there"],
+                                                                                            ["was", "there"]) \
+                or words[k + 1] not in INSERTED_TIMES:
             continue
         close = next((j for j in range(k + 2, min(k + 10, len(words))) if words[j] in (",", "?", ".")), None)
         if close is None or words[close] != "," or close + 1 == len(words) or words[close + 1] in QUESTION_OPENERS:
@@ -77,7 +80,8 @@ def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'after the video ends', the future (a 'when' or 'once' clause reads as the video's own time otherwise).
 END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
-               ["given", "that"], ["given"], ["now", "that"], ["with"],
+               ["given", "that"], ["given"], ["now", "that"], ["with"], ["supposing"], ["supposing", "that"],
+               ["provided"], ["provided", "that"],
                *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")))
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
               "replay", "feed", "tape", "playback", "livestream"}

@@ -608,6 +608,28 @@ IDIOMS = phrase_table({
                            ("at", "the", "first", "whistle"), ("on", "the", "opening", "whistle"))},
     **{("under", *own, "power"): ("with", "its", "engine", "on") for own in ((), ("its", "own"), ("engine",),
                                                                               ("its", "engine's"))},
+    **{("under", *own, engine): ("with", "its", "engine", "on") for own in (("its", "own"), ("its",))
+       for engine in ("engine", "steam", "propulsion")},
+    # a philosopher's possible world and stipulation ('consider the nearest possible world in which ...; does it, in
+    # that world, ...', 'let it be stipulated that ...; under that stipulation, would ...'), 'is it to be expected'
+    **{(*consider, "the", nearest, "possible", "world", *which): ("imagine",)
+       for consider in (("consider",), ("in",), ("take",), ("suppose",), ("imagine",))
+       for nearest in ("nearest", "closest")
+       for which in (("in", "which"), ("where",))},
+    **{(under, that, world): ("in", "that", "case") for under, world in (
+        ("in", "world"), ("under", "stipulation"), ("under", "supposition"), ("under", "assumption"),
+        ("on", "assumption"), ("on", "supposition"), ("under", "hypothesis")) for that in ("that", "this")},
+    **{("let", "it", "be", said, "that"): ("suppose",) for said in ("stipulated", "supposed", "assumed", "granted")},
+    ("is", "it", "to", "be", "expected", "that"): ("is", "it", "likely", "that"),
+    # a philosopher's 'how ought one to characterise ...', and the start 'taking only the first moments into account'
+    **{("how", ought, "one", "to", describe): ("how", "would", "you", "describe")
+       for ought in ("ought", "should", "would", "might", "must") for describe in (
+           "characterise", "characterize", "describe", "classify", "categorise", "categorize")},
+    **{(take, *only, "the", first, moments, *of, *account): ("in", "the", "first", "moments")
+       for take in ("taking", "considering", "counting") for only in ((), ("only",), ("just",))
+       for first in ("first", "opening", "initial", "earliest") for moments in ("moments", "frames", "seconds")
+       for of in ((), ("of", "the", "video"), ("of", "the", "clip"), ("of", "the", "footage"))
+       for account in ((), ("into", "account"))},
     **{(w, "things", get, *way): _START for w in ("as", "when") for get in ("get", "got", "are", "were")
        for way in (("under", "way"), ("underway",))},
     ("dead", "still"): ("still",),
