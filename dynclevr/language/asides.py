@@ -725,6 +725,19 @@ def attribute_kept(dropped: list[str], question: list[str]) -> list[str]:
             ["what", "type", "of", "vehicle"]) + question[2:]
 
 
+def _headline(heading: list[str], question: list[str]) -> bool:
+    """Whether a heading before a colon is a headline over a question that names its own vehicles ('bus horror :
+    how fast was the green motorbike ...'): a few words with no article, not a vehicle's name alone ('red car : is
+    it ...' points at it), nothing imagined or said of a time, and the question's first vehicle named before its
+    first pronoun."""
+    runs = mentions(question)
+    pronoun = next((k for k, w in enumerate(question) if w in ("it", "its", "they", "them", "their")), len(question))
+    return 0 < len(heading) <= 4 and not set(heading) <= OBJECT_WORDS and not set(heading) & (DETERMINERS | CONDITION_OPENERS | IMAGINING_LABELS
+                                                         | IMAGINING | HEADING_KEPT | START_WORDS | FILM_WORDS) \
+        and question[:1] != [] and question[0] in QUESTION_OPENERS | {"in", "at", "which", "if", "when"} and \
+        bool(runs) and runs[0][0] < pronoun
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -737,6 +750,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                                                                      words[j + 1] in QUICK_LABELS)]   # 'quick one'
         if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
+        elif end is not None and words[end] == ":" and _headline(heading, words[end + 1:]):
+            pass   # 'BUS HORROR: how fast was the green motorbike ... when it hit the blue double-decker?'
         elif end is None or end + 1 == len(words) or set(heading) & (
                 OBJECT_WORDS | GENERIC_NOUNS | CONDITION_OPENERS | IMAGINING_LABELS | IMAGINING
                 | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS | STATIC_SAID) or asks_impact(heading) or \

@@ -529,6 +529,23 @@ IDIOMS = phrase_table({
     **{("one", "'", "s", w): ("one", "is", w) for w in ("just", "still", "not", "really", "actually", "totally",
                                                          "sitting", "moving", "going", "parked", "hovering", "floating",
                                                          "speeding", "accelerating", "standing", "driving", "flying")},
+    # Australian and New Zealand words: 'flat chat' (fast), 'heaps fast', 'stacked it into' and 'cleaned up' (hit),
+    # 'have a prang' (collide), 'hanging about up there' (floating), 'winding up speed' (accelerating)
+    ("flat", "chat"): ("fast",),
+    **{("heaps", pace): (pace,) for pace in ("fast", "slow", "quick", "quickly", "slowly", "faster", "slower")},
+    **{(stack, "it", "into"): (crash, "into") for stack, crash in (("stacked", "crashed"), ("stacks", "crashes"),
+                                                                  ("stack", "crash"), ("stacking", "crashing"))},
+    **{(clean, "up", the): (hit, the) for clean, hit in (("cleaned", "hit"), ("cleans", "hits"), ("clean", "hit"),
+                                                        ("cleaning", "hitting")) for the in ("the", "a", "an")},
+    **{(have, "a", prang, *w): (collide, *w) for have, collide in (("have", "collide"), ("has", "collides"),
+                                                                    ("had", "collided"), ("having", "colliding"))
+       for prang in ("prang", "bingle") for w in ((), ("with",))},
+    **{(prang, the): (hit, the) for prang, hit in (("prang", "hit"), ("prangs", "hits"), ("pranged", "hit"),
+                                                   ("pranging", "hitting")) for the in ("the", "a", "an", "into")},
+    **{(hang, about, *there): ("floating",) for hang in ("hanging", "hangs", "hung") for about in ("about", "around")
+       for there in (("up", "there"), ("in", "the", "air"), ("up", "in", "the", "air"), ("in", "the", "sky"))},
+    **{(wind, "up", "speed"): (accelerating,) for wind, accelerating in (
+        ("winding", "accelerating"), ("winds", "accelerates"), ("wound", "accelerated"), ("wind", "accelerate"))},
     # the video going on 'after the stop' (its own stop: 'when the video is continuing after the stop, will ...')
     **{(*goes, "after", "the", stop): goes for stop in ("stop", "pause", "cut", "freeze")
        for goes in (("continuing",), ("continues",), ("continued",), ("continue",), ("resumes",), ("resumed",),
