@@ -732,8 +732,8 @@ def _headline(heading: list[str], question: list[str]) -> bool:
     first pronoun."""
     runs = mentions(question)
     pronoun = next((k for k, w in enumerate(question) if w in ("it", "its", "they", "them", "their")), len(question))
-    return 0 < len(heading) <= 4 and not set(heading) <= OBJECT_WORDS and not set(heading) & (DETERMINERS | CONDITION_OPENERS | IMAGINING_LABELS
-                                                         | IMAGINING | HEADING_KEPT | START_WORDS | FILM_WORDS) \
+    said = DETERMINERS | CONDITION_OPENERS | IMAGINING_LABELS | IMAGINING | HEADING_KEPT | START_WORDS | FILM_WORDS
+    return 0 < len(heading) <= 4 and not set(heading) <= OBJECT_WORDS and not set(heading) & said \
         and question[:1] != [] and question[0] in QUESTION_OPENERS | {"in", "at", "which", "if", "when"} and \
         bool(runs) and runs[0][0] < pronoun
 
