@@ -2889,3 +2889,33 @@ def test_a_philosopher_and_a_drafter_and_code_switchers():
     assert_refused(parser, {"Consider the blue sedan at the instant it leaves the frame: is it then moving slowly or "
                             "fast?": "leaves the view"})
 
+
+def test_headlines_and_australian_words():
+    parser = QuestionParser.load()
+    headline, chat, prang, hanging, pushie = parser.parse_batch([
+        "BUS HORROR: how fast was the green motorbike travelling when it stacked it into the blue double-decker - "
+        "still, slow or fast?",
+        "Was the purple one flat chat right at the beginning?",
+        "Did the dirtbike and the brown minivan have a prang at any point?",
+        "Reckon the blue biplane was just hanging about up there at the start?",
+        "FOOT TO THE FLOOR: if the red bus had been gunning it from the very start, would it have crashed into the "
+        "pushie?"])
+    # the headline's bus is no vehicle of the question: the motorbike is the one asked
+    assert headline[:3] == ["Objects", "filter_attributes[green]", "filter_attributes[motorbike]"]
+    assert chat[-1] == "is_moving_velocity[fast]" and hanging[-1] == "is_floating" and prang[-1] == "exist"
+    assert "Counterfactual_accelerating" in pushie and "filter_attributes[bicycle]" in pushie
+    # a vehicle's name alone before the colon is what the question points at, no headline
+    assert parser.parse("Red sedan: is it fast at the start?")[1:3] == ["filter_attributes[red]",
+                                                                     "filter_attributes[sedan]"]
+
+
+
+def test_gen_z_comments_and_cloze_items():
+    parser = QuestionParser.load()
+    nah, tripping = parser.parse_batch([
+        "the fighter jet at the beginning lowkey crawling?? is it going slow or nah",
+        "the double-decker was going fast when it hit the gray station wagon right?? or am i tripping"])
+    assert nah == ["Objects", "filter_attributes[fighter]", "unique", "start", "is_moving_velocity[slow]"]
+    assert tripping[-1] == "is_moving_velocity[fast]" and "filter_attributes[wagon]" in tripping
+    assert_refused(parser, {"Fill in the blank: The purple airliner is hovering about ____ metres above the "
+                            "ground.": "length in metres"})

@@ -728,14 +728,14 @@ def attribute_kept(dropped: list[str], question: list[str]) -> list[str]:
 def _headline(heading: list[str], question: list[str]) -> bool:
     """Whether a heading before a colon is a headline over a question that names its own vehicles ('bus horror :
     how fast was the green motorbike ...'): a few words with no article, not a vehicle's name alone ('red car : is
-    it ...' points at it), nothing imagined or said of a time, and the question's first vehicle named before its
-    first pronoun."""
+    it ...' points at it), nothing imagined or said of a time, no collision the question does not speak of ('for my
+    accident class :'), and the question's first vehicle named before its first pronoun."""
     runs = mentions(question)
     pronoun = next((k for k, w in enumerate(question) if w in ("it", "its", "they", "them", "their")), len(question))
     said = DETERMINERS | CONDITION_OPENERS | IMAGINING_LABELS | IMAGINING | HEADING_KEPT | START_WORDS | FILM_WORDS
     return 0 < len(heading) <= 4 and not set(heading) <= OBJECT_WORDS and not set(heading) & said \
         and question[:1] != [] and question[0] in QUESTION_OPENERS | {"in", "at", "which", "if", "when"} and \
-        bool(runs) and runs[0][0] < pronoun
+        bool(runs) and runs[0][0] < pronoun and (asks_impact(question) or not asks_impact(heading))
 
 
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -359,6 +359,9 @@ QUANTITIES = {"gravity", "force", "forces", "energy", "momentum", "friction", "i
 # what is heard ('what sound does the bus make when it hits the van?' was read as its speed there)
 SOUNDS = {"sound", "sounds", "noise", "noises", "noisy", "loud", "loudly", "honk", "honks", "honked", "honking", "horn",
           "horns", "beep", "beeps", "siren", "sirens", "hear", "hears", "heard", "audible", "screech", "screeches"}
+# a length in a unit ('hovering about ____ metres above the ground' was read as whether it floats)
+LENGTHS = {"metre", "metres", "meter", "meters", "centimetres", "centimeters", "kilometres", "kilometers", "miles",
+           "inches", "feet", "yards"}
 # each word of a kind no family asks, and why it is refused ('{}': the word)
 NO_FAMILY_WORDS = (
     (PEOPLE, "the question asks about a person ('{}'), and the videos show only vehicles (questions ask how they move "
@@ -371,6 +374,8 @@ NO_FAMILY_WORDS = (
     (QUANTITIES, "the question asks about a physical quantity ('{}'), which no question here asks (they ask speed "
                  "classes, directions, colours, types and collisions)"),
     (STALLING, "the question asks whether a vehicle stalls ('{}'), which no question here asks"),
+    (LENGTHS, "the question asks a length in {} (a distance or a height), which no question here asks (they ask "
+              "speed classes, directions, colours, types and collisions)"),
     (FAULT, "the question asks who is to blame ('{}'), which no question here asks (they ask who collides)"),
     (FITTINGS, "the question asks about a vehicle's '{}', which no question here asks (they ask how it moves, its "
                "colour and its type)"),

@@ -263,6 +263,7 @@ def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # A yes/no question asked with its auxiliary negated ('Isn't the red car fast?', 'Doesn't it hit the bus?') asks
 # the same as without: English answers it yes where the car is fast. So does a statement with a tag ('The red car is
 # fast, isn't it?', '..., right?'). Only a negation inside the clause ('Is the red car not moving?') denies.
+START_NOUNS = {"start", "beginning", "outset", "video", "clip"}
 SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
                   "these", "those", "either", "both", "they", "some", "all"}
 TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
@@ -297,6 +298,14 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
                    for k, w in enumerate(statement)):
             return statement + ["?"], again + ((" ".join(body[-n:]), "?"),)
+    # a tag without its comma ('is it going slow or nah': no choice offered)
+    if body[-2:] in (["or", "nah"], ["or", "nope"], ["or", "naw"]):
+        return body[:-2] + ["?"], again + ((" ".join(body[-2:]), "?"),)
+    # a statement tagged 'right' without its comma, after a vehicle or a time ('... when it hit the wagon right ?'; not
+    # 'is it moving right ?')
+    if body[-1:] == ["right"] and body[-2:-1] and (body[-2] in OBJECT_WORDS or body[-2] in START_NOUNS) and \
+            body[:1] and body[0] not in YES_NO_OPENERS | ASKING | {"how"}:
+        return body[:-1] + ["?"], again + (("right", "?"),)
     return words, again
 
 
@@ -529,6 +538,11 @@ IDIOMS = phrase_table({
     **{("one", "'", "s", w): ("one", "is", w) for w in ("just", "still", "not", "really", "actually", "totally",
                                                          "sitting", "moving", "going", "parked", "hovering", "floating",
                                                          "speeding", "accelerating", "standing", "driving", "flying")},
+    # a commenter's doubt of their own eyes ('... or am i tripping'), and 'no bc' (no because) opening a question
+    **{("or", "am", "i", *doubt): () for doubt in (("tripping",), ("trippin",), ("seeing", "things"), ("crazy",),
+                                                    ("wrong",), ("imagining", "it"), ("imagining", "things"),
+                                                    ("hallucinating",), ("blind",))},
+    ("no", "bc"): (),
     # Australian and New Zealand words: 'flat chat' (fast), 'heaps fast', 'stacked it into' and 'cleaned up' (hit),
     # 'have a prang' (collide), 'hanging about up there' (floating), 'winding up speed' (accelerating)
     ("flat", "chat"): ("fast",),
