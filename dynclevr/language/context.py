@@ -633,7 +633,8 @@ def _elaborates(core: list[str], question: list[str]) -> bool:
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question with what is said after it read into it, and what was said after it read as nothing; the words
     as they are and () where nothing is said after it, it asks again, or what it says cannot be read so (a vehicle
-    said with a word the parser does not know, of `known`: 'The white sedan, I mean.')."""
+    said with a word the parser does not know, of `known`: 'The white sedan, I mean.'). A last question that only
+    says its speed again ('? like not moving at all ?') is read as nothing."""
     spans, again = _sentence_spans(words), ()
     if len(spans) > 1 and words[spans[-2][1] - 1] == words[-1] == "?" and \
             _elaborates(words[spans[-1][0]:-1], words[spans[-2][0]:spans[-2][1]]):
