@@ -2919,3 +2919,15 @@ def test_gen_z_comments_and_cloze_items():
     assert tripping[-1] == "is_moving_velocity[fast]" and "filter_attributes[wagon]" in tripping
     assert_refused(parser, {"Fill in the blank: The purple airliner is hovering about ____ metres above the "
                             "ground.": "length in metres"})
+
+
+def test_enthusiasts_names():
+    parser = QuestionParser.load()
+    step, warbird, bendy = parser.parse_batch([
+        "How quick is the blue step-through moving as it first rolls into shot?",
+        "When the warbird first pops into frame, how fast is it going?",
+        "In the opening moments, is the green bendy outpacing the grey estate?"])
+    assert step[1:3] == ["filter_attributes[blue]", "filter_attributes[scooter]"]
+    assert "filter_attributes[fighter]" in warbird and warbird[-1] == "query_moving_velocity"
+    assert "filter_attributes[articulated_bus]" in bendy and "filter_attributes[wagon]" in bendy
+

@@ -41,7 +41,11 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "jetliner": "airliner", "warplane": "fighter", "war plane": "fighter",
                   # as plane spotters name them
                   "jumbo": "airliner", "jumbo jet": "airliner", "bizjet": "jet", "business jet": "jet",
-                  "executive jet": "jet", "corporate jet": "jet",
+                  "executive jet": "jet", "corporate jet": "jet", "warbird": "fighter", "fast jet": "fighter",
+                  "stringbag": "biplane",
+                  # as bikers and bus and car enthusiasts name them
+                  "hog": "cruiser", "step - through": "scooter", "decker": "double bus", "bendy": "articulated bus",
+                  "estate": "wagon",
                   "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
                   "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
