@@ -21,7 +21,7 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBU
                                      DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
                                      MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
                                      REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, START_ADJECTIVES,
-                                     TIME_OPENERS, YES_NO_OPENERS, _head)
+                                     START_WORDS, TIME_OPENERS, YES_NO_OPENERS, _head)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -263,7 +263,6 @@ def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # A yes/no question asked with its auxiliary negated ('Isn't the red car fast?', 'Doesn't it hit the bus?') asks
 # the same as without: English answers it yes where the car is fast. So does a statement with a tag ('The red car is
 # fast, isn't it?', '..., right?'). Only a negation inside the clause ('Is the red car not moving?') denies.
-START_NOUNS = {"start", "beginning", "outset", "video", "clip"}
 SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "it", "there", "its", "this", "that",
                   "these", "those", "either", "both", "they", "some", "all"}
 TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
@@ -303,7 +302,7 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         return body[:-2] + ["?"], again + ((" ".join(body[-2:]), "?"),)
     # a statement tagged 'right' without its comma, after a vehicle or a time ('... when it hit the wagon right ?'; not
     # 'is it moving right ?')
-    if body[-1:] == ["right"] and body[-2:-1] and (body[-2] in OBJECT_WORDS or body[-2] in START_NOUNS) and \
+    if body[-1:] == ["right"] and body[-2:-1] and (body[-2] in OBJECT_WORDS | START_WORDS | FILM_WORDS) and \
             body[:1] and body[0] not in YES_NO_OPENERS | ASKING | {"how"}:
         return body[:-1] + ["?"], again + (("right", "?"),)
     return words, again
