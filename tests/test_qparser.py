@@ -38,7 +38,8 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
                                         times_joined)
 from dynclevr.language.surface import (archaic_as_said, corrections_starred, glosses_read, homophones_as_said,
-                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
+                                       lettered_options, quoted_question, shorthand_as_said, spelt_by_ear,
+                                       worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
@@ -2931,3 +2932,32 @@ def test_enthusiasts_names():
     assert "filter_attributes[fighter]" in warbird and warbird[-1] == "query_moving_velocity"
     assert "filter_attributes[articulated_bus]" in bendy and "filter_attributes[wagon]" in bendy
 
+
+
+def test_lettered_options_complete_their_question():
+    said = {
+        # yes / no offered leave the question alone, or ask a statement whether it is true
+        "Select the correct answer: Is the airliner still? A) Yes B) No": "is the airliner still ?",
+        "At the start, the purple one is stationary. A) Yes B) No":
+            "is it true that at the start , the purple one is stationary ?",
+        # an option and its negation ask whether the first holds, from the statement's last sentence
+        "Picture the cruiser accelerating. Then the cruiser A) collides with the bus B) does not collide with the bus.":
+            "picture the cruiser accelerating . is it true that then the cruiser collides with the bus ?",
+        # other options are offered choices; a blank for a colour or a kind asks what it is
+        "Choose one: the school bus is A) standing still B) moving slowly C) moving fast.":
+            "the school bus is standing still , moving slowly or moving fast ?",
+        "How fast is it? (A) not moving (B) slow (C) fast": "how fast is it , not moving , slow or fast ?",
+        "The yellow sedan crashes into a A) car B) bus C) bicycle.": "the yellow sedan crashes into what kind of vehicle ?",
+        "Fill in the blank (would / would not): If the car had been still, it ____ hit the bus.":
+            "is it true that if the car had been still , it would hit the bus ?"}
+    for text, question in said.items():
+        assert " ".join(worksheet_as_said(tokenize(text))[0]) == question, text
+    # 'a' alone is an article: no list without its 'b'
+    assert lettered_options(tokenize("Does the car hit a) bus?")) is None
+    parser = QuestionParser.load()
+    floating, partner = parser.parse_batch([
+        "Choose one: In the first moments, the green aeroplane is A) floating in the air B) not floating.",
+        "Question: The yellow sedan crashes into a (A) car (B) bus (C) motorbike (D) bicycle (E) aeroplane."])
+    assert floating == ["Objects", "filter_attributes[green]", "filter_attributes[aeroplane]", "unique", "start",
+                        "is_floating"]
+    assert partner[-1] == "query_attributes[shape]" and "get_all_col_partners" in partner

@@ -17,7 +17,7 @@ from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
 from dynclevr.language.tokenize import SPELLINGS
 from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
-                                     GENERIC_NOUNS, NAMING, OTHER_COLOURS, OTHER_VEHICLES, QUERY_NOUNS,
+                                     GENERIC_NOUNS, NAMING, NEGATIONS, OTHER_COLOURS, OTHER_VEHICLES, QUERY_NOUNS,
                                      QUESTION_OPENERS, SPEED_CHOICES, asks_impact)
 
 # A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
@@ -29,7 +29,9 @@ ANSWER_WORDS = {"yes", "no", "true", "false", "none", "of", "these", "the", "abo
 INSTRUCTIONS = (("answer", "in", "one", "word"), ("answer", "yes", "or", "no"), ("answer", "yes", "/", "no"),
                 ("explain", "nothing", ",", "just", "answer"), ("just", "answer"), ("circle", "one"), ("circle",),
                 ("tick", "one"), ("tick", "the", "correct", "box"), ("tick",), ("choose", "one"), ("select", "one"),
-                ("yes", "or", "no"), ("yes", "/", "no"), ("true", "/", "false"))
+                ("yes", "or", "no"), ("yes", "/", "no"), ("true", "/", "false"),
+                *((v, "the", a, n) for v in ("choose", "select", "pick") for a in ("correct", "right", "best")
+                  for n in ("answer", "option")), ("pick", "one"))
 
 
 def _numbered(words: list[str]) -> int:
@@ -44,9 +46,77 @@ def _numbered(words: list[str]) -> int:
     return 0
 
 
-def _options_at(words: list[str], k: int) -> bool:
-    """Whether a list of lettered options starts at words[k] ('( a ) static ( b ) ...', 'a ) red b ) gray ...')."""
-    return words[k:k + 3] == ["(", "a", ")"] or words[k:k + 2] == ["a", ")"]
+def _marker(words: list[str], k: int, letter: str) -> int:
+    """How many words an option's letter takes at words[k] ('( b )', 'b )', 'b .'); 0 where none."""
+    if words[k:k + 3] == ["(", letter, ")"]:
+        return 3
+    return 2 if words[k:k + 1] == [letter] and words[k + 1:k + 2] in ([")"], ["."], [":"]) else 0
+
+
+def lettered_options(words: list[str]) -> tuple[int, list[list[str]], int] | None:
+    """Lettered options offered in a question's words ('... ? A) static B) slow C) fast', '(a) yes (b) no'): where
+    they start, each option's words, and where the last ends (its full stop, or the words' end); None where none.
+    'a' alone is an article, so a list needs its 'b' too."""
+    for start in range(len(words)):
+        n = _marker(words, start, "a")
+        if not n or not any(_marker(words, k, "b") for k in range(start + n, len(words))):
+            continue
+        options, k, letter = [], start + n, "b"
+        while True:
+            nxt = next((j for j in range(k, len(words)) if _marker(words, j, letter)), None)
+            stop = next((j for j in range(k, nxt if nxt is not None else len(words)) if words[j] in (".", "?", "!")),
+                        None) if nxt is None else None
+            end = nxt if nxt is not None else stop if stop is not None else len(words)
+            options.append([w for w in words[k:end] if w not in (",", ";")])
+            if nxt is None:
+                break
+            k, letter = nxt + _marker(words, nxt, letter), chr(ord(letter) + 1)
+        if len(options) >= 2 and all(options):
+            return start, options, end + (end < len(words))
+    return None
+
+
+def options_as_asked(words: list[str]) -> tuple[list[str], tuple[str, str] | None]:
+    """The question its lettered options complete: yes / no offered leave the question alone, or ask a statement
+    whether it is true; an option and its negation ask whether the first holds; other options are offered choices
+    ('the bus is A) still B) slow C) fast.' -> 'the bus is still , slow or fast ?'). With what was read so."""
+    found = lettered_options(words)
+    if found is None:
+        return words, None
+    start, options, end = found
+    before, after = words[:start], words[end:]
+    while before and before[-1] in (":", "-", ","):
+        before = before[:-1]
+    offered = " ".join(words[start:end])
+    asked = before[-1:] == ["?"]
+    body = before[:-1] if before[-1:] in (["?"], ["."]) else before
+    # a statement is asked from its last sentence ('Picture ... . Then the cruiser A) collides ... B) does not ...')
+    said = next((k + 1 for k in range(len(body) - 1, -1, -1) if body[k] in (".", ":", ";")), 0)
+    judged = [*body[:said], "is", "it", "true", "that", *body[said:]]
+    if all(o[0] in ("yes", "no", "true", "false", "y", "n") for o in options) or \
+            asked and {w for o in options for w in o} <= ANSWER_WORDS:
+        return (before if asked else [*judged, "?"]) + after, (offered, "nothing, the options")
+    if len(options) == 2 and NEGATIONS & set(options[1]) and not NEGATIONS & set(options[0]):
+        return (body if asked else judged + options[0]) + ["?"] + after, (offered, "whether " + " ".join(options[0]))
+    # a statement's blank for a colour or a kind ('The sedan crashes into a A) car B) bus ...')
+    named = ["color"] if all(set(o) <= set(COLOR_NAMES) for o in options) else \
+        ["kind", "of", "vehicle"] if all(set(o) <= OBJECT_WORDS | {"a", "an"} for o in options) else None
+    if named and not asked:
+        body = body[:-1] if body[-1:] in (["a"], ["an"], ["the"]) else body
+        return [*body, "what", *named, "?"] + after, (offered, "what " + " ".join(named))
+    said = [w for o in options[:-1] for w in (*o, ",")][:-1] + ["or", *options[-1]]
+    return body + ([","] if asked else []) + said + ["?"] + after, (offered, " ".join(said))
+
+
+def _choices(words: list[str]) -> list[list[str]]:
+    """The choices a blank offers ('static / slow / fast', 'would / would not', 'static, slow or fast')."""
+    out = [[]]
+    for w in words:
+        if w in ("/", ",", "or"):
+            out.append([])
+        else:
+            out[-1].append(w)
+    return [c for c in out if c]
 
 
 def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -59,7 +129,8 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         read.append((" ".join(out[:n]), "nothing, a number"))
         out = out[n:]
     # an instruction said first ('Answer yes or no: is the jet ...?', 'Yes or no - does ...')
-    lead = next((i for i in INSTRUCTIONS if i[0] in ("answer", "explain", "just", "yes") and tuple(out[:len(i)]) == i
+    lead = next((i for i in INSTRUCTIONS if i[0] in ("answer", "explain", "just", "yes", "choose", "select", "pick")
+                 and tuple(out[:len(i)]) == i
                  and out[len(i):len(i) + 1] in ([":"], [","], ["."], ["-"]) and out[len(i) + 1:]), None)
     if lead:
         read.append((" ".join(out[:len(lead) + 1]), "nothing, an instruction"))
@@ -67,13 +138,11 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     while len(out) > 3 and (out[-1] in ("]", ")") and out[-2] in MARKS and out[-3].isdigit() and out[-4] in ("[", "(")):
         read.append((" ".join(out[-4:]), "nothing, the marks"))
         out = out[:-4]
+    out, offered = options_as_asked(out)
+    read += [offered] if offered else []
     asked = next((k for k, w in enumerate(out) if w == "?"), None)
     if asked is not None:
         rest = out[asked + 1:]
-        options = next((k for k in range(len(rest)) if _options_at(rest, k)), None)
-        if options is not None and set(rest[options:]) <= ANSWER_WORDS | {"(", ")", "a", "b", "c", "d", "e"}:
-            read.append((" ".join(rest[options:]), "nothing, the options"))
-            rest = rest[:options]
         while rest:
             said = next((i for i in INSTRUCTIONS if tuple(rest[:len(i)]) == i), None)
             if said is None:
@@ -97,20 +166,31 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             body = body[:-1]
         read.append(("true or false", "is it true that"))
         out = ["is", "it", "true", "that", *body, "?"]
+    given = []
     if out[:4] == ["fill", "in", "the", "blank"]:
-        read.append(("fill in the blank", "nothing, an instruction"))
-        out = out[4 + (out[4:5] == [":"]):]
+        # its choices may be said with the instruction ('Fill in the blank (would / would not): ...')
+        close = out.index(")", 4) if out[4:5] == ["("] and ")" in out[4:] else None
+        given = _choices(out[5:close]) if close else []
+        read.append((" ".join(out[:close + 1 if close else 4]), "nothing, an instruction"))
+        out = out[close + 1 if close else 4:]
+        out = out[(out[:1] == [":"]):]
     blank = next((k for k in range(len(out) - 1) if out[k] == out[k + 1] == "_"), None)
     if blank is not None:
         end = blank
         while end < len(out) and out[end] == "_":
             end += 1
         close = out.index(")", end) if out[end:end + 1] == ["("] and ")" in out[end:] else None
-        choices = [w for w in out[end + 1:close] if w not in ("/", ",", "or")] if close else []
-        if len(choices) >= 2:
-            said = [w for c in choices[:-1] for w in (c, ",")][:-1] + ["or", choices[-1]]
+        choices = _choices(out[end + 1:close]) if close else given
+        close = close if close else end - 1
+        rest = ["?" if w == "." else w for w in out[close + 1:]]
+        if len(choices) == 2 and NEGATIONS & set(choices[1]) and not NEGATIONS & set(choices[0]):
+            # a choice and its negation ask whether the first holds
+            read.append((" ".join(out[blank:close + 1]), "whether " + " ".join(choices[0])))
+            out = ["is", "it", "true", "that", *out[:blank], *choices[0], *rest]
+        elif len(choices) >= 2:
+            said = [w for c in choices[:-1] for w in (*c, ",")][:-1] + ["or", *choices[-1]]
             read.append((" ".join(out[blank:close + 1]), " ".join(said)))
-            out = out[:blank] + said + ["?" if w == "." else w for w in out[close + 1:]]
+            out = out[:blank] + said + rest
     return out, tuple(read)
 
 
