@@ -2961,3 +2961,36 @@ def test_lettered_options_complete_their_question():
     assert floating == ["Objects", "filter_attributes[green]", "filter_attributes[aeroplane]", "unique", "start",
                         "is_floating"]
     assert partner[-1] == "query_attributes[shape]" and "get_all_col_partners" in partner
+
+
+def test_a_model_s_prompt_wrapping_and_a_paraphraser_s_restructurings():
+    parser = QuestionParser.load()
+    yes_no, choose, letter, stopped, fronted, lag, version, wondered = parser.parse_batch([
+        "Based on the video, is the red bus faster than the blue car at the start? Respond with yes or no only.",
+        "<video> As the dirt bike first enters the frame, how fast is it moving? Choose from: static, slow, fast.",
+        "<video> Is the aeroplane hovering at the beginning of the clip? Options: (A) yes (B) no. Please output only "
+        "the letter of the correct option.",
+        "Based on the video, which is stopped before the end, is the cruiser going to hit anything afterwards?",
+        "Slow - would that describe the pace of the cyan SUV in the first moments of the video?",
+        "Does the green pickup lag behind the purple station wagon in speed at the very beginning?",
+        "In a version where the blue city bus starts off fast, is there a collision between it and the green sedan?",
+        "What sort of speed the school bus has during the opening moments of the clip is what I'd like to know."])
+    assert yes_no[-1] == "faster_velocity" and choose[-1] == "query_moving_velocity"
+    assert letter == ["Objects", "filter_attributes[aeroplane]", "unique", "start", "is_floating"]
+    assert stopped[0] == "futureEvents"
+    assert fronted[-1] == "is_moving_velocity[slow]" and lag[-1] == "slower_velocity"
+    assert "Counterfactual_moving_fast" in version and wondered[-1] == "query_moving_velocity"
+    # how to answer is dropped only where it says nothing more
+    assert_refused(parser, {"Is the red car fast at the start? Answer for the blue bus too.": "blue"})
+
+
+def test_scots_irish_and_northern_words():
+    parser = QuestionParser.load()
+    bang, owt, clatter = parser.parse_batch([
+        "How fast was the wee red sedan going bang on the start, like?",
+        "Does the red yin bump into owt, like?",
+        "Which way was the red double-decker going when it clattered into the green yin?"])
+    assert bang == ["Objects", "filter_attributes[red]", "filter_attributes[sedan]", "unique", "start",
+                    "query_moving_velocity"]
+    assert owt == ["Events", "Objects", "filter_attributes[red]", "unique", "filter_collision", "exist"]
+    assert "filter_attributes[green]" in clatter and clatter[-1] == "query_moving_direction"

@@ -15,7 +15,7 @@ import re
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
-from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end
+from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
                                      COMMA_INTERJECTIONS, COMPARING, PARTICLES, CONDITION_LABELS, CONDITION_OPENERS,
                                      CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
@@ -684,6 +684,14 @@ PROMPT_WORDS = {"yes", "or", "no", "only", "answer", "respond", "reply", "with",
                 "color", "output", "format", "please", "briefly", "just", "your", "final", "instruction", "prompt",
                 "following", "true", "false", "in", "words", "short", "answers", "aloud", "first", "then"}
 ROLE_ENDS = {"and", ":", ",", "."}
+# a sentence after the question that says how to answer, and the answers it may offer
+ANSWER_VERBS = {"answer", "respond", "reply", "choose", "select", "pick", "output", "give", "return", "write",
+                "options", "choices", "state", "say"}
+OFFERED_WORDS = ANSWER_VERBS | {":", ",", ".", ";", "!", "letter", "letters", "correct", "right", "best", "option",
+                                "choice", "from", "of", "following", "below", "these", "nothing", "else", "lowercase",
+                                "static", "slow", "fast", "left", "right", "up", "down", "forward", "backward",
+                                "forwards", "backwards", "front", "back", "none", "above", "exactly", "word",
+                                "only", "must", "be"} | set(COLOR_NAMES) | OBJECT_WORDS
 POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["honest", "question"],
                ["serious", "question"], ["asking", "for", "a", "friend"], ["update"], ["edit"])
 
@@ -693,6 +701,11 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     'is it ...'; '... ? a ( yes / no ) :' -> '... ?'. With the wrapping read as nothing, or the words as they are
     and ()."""
     out, read = list(words), []
+    # a placeholder where a model's prompt puts the video ('<video>', '[video]')
+    while (held := next((k for k in range(len(out) - 2) if (out[k], out[k + 2]) in (("<", ">"), ("[", "]"))
+                         and out[k + 1] in FILM_WORDS | {"image", "frames"}), None)) is not None:
+        read.append((" ".join(out[held:held + 3]), "nothing, the video's place"))
+        out = out[:held] + out[held + 3:]
     # a post's labels said first ('thread', '1/', 'PSA', 'hot take:', 'genuine question:', 'asking for a friend')
     while label := next((p for p in POST_LABELS if out[:len(p)] == p), None) or \
             (out[:2] if out[:1] and out[0].isdigit() and out[1:2] == ["/"] else None):
@@ -711,6 +724,13 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if asked is not None and out[asked + 1:] and out[asked + 1] == "a" and set(out[asked + 1:]) <= PROMPT_WORDS | {
             ":"}:
         read.append((" ".join(out[asked + 1:]), "nothing, an answer's place"))
+        out = out[:asked + 1]
+    # how to answer, said after the question ('... ? Respond with yes or no only.', 'Choose from: static, slow,
+    # fast. Answer:', 'Please output only the letter of the correct option.')
+    tail = out[asked + 1:] if asked is not None else []
+    told = tail[1:] if tail[:1] == ["please"] else tail
+    if told and told[0] in ANSWER_VERBS and set(tail) <= PROMPT_WORDS | OFFERED_WORDS:
+        read.append((" ".join(tail), "nothing, how to answer"))
         out = out[:asked + 1]
     return (out, tuple(read)) if read else (words, ())
 
@@ -890,6 +910,11 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     if not framed or (CONDITION_WORDS.intersection(words[:k]) and not hedge) or asks_impact(words[:k]) or \
             TIME_SAID.intersection(words[:k]):
         return words, ()
+    # the video's stop said of the preamble's video ('based on the video , which is stopped before the end , is ...')
+    stop = main.index(",") if main[:1] == ["which"] and words[k - 1] in FILM_WORDS and "," in main else None
+    if stop and STOP_CUES.intersection(main[:stop]) and main[stop + 1:]:
+        said, ended = video_end_as_said(["the", words[k - 1], *main[1:stop], ".", *main[stop + 1:]])
+        return said, ((" ".join(words[:k + 2]), f"the {words[k - 1]}"), *ended)
     return main, ((" ".join(words[:k]), "nothing, a preamble"),)
 
 

@@ -86,11 +86,11 @@ from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, run_together, slip
                                      stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
-                                        floating_plane_as_vehicle, heading_as_direction, height_as_aloft,
-                                        idioms_as_said, imperative_as_stated, negative_question_as_asked,
-                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
-                                        restated_dropped, speed_as_subject, tail_as_question, type_as_said,
-                                        type_of_category_as_vehicle)
+                                        floating_plane_as_vehicle, fronted_value_as_asked, heading_as_direction,
+                                        height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        negative_question_as_asked, noun_phrase_as_question, request_after_setting,
+                                        request_as_imperative, restated_dropped, speed_as_subject, tail_as_question,
+                                        type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -350,7 +350,9 @@ class QuestionParser:
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
         words, stated = imperative_as_stated(words)
+        words, fronted = fronted_value_as_asked(words)
         words, negative = negative_question_as_asked(words)
+        negative = fronted + negative
         words, asked = noun_phrase_as_question(words)
         words, classed = class_as_asked(words)
         asked += classed

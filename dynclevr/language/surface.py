@@ -85,8 +85,8 @@ def options_as_asked(words: list[str]) -> tuple[list[str], tuple[str, str] | Non
         return words, None
     start, options, end = found
     before, after = words[:start], words[end:]
-    while before and before[-1] in (":", "-", ","):
-        before = before[:-1]
+    while before and (before[-1] in (":", "-", ",") or before[-1] in CHOICE_LABELS and before[-2:-1] != ["the"]):
+        before = before[:-1]   # ('... ? Options: (A) yes (B) no')
     offered = " ".join(words[start:end])
     asked = before[-1:] == ["?"]
     body = before[:-1] if before[-1:] in (["?"], ["."]) else before

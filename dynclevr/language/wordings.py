@@ -268,6 +268,25 @@ SUBJECT_STARTS = {"the", "a", "an", "any", "anything", "something", "anyone", "i
 TAG_PRONOUNS = {"it", "they", "there", "he", "she"}
 
 
+# a verb that asks whether a speed said before the question fits ('Slow - would that describe the pace of ...?')
+FITTING = {"describe", "describes", "fit", "fits", "match", "matches", "capture", "captures", "characterise",
+           "characterises", "characterize", "characterizes", "sum"}
+
+
+def fronted_value_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'slow - would that describe the pace of the suv ... ?' -> 'is slow the pace of the suv ... ?': a speed said
+    first and pointed at by 'that' is the speed asked; with another verb the speed stands for 'that' ('fast : is
+    that how ...' -> 'is fast how ...'). With the words read so, or the words as they are and ()."""
+    k = next((k for k in range(1, 4) if words[k:k + 1] in (["-"], [":"], [","])), None)
+    if k is None or tuple(words[:k]) not in SPEED_CHOICES or not set(words[k + 1:k + 2]) & YES_NO_OPENERS or \
+            words[k + 2:k + 3] not in (["that"], ["this"]):
+        return words, ()
+    value, rest = words[:k], words[k + 3:]
+    rest = rest[1 + (rest[1:2] == ["up"]):] if rest[:1] and rest[0] in FITTING else rest
+    said = ["is", *value, *rest] if len(rest) < len(words) - k - 3 else [words[k + 1], *value, *rest]
+    return said, ((" ".join(words[:k + 3]), " ".join(said[:len(value) + 1])),)
+
+
 def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is not the red car fast ?' -> 'is the red car fast ?' (the negation on the auxiliary put before the subject,
     first or after a clause said first: 'when they collide , is not the sedan faster ?'); 'the red car is fast , is
@@ -559,6 +578,24 @@ IDIOMS = phrase_table({
        for there in (("up", "there"), ("in", "the", "air"), ("up", "in", "the", "air"), ("in", "the", "sky"))},
     **{(wind, "up", "speed"): (accelerating,) for wind, accelerating in (
         ("winding", "accelerating"), ("winds", "accelerates"), ("wound", "accelerated"), ("wind", "accelerate"))},
+    # Scots, Irish and Northern English: 'bang on the start' (right at it), 'stood still' at a collision
+    **{("bang", "on", *start): ("right", *(start if start[0] in ("at", "from") else ("at", *start)))
+       for start in (("the", "start"), ("the", "beginning"), ("the", "off"), ("at", "the", "start"),
+                     ("at", "the", "beginning"), ("from", "the", "start"))},
+    # a paraphraser's restructurings: 'lag behind' (slower than), 'in a version where' (if), a pseudo-cleft's 'is what
+    # I'd like to know' after the question asked, 'I'm curious about' the thing asked
+    **{(lag, "behind"): (move, "slower", "than") for lag, move in (("lag", "move"), ("lags", "moves"),
+                                                                   ("lagged", "moved"), ("lagging", "moving"))},
+    **{("in", a, version, *of, *where): ("if",) for version in ("version", "world", "timeline", "scenario", "variant")
+       for a in ("a", "another") for of in ((), ("of", "events"), ("of", "the", "video"), ("of", "the", "clip"))
+       for where in (("where",), ("in", "which"))},
+    **{("is", "what", *i, *like, "to", "know"): () for i in (("i", "'", "d"), ("i", "would"), ("we", "'", "d"))
+       for like in (("like",), ("love",))},
+    **{("is", "what", "i", want, "to", "know"): () for want in ("want", "wanna", "need")},
+    **{(*i, "curious", "about"): ("tell", "me") for i in (("i", "'", "m"), ("i", "am"), ("i", "'", "m", "really"))},
+    # the video's end as the whole thing's ('when it's all finished', 'once it's all over')
+    **{(when, "it", "'", "s", "all", done): (when, "the", "video", "ends") for when in ("when", "once", "after")
+       for done in ("finished", "over", "done")},
     # the video going on 'after the stop' (its own stop: 'when the video is continuing after the stop, will ...')
     **{(*goes, "after", "the", stop): goes for stop in ("stop", "pause", "cut", "freeze")
        for goes in (("continuing",), ("continues",), ("continued",), ("continue",), ("resumes",), ("resumed",),
