@@ -2946,7 +2946,7 @@ def test_lettered_options_complete_their_question():
         # other options are offered choices; a blank for a colour or a kind asks what it is
         "Choose one: the school bus is A) standing still B) moving slowly C) moving fast.":
             "the school bus is standing still , moving slowly or moving fast ?",
-        "How fast is it? (A) not moving (B) slow (C) fast": "how fast is it , not moving , slow or fast ?",
+        "How fast is it? (A) not moving (B) slow (C) fast": "how fast is it ?",
         "The yellow sedan crashes into a A) car B) bus C) bicycle.": "the yellow sedan crashes into what kind of vehicle ?",
         "Fill in the blank (would / would not): If the car had been still, it ____ hit the bus.":
             "is it true that if the car had been still , it would hit the bus ?"}

@@ -93,8 +93,8 @@ def options_as_asked(words: list[str]) -> tuple[list[str], tuple[str, str] | Non
     # a statement is asked from its last sentence ('Picture ... . Then the cruiser A) collides ... B) does not ...')
     said = next((k + 1 for k in range(len(body) - 1, -1, -1) if body[k] in (".", ":", ";")), 0)
     judged = [*body[:said], "is", "it", "true", "that", *body[said:]]
-    if all(o[0] in ("yes", "no", "true", "false", "y", "n") for o in options) or \
-            asked and {w for o in options for w in o} <= ANSWER_WORDS:
+    # after a question the options are its answers offered, whatever their words ('A. It is not moving. B. ...')
+    if all(o[0] in ("yes", "no", "true", "false", "y", "n") for o in options) or asked:
         return (before if asked else [*judged, "?"]) + after, (offered, "nothing, the options")
     if len(options) == 2 and NEGATIONS & set(options[1]) and not NEGATIONS & set(options[0]):
         return (body if asked else judged + options[0]) + ["?"] + after, (offered, "whether " + " ".join(options[0]))
