@@ -873,7 +873,7 @@ def test_a_near_miss_a_chase_a_size_an_ought_and_a_collision_at_the_start_are_re
     parser = QuestionParser.load()
     texts = ["Does the red sedan nearly hit the blue bus?", "Does the cyan truck come close to hitting the red jet?",
              "Is the yellow minivan chasing the red bike?", "Does the red bus pass the green sedan?",
-             "Is the small blue scooter parked at the start?", "Should the gray truck have stopped?",
+             "Does the metal bus hit the rubber car?", "Should the gray truck have stopped?",
              "Are the green jet and the red bus touching at the start?", "Does the red sedan lose control?",
              "Does the cyan truck knock the green bike over?"]
     assert_refused(parser, texts)
@@ -2008,8 +2008,8 @@ def test_a_child_s_words_are_read_whom_it_is_asked_a_big_bus_and_a_stretched_wor
              "filter_attributes[blue] filter_attributes[dirtbike] unique filter_collision exist"}
     for (text, program), parse in zip(texts.items(), parser.analyse_batch(list(texts))):
         assert parse.program and " ".join(parse.program) == program, (text, parse.reason)
-    # a size said of a car describes it by what no vehicle has; a bus or a plane is big by its kind
-    assert_refused(parser, {"Is the big red sedan moving fast at the start?": "size"})
+    # two materials set against each other pick by what no vehicle has
+    assert_refused(parser, {"Does the metal bus hit the rubber car?": "size or material"})
     assert stretched("sloooow", {"slow", "so"}) == "slow" and stretched("seeeen", {"seen", "sen"}) == "seen"
     assert stretched("slow", {"slow"}) is None and stretched("zzzz", {"slow"}) is None
 
@@ -2119,7 +2119,7 @@ def test_a_vehicle_described_by_its_looks_is_its_sub_type_and_a_colour_said_furt
                  "the skinny purple racing bicycle": "the purple road bike", "the plain red car": "the red sedan"}
     for text, said in described.items():
         assert " ".join(described_as_named(catalogue_names(tokenize(text))[0])[0]) == said, text
-    # a size alone describes a car by what none has; a description of no one sub-type stays for the parser to refuse
+    # a size alone names no sub-type; a description of no one sub-type stays for the parser to refuse
     for text in ("the big red sedan", "the off-road bike", "the red car with the blue roof"):
         words = catalogue_names(tokenize(text))[0]
         assert described_as_named(words) == (words, ())
@@ -2994,3 +2994,29 @@ def test_scots_irish_and_northern_words():
                     "query_moving_velocity"]
     assert owt == ["Events", "Objects", "filter_attributes[red]", "unique", "filter_collision", "exist"]
     assert "filter_attributes[green]" in clatter and clatter[-1] == "query_moving_direction"
+
+
+def test_an_annotator_s_sizes_and_looks_and_claims_to_verify():
+    parser = QuestionParser.load()
+    shiny, tiny, short, claim, someone, statement, tagged, confirm = parser.parse_batch([
+        "How fast is the shiny blue bus going when it bumps into the little red car?",
+        "Is the tiny motorbike moving quicker than the big bus in the first moments of the video?",
+        "This short clip is cut off early; is the little brown pickup going to hit anything after that?",
+        "Claim: at the start, the blue sedan is moving faster than the green station wagon. Correct?",
+        "Someone says the brown car was standing still when it collided with the airliner. Was it?",
+        "Statement: the purple bus runs into something during the clip. True or false?",
+        "Check this: had the yellow road bike stayed static from the beginning, it would have hit the grey SUV. "
+        "Would it?",
+        "Please confirm the colour of the vehicle that is floating at the start."])
+    assert shiny[:4] == ["Objects", "filter_attributes[blue]", "filter_attributes[bus]", "unique"]
+    assert "filter_attributes[red]" in shiny and shiny[-1] == "query_moving_velocity"
+    assert tiny == ["Objects", "filter_attributes[motorbike]", "unique", "Objects", "filter_attributes[bus]", "unique",
+                    "start", "faster_velocity"]
+    assert short[0] == "futureEvents" and "filter_attributes[truck]" in short
+    assert claim[-1] == "faster_velocity" and someone[-1] == "is_static" and statement[-1] == "exist"
+    assert "Counterfactual_static" in tagged and tagged[-1] == "exist"
+    assert confirm[-1] == "query_attributes[color]"
+    # a size or a look asked, alone, or two materials set against each other are refused
+    assert_refused(parser, ["Is the red sedan large?", "Which is bigger, the bus or the car?",
+                            "Is the big one moving at the start?", "Does the metal bus hit the rubber car?",
+                            "Is the red sedan shiny?"])

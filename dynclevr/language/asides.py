@@ -17,15 +17,15 @@ from dynclevr.language.context import coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
-                                     COMMA_INTERJECTIONS, COMPARING, PARTICLES, CONDITION_LABELS, CONDITION_OPENERS,
+                                     COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
                                      CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
                                      FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
-                                     IMAGINING_LABELS,
-                                     IMAGINING, INTERJECTIONS, LATER_TIMES, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
-                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PLURALS, QUERY_NOUNS,
-                                     QUESTION_OPENERS, REST_WORDS, RESTING, SENTENCE_ENDS, SPEED_CHOICES,
-                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
-                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
+                                     IMAGINING, IMAGINING_LABELS, INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS,
+                                     MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, NUMBERS,
+                                     OTHER_COLOURS, PARTICLES, PLURALS, QUERY_NOUNS, QUESTION_OPENERS, RESTING,
+                                     REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES,
+                                     START_WORDS, STATIC_SAID, STOP_CUES, TIME_OPENERS, UNNAMED, YES_NO_OPENERS,
+                                     asks_impact, impact_like)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -228,15 +228,31 @@ CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"]
               *((*said, *that) for said in (("sources", "tell", "us"), ("sources", "say"), ("we", "are", "told"),
                                             ("we", "'", "re", "told"), ("i", "am", "told"), ("i", "'", "m", "told"),
                                             ("reports", "say"), ("word", "is"), ("rumour", "has", "it"),
-                                            ("rumor", "has", "it")) for that in ((), ("that",)))}
-# ... closed by a question of its own ('. Is that correct?', '. Do you agree?'): the statement's question mark
+                                            ("rumor", "has", "it")) for that in ((), ("that",))),
+              # ... or someone's ('Someone says the bus was parked. Was it?', 'A friend claims that ...')
+              *((*who, said, *that) for who in (["someone"], ["somebody"], ["a", "friend"], ["my", "friend"],
+                                                ["a", "colleague"], ["a", "viewer"], ["a", "witness"], ["people"])
+                for said in ("says", "said", "claims", "claimed", "reports", "reported", "predicts", "predicted",
+                             "thinks", "reckons", "insists", "argues", "swears") for that in ((), ("that",)))}
+# a claim put under a label ('Claim: the bus was parked. Correct?', 'Statement: ... True or false?'), where a
+# statement, not a question, follows it
+CLAIM_LABELS = sorted({(*label, ":") for label in (["claim"], ["claim", "to", "check"], ["claim", "under", "review"],
+                                                   ["statement"], ["check", "this"], ["check", "this", "claim"],
+                                                   ["check", "this", "prediction"], ["fact", "check"],
+                                                   ["fact", "-", "check"], ["true", "or", "false"], ["assertion"],
+                                                   ["hypothesis"])}, key=len, reverse=True)
+# ... closed by a question of its own ('. Is that correct?', '. Do you agree?', '. Was it?'): the statement's question
+# mark
 CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
-                for q in (["is", "that", "correct"], ["is", "that", "right"], ["is", "that", "true"],
-                          ["is", "that", "so"], ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"],
+                for q in (*([aux, this, judged] for aux in ("is", "was") for this in ("that", "this", "it")
+                            for judged in ("correct", "right", "true", "so", "accurate")),
+                          ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"], ["accurate"],
                           ["yes"], ["right"], ["do", "you", "agree"], ["would", "you", "agree"], ["agreed"], ["true"],
-                          ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
-                          ["can", "anyone", "confirm", "that"], ["is", "that", "accurate"], ["can", "we", "confirm"],
-                          ["can", "you", "confirm"])]
+                          ["true", "or", "false"], ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
+                          ["can", "anyone", "confirm", "that"], ["can", "we", "confirm"], ["can", "you", "confirm"],
+                          *(["does", that, "hold", *up] for that in ("that", "this", "it") for up in ([], ["up"])),
+                          *([aux, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
+                            for it in ("it", "they")))]
 # asides of an examination, which ask nothing ('in your own words', 'if you know', 'for the sake of argument')
 EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know"), ("if", "you", "can"),
                              ("if", "you", "recall"), ("if", "you", "remember"), ("as", "best", "you", "can"),
@@ -280,7 +296,10 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             out = out[:-1] if between else out
             k = end + between + (not out and words[end:end + 1] == [","])
             continue
-        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c), None)
+        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c), None) or \
+            next((c for c in CLAIM_LABELS if tuple(words[k:k + len(c)]) == c and (k == 0 or words[k - 1] in
+                  SENTENCE_ENDS) and words[k + len(c):k + len(c) + 1] and words[k + len(c)] not in QUESTION_OPENERS),
+                 None)
         asks = next((a for a in EXAMINATION_ASKS if tuple(words[k:k + len(a)]) == a), None)
         attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
         if confirm or asks:
@@ -391,8 +410,9 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     else:
         return words, ()
     j = _requested_at(words, k)
-    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds)
-    confirmed = words[j] == "that" or words[j] in ("the", "whether", "if") and words[k] in CONFIRMING_VERBS
+    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds; 'confirm the colour of ...' asks it)
+    confirmed = words[j] == "that" or words[j] in ("the", "whether", "if") and words[k] in CONFIRMING_VERBS and \
+        not (words[j] == "the" and words[j + 1:j + 2] and words[j + 1] in QUERY_NOUNS)
     said = ["is", "it", "true", "that"] if confirmed else ["tell", "me"]
     dropped = words[j] in ("that", "whether", "if") and confirmed
     out = words[:first] + said + words[j + dropped:]
@@ -612,16 +632,20 @@ TOYS = {"toy", "toys", "model", "little", "wee"}
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is my purple road bike faster ...' -> 'is the purple road bike faster ...': a vehicle said as someone's
-    ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. With the
-    words read so, or the words as they are and ()."""
+    ('my', 'our toy', 'your little') is the video's, named by its article; 'toy' after its name goes too. A size or
+    a material before a vehicle's colour or kind goes as well ('the shiny blue bus', 'that tiny scooter'): the
+    vehicles differ only by colour and kind, so it describes one and picks none out; but not two materials set
+    against each other ('the metal bus ... the rubber car'), which pick by what none has. With the words read so, or
+    the words as they are and ()."""
+    decorative = TOYS | (LOOKS if len(MATERIALS.intersection(words)) < 2 else set())
     out, read, k = [], [], 0
     while k < len(words):
         j = k + (words[k] in OWNERS)
-        while words[j:j + 1] and words[j] in TOYS:
+        while words[j:j + 1] and words[j] in decorative:
             j += 1
         # ('the red little jet': after the colour too, fondness, not CLEVR's size)
-        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] in (["the"], ["a"])
-                                                                or out[-1:] and out[-1] in COLOR_NAMES):
+        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] and
+                                                                (out[-1] in DETERMINERS or out[-1] in COLOR_NAMES)):
             said = ["the"] if words[k] in OWNERS else []
             read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
             out += said

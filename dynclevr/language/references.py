@@ -267,8 +267,8 @@ def described_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
         said = {t for t in said | {after[1]} if t in SUBTYPES and SUBTYPES[t][0] == category}
         named = "_".join(out[start:n + 1]) if start < n else out[n]
         # a sub-type's own name keeps it where the words only describe ('the skinny purple road bike')
-        # (but not a size alone: 'the big red sedan' describes it by a size none has; a bus or a plane is big by its
-        # kind, which picks none out: 'the big yellow school bus', 'the yellow big airliner')
+        # (but not a size alone, which names no sub-type: 'the big red sedan' is left to `asides.owners_dropped`; a bus
+        # or a plane is big by its kind: 'the big yellow school bus', 'the yellow big airliner')
         plain = DESCRIBING - SIZES | (SIZES - {"little", "small", "tiny"} if category in ("bus", "aeroplane")
                                       else set())
         said = said or ({named} if named in SUBTYPES and set(before) <= plain else set())

@@ -737,7 +737,8 @@ def ranking(words: list[str]) -> str:
         (f"{a} {b}" for a, b in zip(words, words[1:]) if a == "the" and b in ("most", "least")), None) or next(
         (" ".join(words[k - 1:k + 2]) for k in range(2, len(words) - 1) if words[k] in RANKS and words[k - 1] == "the"
          and (words[k + 1] in GENERIC_NOUNS | NOUNS_SAID or words[k + 1] == "to")   # 'the first to move'
-         and words[k - 2] in OBJECT_WORDS | {"it", "one"}),
+         and (words[k - 2] in OBJECT_WORDS | {"it", "one"} or words[k] == "only" and words[k - 2] in COPULAS
+              and words[k - 3] in OBJECT_WORDS | {"it", "one"})),   # 'the purple one is the only vehicle ...'
         None) or next((f"the {b}" for k, (a, b) in enumerate(zip(words, words[1:])) if a == "the" and (
             b == "others" or b == "rest" and words[k + 2:k + 3] != ["of"]) and not asks_impact(words)),
         None)   # 'fast compared with the others' (not 'the rest of the video': after it)

@@ -441,6 +441,8 @@ IDIOMS = phrase_table({
                               ("like", "a", "bat", "out", "of", "hell"), ("at", "full", "pelt"), ("full", "pelt"))},
     **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
         ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
+    # the video's length ('this short clip': 'short' was fixed to 'soon')
+    **{(size, film): (film,) for size in ("short", "brief", "quick", "little", "tiny", "small") for film in FILM_WORDS},
     # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
     **{p: () for p in (("in", "fact"), ("in", "actual", "fact"), ("as", "a", "matter", "of", "fact"))},
     **{("following", "the", "point", *at): ("after",) for at in (("at", "which"), ("where",), ("when",))},

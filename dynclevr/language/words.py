@@ -217,9 +217,10 @@ LATER_TIMES = (["middle"], ["halfway"], ["half", "way"], ["midway"], ["midpoint"
                ["at", "some", "point"], ["at", "one", "point"], ["now"])
 
 
-# sizes and materials (CLEVR's, not DynSuperCLEVR's: 'the small blue scooter' was read as the blue scooter)
-LOOKS = {"small", "big", "large", "tiny", "huge", "little", "giant", "shiny", "metallic", "metal", "matte", "rubber",
-         "plastic", "wooden"}
+# sizes and materials (CLEVR's, not DynSuperCLEVR's): before a vehicle's colour or kind they only describe it
+# (`asides.owners_dropped`); asked, compared or alone ('the big one') they are refused
+MATERIALS = {"shiny", "metallic", "metal", "matte", "rubber", "plastic", "wooden"}
+LOOKS = {"small", "big", "large", "tiny", "huge", "little", "giant"} | MATERIALS
 YES_NO_OPENERS = AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had", "should", "are", "were"}
 # The words that say a speed class: those of the grammar's seen slow and fast phrases but the motion itself ('moving',
 # 'at a high speed': 'high'), and English's other words for a pace; the lexicon, WordNet and the idioms read more
