@@ -206,6 +206,7 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return (out, tuple(read)) if read else (words, ())
 
 
+HUNCHES = ("hunch", "gut", "guess", "bet", "forecast", "prediction", "feeling", "instinct", "theory", "money")
 # A witness examined ('I put it to you that the bus was parked. Is that correct?', 'You'd concede, wouldn't you,
 # that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
 _AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
@@ -233,7 +234,11 @@ CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"]
               *((*who, said, *that) for who in (["someone"], ["somebody"], ["a", "friend"], ["my", "friend"],
                                                 ["a", "colleague"], ["a", "viewer"], ["a", "witness"], ["people"])
                 for said in ("says", "said", "claims", "claimed", "reports", "reported", "predicts", "predicted",
-                             "thinks", "reckons", "insists", "argues", "swears") for that in ((), ("that",)))}
+                             "thinks", "reckons", "insists", "argues", "swears") for that in ((), ("that",))),
+              # ... or one's own hunch ('My hunch says ...', 'my forecast is that ...', 'Here's my bet: ...')
+              *((*mine, hunch, *said) for mine in (["my"], ["here", "'", "s", "my"]) for hunch in HUNCHES
+                for said in ([":"], ["says"], ["says", "that"], ["is", "that"], ["tells", "me"])
+                if (mine == ["my"]) != (said == [":"]))}
 # a claim put under a label ('Claim: the bus was parked. Correct?', 'Statement: ... True or false?'), where a
 # statement, not a question, follows it
 CLAIM_LABELS = sorted({(*label, ":") for label in (["claim"], ["claim", "to", "check"], ["claim", "under", "review"],
@@ -248,6 +253,7 @@ CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
                             for judged in ("correct", "right", "true", "so", "accurate")),
                           ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"], ["accurate"],
                           ["yes"], ["right"], ["do", "you", "agree"], ["would", "you", "agree"], ["agreed"], ["true"],
+                          ["am", "i", "right"], ["am", "i", "correct"],
                           ["true", "or", "false"], ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
                           ["can", "anyone", "confirm", "that"], ["can", "we", "confirm"], ["can", "you", "confirm"],
                           *(["does", that, "hold", *up] for that in ("that", "this", "it") for up in ([], ["up"])),
@@ -304,6 +310,8 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
         attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
         if confirm or asks:
             said = ["is", "it", "true", "that"] if confirm else ["tell", "me"]
+            if confirm and out[-2:] == [",", "and"]:   # 'the clip stops early , and my forecast is that ...'
+                out[-2:] = ["."]
             read.append((" ".join(confirm or asks), " ".join(said)))
             out += said
             k += len(confirm or asks)

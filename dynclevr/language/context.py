@@ -767,7 +767,12 @@ TELLING = {("spin", "a", "tale"), ("tell", "a", "tale"), ("tell", "a", "story"),
            ("imagine", "a", "tale"), *((r, *the, o) for r in ("rewrite", "retell", "redo", "rerun", "replay")
                                        for the in ((), ("the",), ("this",))
                                        for o in ("opening", "story", "start", "beginning", "tale", "clip", "video",
-                                                 "scene", "footage"))}
+                                                 "scene", "footage")),
+           # a speculator's ('Let's dream up a version where ...', 'cook up a world in which ...')
+           *((*lets, *verb, "a", t) for lets in ((), ("let", "'", "s"), ("let", "us"))
+             for verb in (("dream", "up"), ("cook", "up"), ("conjure", "up"), ("think", "up"), ("make", "up"),
+                          ("invent",), ("imagine",), ("picture",))
+             for t in ("version", "world", "scenario", "timeline", "universe", "reality"))}
 WHICH = (("in", "which"), ("where",), ("so", "that"), ("such", "that"))
 
 

@@ -20,8 +20,8 @@ from dynclevr.language.times import FILM_WORDS
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
                                      DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
                                      MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
-                                     REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, START_ADJECTIVES,
-                                     START_WORDS, TIME_OPENERS, YES_NO_OPENERS, _head)
+                                     REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, SPEED_CLASS_WORDS,
+                                     START_ADJECTIVES, START_WORDS, TIME_OPENERS, YES_NO_OPENERS, _head, asks_impact)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -598,6 +598,14 @@ IDIOMS = phrase_table({
     # the video's end as the whole thing's ('when it's all finished', 'once it's all over')
     **{(when, "it", "'", "s", "all", done): (when, "the", "video", "ends") for when in ("when", "once", "after")
        for done in ("finished", "over", "done")},
+    # ... as a speculator lets it ('if we let the action roll on beyond where the video stops, will ...')
+    **{(*when, "let", "the", film, roll, "on", *beyond): ("after", "the", "video", "ends")
+       for when in (("if", "we"), ("if", "you"), ("if", "i"), ("once", "we"), ("when", "we"))
+       for film in ("video", "clip", "footage", "film", "action", "play", "tape", "recording")
+       for roll in ("roll", "run", "play", "go", "carry", "keep")
+       for beyond in ((), *((past, "where", "the", f, stops) for past in ("beyond", "past")
+                            for f in ("video", "clip", "footage", "film") for stops in ("stops", "ends", "cuts")),
+                      *((past, "the", cut) for past in ("beyond", "past") for cut in ("cut", "stop", "end")))},
     # the video going on 'after the stop' (its own stop: 'when the video is continuing after the stop, will ...')
     **{(*goes, "after", "the", stop): goes for stop in ("stop", "pause", "cut", "freeze")
        for goes in (("continuing",), ("continues",), ("continued",), ("continue",), ("resumes",), ("resumed",),
@@ -993,11 +1001,29 @@ CLEFT_COMPARED = (["faster"], ["slower"], ["quicker"], ["more", "slowly"], ["mor
                   ["less", "slowly"])
 
 
+def _cleft_manner(words: list[str]) -> list[str]:
+    """'was it at high speed that the chopper hit the minivan ?' -> 'was the chopper at high speed when it hit the
+    minivan ?': a speed said in a cleft is the collision's; [] where the words are no such cleft."""
+    m = next((k for k in range(3, min(len(words), 8)) if words[k] == "that"), None)
+    if m is None or not SPEED_CLASS_WORDS & set(words[2:m]) or NAMING & set(words[2:m]) or words[m + 1:m + 2] != ["the"]:
+        return []
+    j = m + 2
+    while words[j:j + 1] and words[j] in NAMING:
+        j += 1
+    if j == m + 2 or not asks_impact(words[j:j + 3]):
+        return []
+    return [words[0], *words[m + 1:j], *words[2:m], "when", "it", *words[j:]]
+
+
 def cleft_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it the red car that is fast at the start ?' -> 'is the red car fast at the start ?'; a comparison in it
     is with the other vehicle its collision names ('is it the car that is moving more slowly when it and the bus
     collide ?' -> '... moving more slowly than the bus when they collide ?'). With the words read so, or the words as
     they are and ()."""
+    if words[:2] in (["is", "it"], ["was", "it"]):
+        manner = _cleft_manner(words)
+        if manner:
+            return manner, ((" ".join(words), " ".join(manner)),)
     if words[:3] not in (["is", "it", "the"], ["was", "it", "the"]):
         return words, ()
     j = 3
