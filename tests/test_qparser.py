@@ -3020,3 +3020,23 @@ def test_an_annotator_s_sizes_and_looks_and_claims_to_verify():
     assert_refused(parser, ["Is the red sedan large?", "Which is bigger, the bus or the car?",
                             "Is the big one moving at the start?", "Does the metal bus hit the rubber car?",
                             "Is the red sedan shiny?"])
+
+
+def test_a_speculator_s_hunches_versions_and_a_video_let_run_on():
+    parser = QuestionParser.load()
+    bet, hunch, forecast, rolled, dreamt, cleft, heavy = parser.parse_batch([
+        "Here's my bet: the green motorbike is just crawling along slowly at the beginning. Am I right?",
+        "My hunch says the grey bendy bus is barrelling along fast when it hits the red bicycle. Is it?",
+        "The clip stops early, and my forecast is that the red fighter jet and the green SUV hit each other "
+        "afterwards. Will they?",
+        "If we let the action roll on beyond where the video stops, will the grey tandem bike hit anything?",
+        "Let's dream up a version where the private jet floats from the beginning: would it run into the purple sedan?",
+        "Was it at high speed that the brown chopper hit the red minivan?",
+        "At the beginning, is the bizjet taxiing any slower than the heavy?"])
+    assert bet[-1] == "is_moving_velocity[slow]" and hunch[-1] == "is_moving_velocity[fast]"
+    assert forecast[0] == "futureEvents" and rolled[0] == "futureEvents"
+    assert "Counterfactual_floating" in dreamt and cleft[-1] == "is_moving_velocity[fast]"
+    assert heavy == ["Objects", "filter_attributes[jet]", "unique", "Objects", "filter_attributes[airliner]", "unique",
+                     "start", "slower_velocity"]
+    # 'heavy' before a vehicle's name is no airliner
+    assert_refused(parser, ["Is the heavy bus moving fast at the start?"])

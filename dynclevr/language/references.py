@@ -287,7 +287,19 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     """['the', 'crimson', 'dirt', '-', 'bike'] -> (['the', 'red', 'dirtbike'], (('crimson', 'red'), ('dirt-bike',
     'dirtbike'))): every vehicle name of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, a sub-type
     said with its category, and every shade of COLOUR_SHADES, as the catalogue's name; with the names read so."""
-    return phrases_as_said(words, _EVERYDAY)
+    out, read = phrases_as_said(words, _EVERYDAY)
+    named = [k for k, w in enumerate(out) if w in NOUN_NAMES and 0 < k and (out[k - 1] in ("the", "a", "that", "this")
+             or out[k - 1] in COLOR_NAMES) and not (out[k + 1:k + 2] and out[k + 1] in NAMES_AFTER)]
+    for k in named:
+        read += ((out[k], NOUN_NAMES[out[k]]),)
+        out[k] = NOUN_NAMES[out[k]]
+    return out, read
+
+
+# a spotter's name that is an adjective elsewhere ('the grey heavy' is an airliner; 'the heavy bus', 'the heavy one'
+# are not)
+NOUN_NAMES = {"heavy": "airliner"}
+NAMES_AFTER = OBJECT_WORDS | {"vehicle", "one", "thing", "object", "-", "traffic", "load", "truck", "lorry", "bike"}
 
 
 # A colour said after its vehicle ('the bus that is yellow', 'the SUV painted green', 'the scooter, the blue one,')

@@ -441,6 +441,9 @@ IDIOMS = phrase_table({
                               ("like", "a", "bat", "out", "of", "hell"), ("at", "full", "pelt"), ("full", "pelt"))},
     **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
         ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
+    # Gen-Z's opener and 'giving' ('ok but ...', 'is it giving parked, slow or zooming'), 'the first few seconds'
+    ("ok", "but"): (), ("okay", "but"): (), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
+    **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # the video's length ('this short clip': 'short' was fixed to 'soon')
     **{(size, film): (film,) for size in ("short", "brief", "quick", "little", "tiny", "small") for film in FILM_WORDS},
     # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
@@ -562,7 +565,7 @@ IDIOMS = phrase_table({
     **{("or", "am", "i", *doubt): () for doubt in (("tripping",), ("trippin",), ("seeing", "things"), ("crazy",),
                                                     ("wrong",), ("imagining", "it"), ("imagining", "things"),
                                                     ("hallucinating",), ("blind",))},
-    ("no", "bc"): (),
+    ("no", "because"): (),   # ('bc' is 'because' to the tokenizer)
     # Australian and New Zealand words: 'flat chat' (fast), 'heaps fast', 'stacked it into' and 'cleaned up' (hit),
     # 'have a prang' (collide), 'hanging about up there' (floating), 'winding up speed' (accelerating)
     ("flat", "chat"): ("fast",),
