@@ -1008,7 +1008,8 @@ def _cleft_manner(words: list[str]) -> list[str]:
     """'was it at high speed that the chopper hit the minivan ?' -> 'was the chopper at high speed when it hit the
     minivan ?': a speed said in a cleft is the collision's; [] where the words are no such cleft."""
     m = next((k for k in range(3, min(len(words), 8)) if words[k] == "that"), None)
-    if m is None or not SPEED_CLASS_WORDS & set(words[2:m]) or NAMING & set(words[2:m]) or words[m + 1:m + 2] != ["the"]:
+    if m is None or not SPEED_CLASS_WORDS & set(words[2:m]) or NAMING & set(words[2:m]) or \
+            words[m + 1:m + 2] != ["the"]:
         return []
     j = m + 2
     while words[j:j + 1] and words[j] in NAMING:
