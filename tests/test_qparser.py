@@ -48,9 +48,9 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
 from dynclevr.language.words import impact_like
 from dynclevr.language.code import code_as_said
-from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, catalogue_names,
-                                          concrete_program, corefer, delexicalise, described_as_named,
-                                          description_as_said, heard_as_said)
+from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstract_program, attributes_as_named,
+                                          catalogue_names, concrete_program, corefer, delexicalise,
+                                          described_as_named, description_as_said, heard_as_said)
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
@@ -3040,3 +3040,29 @@ def test_a_speculator_s_hunches_versions_and_a_video_let_run_on():
                      "start", "slower_velocity"]
     # 'heavy' before a vehicle's name is no airliner
     assert_refused(parser, ["Is the heavy bus moving fast at the start?"])
+
+
+def test_a_database_s_attribute_clauses_and_a_video_editor_s_words():
+    said = {"the vehicle that is a sedan and is red": "the red sedan",
+            "the item with colour blue and type SUV": "the blue suv",
+            "the object of category bus with colour brown": "the brown bus",
+            "the car , which is green , goes": "the green car goes", "the one that's a scooter": "the scooter",
+            "the airliner having colour cyan": "the cyan airliner",
+            # anything but a colour or a kind leaves the words alone
+            "the one that is moving": "the one that is moving", "the car that is fast": "the car that is fast"}
+    for text, words in said.items():
+        assert " ".join(attributes_as_named(tokenize(text))[0]) == words, text
+    parser = QuestionParser.load()
+    involving, partner, scrub, unseen, last, shot, edit = parser.parse_batch([
+        "Is there any collision involving the motorbike whose colour is yellow?",
+        "What is the colour of the vehicle that the sedan with colour green collides with?",
+        "Scrubbing through the entire shot, does the green pickup collide with anything at all?",
+        "In the part we don't get to see, does the airliner go on to hit the yellow car?",
+        "Past the final frame of this truncated clip, is the blue one going to hit something?",
+        "If we'd shot the pickup standing still from the very start, would it still have crashed into the yellow bus?",
+        "Re-edit it so the SUV is flying along fast from the top of the take: does it run into the brown sedan?"])
+    assert involving == ["Events", "Objects", "filter_attributes[yellow]", "filter_attributes[motorbike]", "unique",
+                         "filter_collision", "exist"]
+    assert "filter_attributes[green]" in partner and partner[-1] == "query_attributes[color]"
+    assert scrub[0] == "Events" and unseen[0] == last[0] == "futureEvents"
+    assert "Counterfactual_static" in shot and "Counterfactual_moving_fast" in edit

@@ -67,9 +67,9 @@ from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, closing_mark_added, context_as_question, impact_said_first,
                                        scenario_as_asked, settings_as_imagined, told_otherwise_as_imagined)
 from dynclevr.language.params import QParserParams
-from dynclevr.language.references import (OBJECT_WORDS, catalogue_names, concrete_program, corefer, delexicalise,
-                                          described_as_named, description_as_said, heard_as_said, is_description,
-                                          placeholders)
+from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
+                                          corefer, delexicalise, described_as_named, description_as_said,
+                                          heard_as_said, is_description, placeholders)
 from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW_ASKED, NORMATIVE, REPEATS, TOWARD,
                                         _at_viewer, chained, checked_attribute, imagined_otherwise, impact_denied,
                                         onset_asked, ordered, otherwise_compared, possibility_asked, premised,
@@ -305,9 +305,10 @@ class QuestionParser:
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
+        words, attributed = attributes_as_named(words)
         words, clause = colour_clause_as_named(words)
         words, glossed = glosses_read(words)
-        named += looked + clause + glossed
+        named += looked + attributed + clause + glossed
         words, corrected = corrections_dropped(words)
         words, setting = settings_as_imagined(words)
         words, scenario = scenario_as_asked(words)

@@ -369,6 +369,69 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return out, tuple(read)
 
 
+# A vehicle named by its attributes in clauses, as a database is queried ('the vehicle that is a sedan and is red',
+# 'the item with colour blue and type SUV', 'the object of category bus with colour brown', 'the double-decker whose
+# colour is purple', 'the one that's a scooter'): the grammar's 'the red sedan'. Only a colour or a kind is taken;
+# anything else ('the one that is moving') leaves the words alone.
+ATTRIBUTE_HEADS = {"vehicle", "thing", "object", "one", "item", "entity", "toy"}
+ATTRIBUTE_NAMES = {"color": "color", "category": "kind", "type": "kind", "kind": "kind", "class": "kind",
+                   "shape": "kind", "model": "kind"}
+_ATTRIBUTE_LINKS = sorted({("that", "is"), ("which", "is"), ("that", "was"), ("which", "was"), ("that", "'", "s"),
+                           ("which", "'", "s"), *((w, "@", b) for w in ("whose",) for b in ("is", "was")),
+                           *((w, *the, "@") for w in ("with", "having", "of", "in") for the in ((), ("the",)))},
+                          key=len, reverse=True)
+_AFTER_AND = (("is",), ("was",), ("@",))   # 'the vehicle that is a car and is yellow', '... and colour red'
+
+
+def _attribute_clause(words: list[str], k: int) -> tuple[str, list[str], int] | None:
+    """The attribute a clause from words[k] gives ('color' or 'kind'), its value and where the clause ends."""
+    sep = next((n for n in ([",", "and"], [","], ["and"], []) if words[k:k + len(n)] == n), [])
+    for link in [*_ATTRIBUTE_LINKS, *(_AFTER_AND if sep and sep[-1] == "and" else ())]:
+        j, said = k + len(sep), None
+        for w in link:
+            if w == "@" and words[j:j + 1] and words[j] in ATTRIBUTE_NAMES:
+                said = ATTRIBUTE_NAMES[words[j]]
+            elif words[j:j + 1] != [w]:
+                break
+            j += 1
+        else:
+            j += words[j:j + 1] in (["a"], ["an"])
+            n = _noun_at(words, j)
+            value = ("kind", words[j:j + n]) if n else ("color", words[j:j + 1]) if words[j:j + 1] and \
+                words[j] in COLOR_NAMES else None
+            if value and said in (None, value[0]):
+                return value[0], value[1], j + len(value[1])
+    return None
+
+
+def attributes_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """['the', 'item', 'with', 'color', 'blue', 'and', 'type', 'suv'] -> ['the', 'blue', 'suv']: a vehicle named by
+    its colour and kind in clauses after a head word or its kind; a clause after a comma takes its closing comma.
+    With the words read so, or the words as they are and ()."""
+    out, read, i = [], [], 0
+    while i < len(words):
+        n = 1 if words[i] in ATTRIBUTE_HEADS else _noun_at(words, i)
+        if not n or not out or out[-1] not in ("the", "a", "an", "that", "this", "any"):
+            out.append(words[i])
+            i += 1
+            continue
+        said, j = {}, i + n
+        while (clause := _attribute_clause(words, j)) and clause[0] not in said:
+            said[clause[0]] = clause[1]
+            commaed = words[j] == ","
+            j = clause[2] + (commaed and words[clause[2]:clause[2] + 1] == [","])
+        kind = said.get("kind") if words[i] in ATTRIBUTE_HEADS else None if "kind" in said else words[i:i + n]
+        if not said or kind is None and "color" not in said:
+            out += words[i:i + n]
+            i += n
+            continue
+        named = [*said.get("color", []), *(kind or words[i:i + n])]
+        read.append((" ".join(words[i:j]), " ".join(named)))
+        out += named
+        i = j
+    return (out, tuple(read)) if read else (words, ())
+
+
 _CHAIN = re.compile(r"Objects((?: filter_attributes\[[a-z_]+\])+) unique")
 _PLACEHOLDER = re.compile(r"<obj(\d+)>")
 _VALUE = re.compile(r"\[([a-z_]+)\]")

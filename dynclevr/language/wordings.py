@@ -444,6 +444,26 @@ IDIOMS = phrase_table({
     # Gen-Z's opener and 'giving' ('ok but ...', 'is it giving parked, slow or zooming'), 'the first few seconds'
     ("ok", "but"): (), ("okay", "but"): (), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
+    # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
+    # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's
+    # top (its start)
+    **{(scrub, "through", "the", *whole, film): ("in", "the", "video")
+       for scrub in ("scrubbing", "scrolling", "skimming", "watching", "looking")
+       for whole in ((), ("entire",), ("whole",)) for film in ("shot", "clip", "video", "footage", "reel", "take")},
+    **{(*within, "the", part, *who, "do", "not", *get, "see"): ("after", "the", "video", "ends")
+       for within in (("in",), ()) for part in ("part", "bit", "stretch")
+       for who in (("we",), ("you",), ("that", "we"), ("that", "you")) for get in (("get", "to"), ())},
+    **{(past, "the", last, "frame", *of): ("after", "the", "video", "ends")
+       for past in ("past", "beyond", "after") for last in ("final", "last")
+       for of in ((), *(("of", the, *cut, film) for the in ("the", "this") for cut in ((), ("truncated",), ("cut",))
+                        for film in ("clip", "video", "footage", "shot", "reel", "take")))},
+    **{("if", "we", *had, shot): ("imagine",) for had in (("'", "d"), ("had",))
+       for shot in ("shot", "filmed", "staged", "recorded")},
+    **{(*re, "edit", "it", "so", *that): ("imagine",) for re in (("re", "-"), ("re",)) for that in ((), ("that",))},
+    **{("from", "the", "top", "of", "the", take): _START for take in ("take", "clip", "reel", "shot", "video")},
+    # a speed as a database's attribute ('the vehicle whose speed is fast at the start')
+    **{("whose", speed, be): ("that", be) for speed in ("speed", "pace", "velocity", "motion", "state")
+       for be in ("is", "was")},
     # the video's length ('this short clip': 'short' was fixed to 'soon')
     **{(size, film): (film,) for size in ("short", "brief", "quick", "little", "tiny", "small") for film in FILM_WORDS},
     # a reviewer's stress ('whether the chopper is in fact standing still': 'fact' was fixed to 'fast')
