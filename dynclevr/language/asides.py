@@ -723,7 +723,7 @@ OFFERED_WORDS = ANSWER_VERBS | {":", ",", ".", ";", "!", "letter", "letters", "c
                                 "choice", "from", "of", "following", "below", "these", "nothing", "else", "lowercase",
                                 "static", "slow", "fast", "left", "right", "up", "down", "forward", "backward",
                                 "forwards", "backwards", "front", "back", "none", "above", "exactly", "word",
-                                "only", "must", "be"} | set(COLOR_NAMES) | OBJECT_WORDS
+                                "only", "must", "be", "put", "brackets", "box", "at"} | set(COLOR_NAMES) | OBJECT_WORDS
 POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["honest", "question"],
                ["serious", "question"], ["asking", "for", "a", "friend"], ["update"], ["edit"])
 
@@ -748,6 +748,13 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if end is not None and not OBJECT_WORDS.intersection(out[:end]):
             read.append((" ".join(out[:end + 1]), "nothing, a role"))
             out = out[end + 1:]
+    # a reasoning step asked first ('First describe the motion of each vehicle, then answer: ...')
+    then = next((k for k in range(2, min(len(out) - 3, 24)) if out[k - 1:k + 2] in ([",", "then", "answer"],
+                                                                                 ["then", "answer", ":"])), None)
+    if out[:1] == ["first"] and then is not None and "?" not in out[:then]:
+        end = then + 2 + (out[then + 2:then + 3] == [":"])
+        read.append((" ".join(out[:end]), "nothing, an instruction"))
+        out = out[end:]
     colon = out.index(":") if ":" in out[:12] else None
     if colon and set(out[:colon]) <= PROMPT_WORDS and out[colon + 1:]:
         read.append((" ".join(out[:colon + 1]), "nothing, an instruction"))
@@ -761,7 +768,8 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     # fast. Answer:', 'Please output only the letter of the correct option.')
     tail = out[asked + 1:] if asked is not None else []
     told = tail[1:] if tail[:1] == ["please"] else tail
-    if told and told[0] in ANSWER_VERBS and set(tail) <= PROMPT_WORDS | OFFERED_WORDS:
+    if told and (told[0] in ANSWER_VERBS or told[:2] == ["final", "answer"] or told[:3] == ["put", "your", "final"]) \
+            and set(tail) <= PROMPT_WORDS | OFFERED_WORDS:
         read.append((" ".join(tail), "nothing, how to answer"))
         out = out[:asked + 1]
     return (out, tuple(read)) if read else (words, ())

@@ -26,7 +26,9 @@ MARKS = {"mark", "marks", "pt", "pts", "point", "points"}
 BOXES = {"☐", "□", "◯", "○", "[", "]"}
 ANSWER_WORDS = {"yes", "no", "true", "false", "none", "of", "these", "the", "above", "static", "slow", "fast", "/", ",",
                 "or", "."} | set(COLOR_NAMES) | OBJECT_WORDS | {w for name in EVERYDAY_NAMES for w in name.split()}
-INSTRUCTIONS = (("answer", "in", "one", "word"), ("answer", "yes", "or", "no"), ("answer", "yes", "/", "no"),
+INSTRUCTIONS = (("answer", "in", "one", "word"), *(("answer", "yes", "or", "no", *end) for end in (
+                    ("at", "the", "end"), ("at", "the", "very", "end"), ("in", "the", "end"))),
+                ("answer", "yes", "or", "no"), ("answer", "yes", "/", "no"),
                 ("explain", "nothing", ",", "just", "answer"), ("just", "answer"), ("circle", "one"), ("circle",),
                 ("tick", "one"), ("tick", "the", "correct", "box"), ("tick",), ("choose", "one"), ("select", "one"),
                 ("yes", "or", "no"), ("yes", "/", "no"), ("true", "/", "false"),
