@@ -21,10 +21,10 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.asides import (asides_dropped, corrections_dropped, digressions_dropped, dislocated_as_asked,
-                                      examination_as_asked, framing_dropped, hedges_dropped, hypothesis_as_asked,
-                                      interjections_dropped, preamble_dropped, prompt_dropped, requested_as_asked,
-                                      ticket_fields_read, wagers_read)
+from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
+                                      dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
+                                      hypothesis_as_asked, interjections_dropped, preamble_dropped, prompt_dropped,
+                                      requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -3066,3 +3066,18 @@ def test_a_database_s_attribute_clauses_and_a_video_editor_s_words():
     assert "filter_attributes[green]" in partner and partner[-1] == "query_attributes[color]"
     assert scrub[0] == "Events" and unseen[0] == last[0] == "futureEvents"
     assert "Counterfactual_static" in shot and "Counterfactual_moving_fast" in edit
+
+
+def test_a_vehicle_spoken_to_is_the_question_s_you():
+    assert addressed_as_named(tokenize("Blue bus, did you bump into the green car?"))[0] == \
+        tokenize("blue bus , did it bump into the green car ?")
+    assert addressed_as_named(tokenize("Red sedan, were you faster than it?"))[0] == \
+        tokenize("red sedan , was the red sedan faster than it ?")
+    assert addressed_as_named(tokenize("Did you see the blue bus?")) == (tokenize("Did you see the blue bus?"), ())
+    parser = QuestionParser.load()
+    little, engine, would = parser.parse_batch([
+        "Little grey biplane, were you sitting perfectly still when the video began?",
+        "Blue city bus, was your engine on and were you speeding up at the start?",
+        "Grey dirt bike, if you'd come off the line fast, would you and the blue double-decker have collided?"])
+    assert little == ["Objects", "filter_attributes[gray]", "filter_attributes[biplane]", "unique", "start", "is_static"]
+    assert engine[-1] == "is_accelerating" and "Counterfactual_moving_fast" in would

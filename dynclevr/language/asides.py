@@ -651,9 +651,10 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         j = k + (words[k] in OWNERS)
         while words[j:j + 1] and words[j] in decorative:
             j += 1
-        # ('the red little jet': after the colour too, fondness, not CLEVR's size)
-        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or out[-1:] and
-                                                                (out[-1] in DETERMINERS or out[-1] in COLOR_NAMES)):
+        # ('the red little jet': after the colour too, fondness, not CLEVR's size; 'Little grey biplane, were you
+        # ...': a vehicle spoken to)
+        if j > k and words[j:j + 1] and words[j] in NAMING and (words[k] in OWNERS or not out or out[-1] == "," or
+                                                                out[-1] in DETERMINERS or out[-1] in COLOR_NAMES):
             said = ["the"] if words[k] in OWNERS else []
             read.append((" ".join(words[k:j]), " ".join(said) or "nothing"))
             out += said
@@ -668,6 +669,41 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         out.append(words[k])
         k += 1
     return out, tuple(read)
+
+
+# A vehicle spoken to ('Blue bus, did you bump into the green car?', 'Hey, red sedan, were you moving ...'): 'you'
+# is the vehicle named before the comma, as 'it' ('Blue bus, did it ...', which the parser reads)
+AS_IT = {("are", "you"): ("is", "it"), ("were", "you"): ("was", "it"), ("you", "are"): ("it", "is"),
+         ("you", "were"): ("it", "was"), ("you", "'", "re"): ("it", "is"), ("you", "'", "ve"): ("it", "has"),
+         ("you", "have"): ("it", "has"), ("you", "'", "d", "have"): ("it", "would", "have"),
+         ("you", "'", "d"): ("it", "had"), ("you",): ("it",), ("your",): ("its",), ("yourself",): ("itself",),
+         ("you", "'", "ll"): ("it", "will")}
+
+
+def addressed_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'blue bus , did you bump into the green car ?' -> 'blue bus , did it bump into the green car ?': a vehicle
+    named first and spoken to, before a comma, is the 'you' of the question. With the words read so, or the words as
+    they are and ()."""
+    k = next((n for n in range(min(len(words), 4)) if words[n] not in INTERJECTIONS | {",", "hey", "oi", "yo", "o"}),
+             len(words))
+    j = k
+    while words[j:j + 1] and words[j] in NAMING:
+        j += 1
+    if j == k or words[j:j + 1] != [","] or not {"you", "your"} & set(words[j:]) or {"i", "me", "we"} & set(words):
+        return words, ()
+    # (where 'it' is another vehicle, 'you' is said by the name: 'when you hit the grey car, were you slower than
+    # it was?')
+    named = ["the", *words[k:j]] if {"it", "its"} & set(words[j:]) else None
+    out, n = words[:j], j
+    while n < len(words):
+        said = next((a for a in sorted(AS_IT, key=len, reverse=True) if tuple(words[n:n + len(a)]) == a), None)
+        if said and named:
+            said = said[:2] if said[:1] in (("are",), ("were",)) else said[:1]   # 'were you' -> 'was the bus'
+            out += {"are": ["is"], "were": ["was"]}.get(said[0], []) + (named if "you" in said else [*named, "'", "s"])
+        else:
+            out += AS_IT[said] if said else [words[n]]
+        n += len(said) if said else 1
+    return out, ((" ".join(words[j + 1:]), " ".join(out[j + 1:])),)
 
 
 # A label the question is put under ('Q1:', 'Question 3:', 'Quick question:'), and an aside in brackets that only

@@ -50,10 +50,10 @@ import torch
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.asides import (asides_dropped, corrections_dropped, digressions_dropped, dislocated_as_asked,
-                                      examination_as_asked, framing_dropped, hedges_dropped, hypothesis_as_asked,
-                                      interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
-                                      requested_as_asked, ticket_fields_read, wagers_read)
+from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
+                                      dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
+                                      hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
+                                      prompt_dropped, requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
                                       compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
@@ -335,6 +335,8 @@ class QuestionParser:
         words, impact = impact_said_first(words)
         after += impact
         words, owned = owners_dropped(words)
+        words, spoken_to = addressed_as_named(words)
+        owned += spoken_to
         words, labelled = asides_dropped(words)
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)

@@ -604,7 +604,10 @@ def questions_joined(words: list[str]) -> str:
     fast, or is it slow?', 'does it hit something, or does it stay clean?'), or ''."""
     said = next((" ".join(words[k:k + 2]) for k in range(len(words) - 2) if words[k + 1] in YES_NO_OPENERS
                  and words[k + 2] in SUBJECTS and (words[k] == "and" or words[k] == "or" and
-                                                   asks_impact(words[k:]) and not asks_impact(words[:k]))), None)
+                                                   asks_impact(words[k:]) and not asks_impact(words[:k]))
+                 # ('was its engine on and was it speeding up': the one question of accelerating)
+                 and not ("engine" in words[:k] and {MOTION_KINDS.get(w) for w in words[k:]} >= {"accelerating"})),
+                None)
     if said is None:
         return ""
     return (f"the question asks two questions ('{said}'), which the parser reads one at a time: ask them apart")
