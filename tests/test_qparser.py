@@ -3081,3 +3081,12 @@ def test_a_vehicle_spoken_to_is_the_question_s_you():
         "Grey dirt bike, if you'd come off the line fast, would you and the blue double-decker have collided?"])
     assert little == ["Objects", "filter_attributes[gray]", "filter_attributes[biplane]", "unique", "start", "is_static"]
     assert engine[-1] == "is_accelerating" and "Counterfactual_moving_fast" in would
+
+
+def test_southern_us_words():
+    parser = QuestionParser.load()
+    right_off, fixing = parser.parse_batch([
+        "Which kind of vehicle was gainin' speed right off when the video started?",
+        "The video stops partway. Do you figure the yellow one and the green chopper are fixin' to crash later on?"])
+    assert right_off[-1] == "query_attributes[shape]" and "filter_accelerating" in " ".join(right_off)
+    assert fixing[0] == "futureEvents"

@@ -461,6 +461,11 @@ IDIOMS = phrase_table({
        for shot in ("shot", "filmed", "staged", "recorded")},
     **{(*re, "edit", "it", "so", *that): ("imagine",) for re in (("re", "-"), ("re",)) for that in ((), ("that",))},
     **{("from", "the", "top", "of", "the", take): _START for take in ("take", "clip", "reel", "shot", "video")},
+    # Southern US English: 'right off' (at once: the start), 'fixin' to' (going to), 'y'all reckon' and 'do you
+    # figure' before what is asked ('reckon' was read as 'imagine')
+    ("right", "off"): _START, **{(fix, "to"): ("going", "to") for fix in ("fixing", "fixin")},
+    **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
+       for think in ("reckon", "figure", "suppose")},
     # a speed as a database's attribute ('the vehicle whose speed is fast at the start')
     **{("whose", speed, be): ("that", be) for speed in ("speed", "pace", "velocity", "motion", "state")
        for be in ("is", "was")},
