@@ -3090,3 +3090,6 @@ def test_southern_us_words():
         "The video stops partway. Do you figure the yellow one and the green chopper are fixin' to crash later on?"])
     assert right_off[-1] == "query_attributes[shape]" and "filter_accelerating" in " ".join(right_off)
     assert fixing[0] == "futureEvents"
+    # a rhetorical aside after the question asks nothing
+    obvious, = parser.parse_batch(["What colour is the vehicle hovering at the start - wasn't it easy to spot?"])
+    assert obvious[-1] == "query_attributes[color]" and "filter_floating" in obvious

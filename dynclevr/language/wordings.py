@@ -466,6 +466,10 @@ IDIOMS = phrase_table({
     ("right", "off"): _START, **{(fix, "to"): ("going", "to") for fix in ("fixing", "fixin")},
     **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
        for think in ("reckon", "figure", "suppose")},
+    # a rhetorical aside after the question ('... at the start - wasn't it obvious?', '- didn't it stand out?')
+    **{(sep, aux, "not", "it", *plain): () for sep in ("-", ",") for aux in ("is", "was", "did", "does")
+       for plain in (("obvious",), ("clear",), ("plain",), ("evident",), ("easy", "to", "spot"), ("easy", "to", "see"),
+                     ("easy", "to", "tell"), ("stand", "out"), ("stick", "out"))},
     # a speed as a database's attribute ('the vehicle whose speed is fast at the start')
     **{("whose", speed, be): ("that", be) for speed in ("speed", "pace", "velocity", "motion", "state")
        for be in ("is", "was")},
