@@ -3083,7 +3083,7 @@ def test_a_vehicle_spoken_to_is_the_question_s_you():
     assert engine[-1] == "is_accelerating" and "Counterfactual_moving_fast" in would
 
 
-def test_southern_us_words():
+def test_southern_us_words_and_a_rhetorical_aside():
     parser = QuestionParser.load()
     right_off, fixing = parser.parse_batch([
         "Which kind of vehicle was gainin' speed right off when the video started?",
