@@ -3093,3 +3093,19 @@ def test_southern_us_words_and_a_rhetorical_aside():
     # a rhetorical aside after the question asks nothing
     obvious, = parser.parse_batch(["What colour is the vehicle hovering at the start - wasn't it easy to spot?"])
     assert obvious[-1] == "query_attributes[color]" and "filter_floating" in obvious
+
+
+def test_a_sceptic_s_leading_questions():
+    parser = QuestionParser.load()
+    agree, say, tell, believe, wager, surely = parser.parse_batch([
+        "You'd agree the green SUV was only crawling along slowly at the start, wouldn't you?",
+        "Wouldn't you say the blue road bike was going slower than the city bus at the moment they collided?",
+        "Don't tell me the private jet was outpacing the tandem bike right at the beginning?",
+        "Am I to believe the brown bicycle crashed into something at some point?",
+        "Stopping the clip here, I'd wager the cyan airliner and the yellow biplane end up colliding later, don't they?",
+        "Surely you can tell me how quickly the school bus was moving in the opening moments, can't you?"])
+    assert agree[-1] == "is_moving_velocity[slow]" and say[-1] == "slower_velocity" and tell[-1] == "faster_velocity"
+    assert believe[-1] == "exist" and wager[0] == "futureEvents" and surely[-1] == "query_moving_velocity"
+    # a negated claim stays refused
+    assert_refused(parser, ["Picture the biplane floating in the air from the very start: it couldn't possibly still "
+                            "have hit the grey car, could it?"])

@@ -211,8 +211,13 @@ HUNCHES = ("hunch", "gut", "guess", "bet", "forecast", "prediction", "feeling", 
 # that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
 _AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
 _TAGGED = ([], [",", "would", "not", "you", ","], [",", "do", "not", "you", ","], [",", "will", "not", "you", ","])
-CONFIRMING = {*((*you, verb, *tag, "that") for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
-                for verb in _AGREE for tag in _TAGGED),
+CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
+                for verb in _AGREE for tag in _TAGGED for that in (["that"], []) if that or not tag),
+              # a sceptic's ('Wouldn't you say ...', 'Am I to believe ...', 'Don't tell me ...')
+              *((*lead, *that) for lead in (("would", "not", "you", "say"), ("would", "you", "say"),
+                                            ("do", "not", "you", "think"), ("am", "i", "to", "believe"),
+                                            ("are", "we", "to", "believe"), ("do", "not", "tell", "me"))
+                for that in ((), ("that",))),
               *((*ask, "you", verb, *me, "that") for ask in (["would"], ["do"], ["will"], ["can"], ["could"])
                 for verb in _AGREE for me in ([], ["with", "me"])),
               *(("i", "put", "it", *to, "that") for to in ([], ["to", "you"])),
@@ -257,8 +262,9 @@ CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
                           ["true", "or", "false"], ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
                           ["can", "anyone", "confirm", "that"], ["can", "we", "confirm"], ["can", "you", "confirm"],
                           *(["does", that, "hold", *up] for that in ("that", "this", "it") for up in ([], ["up"])),
-                          *([aux, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
-                            for it in ("it", "they")))]
+                          *([aux, *n, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are",
+                                                      "were", "can", "could") for n in ([], ["not"])
+                            for it in ("it", "they", "you")))]
 # asides of an examination, which ask nothing ('in your own words', 'if you know', 'for the sake of argument')
 EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know"), ("if", "you", "can"),
                              ("if", "you", "recall"), ("if", "you", "remember"), ("as", "best", "you", "can"),
@@ -444,8 +450,8 @@ WAGER_WORDS = {"bet", "bets", "betting", "wager", "wagers", "wagered", "wagering
                "favorite", "money", "pot", "kitty", "sweepstake", "payout", "cert", "collect", "settles",
                "backing", "tipping", "wins", "lock"}
 _STAKES = (["a", "fiver"], ["a", "tenner"], ["fiver"], ["tenner"], ["my", "money"], ["money"], ["a", "quid"])
-WAGER_CLAIMS = sorted({*((*i, "bet", *you) for i in (["i"], ["i", "'", "d"], ["i", "'", "ll"], ["i", "would"], [])
-                         for you in ([], ["you"])),
+WAGER_CLAIMS = sorted({*((*i, bet, *you) for i in (["i"], ["i", "'", "d"], ["i", "'", "ll"], ["i", "would"], [])
+                         for bet in ("bet", "wager") for you in ([], ["you"])),
                        *((*stake, "says") for stake in _STAKES),
                        *(("is", "it", "a", *lock) for lock in (["lock"], ["sure", "thing"], ["dead", "cert"],
                                                               ["safe", "bet"], ["done", "deal"])),
@@ -456,8 +462,8 @@ WAGERING = {"wagering", "betting", "bet", "wager"}
 # ... closed by the claim's own question ('. Does it?', ', do I collect?')
 WAGER_ENDS = [[end, *q, "?"] for end in (".", ";", ",", "-")
               for q in (["do", "i", "collect"], ["do", "i", "win"], ["am", "i", "right"], ["yes", "or", "no"],
-                        *([aux, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
-                          for it in ("it", "they")))]
+                        *([aux, *n, it] for aux in ("does", "do", "did", "will", "would", "is", "was", "are", "were")
+                          for n in ([], ["not"]) for it in ("it", "they")))]
 
 
 def _wagered(words: list[str]) -> bool:

@@ -466,6 +466,9 @@ IDIOMS = phrase_table({
     ("right", "off"): _START, **{(fix, "to"): ("going", "to") for fix in ("fixing", "fixin")},
     **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
        for think in ("reckon", "figure", "suppose")},
+    # a sceptic's 'Surely you can tell me ..., can't you?'
+    **{("surely", "you", can, "tell", "me"): ("tell", "me") for can in ("can", "could")},
+    **{(",", can, "not", "you", "?"): ("?",) for can in ("can", "could")},
     # a rhetorical aside after the question ('... at the start - wasn't it obvious?', '- didn't it stand out?')
     **{(sep, aux, "not", "it", *plain): () for sep in ("-", ",") for aux in ("is", "was", "did", "does")
        for plain in (("obvious",), ("clear",), ("plain",), ("evident",), ("easy", "to", "spot"), ("easy", "to", "see"),
