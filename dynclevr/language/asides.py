@@ -308,7 +308,9 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             out = out[:-1] if between else out
             k = end + between + (not out and words[end:end + 1] == [","])
             continue
-        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c), None) or \
+        # (a lead with nothing after it is a tag: '...; would you say so?')
+        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c and words[k + len(c):k + len(c) + 1]
+                        not in ([], ["so"], ["?"], ["."])), None) or \
             next((c for c in CLAIM_LABELS if tuple(words[k:k + len(c)]) == c and (k == 0 or words[k - 1] in
                   SENTENCE_ENDS) and words[k + len(c):k + len(c) + 1] and words[k + len(c)] not in QUESTION_OPENERS),
                  None)
