@@ -157,7 +157,7 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         out = out[:asked + 1] + rest
     # a statement to judge ('true or false : the bus is fast .', 'circle one : ... true / false', '☐ true ☐ false')
     judged = out[:4] == ["true", "or", "false", ":"]
-    label = next((i for i in INSTRUCTIONS[5:10] if tuple(out[:len(i)]) == i
+    label = next((i for i in INSTRUCTIONS if i[0] in ("circle", "tick") and tuple(out[:len(i)]) == i
                   and out[len(i):len(i) + 1] in ([":"], ["."])), None)
     tail = [w for w in out[-5:] if w not in BOXES]
     if judged or label and tail[-3:] in (["true", "/", "false"], ["true", "false"]) or \
