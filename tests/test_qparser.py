@@ -24,7 +24,7 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
                                       dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
                                       hypothesis_as_asked, interjections_dropped, preamble_dropped, prompt_dropped,
-                                      requested_as_asked, ticket_fields_read, wagers_read)
+                                      radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -3109,3 +3109,21 @@ def test_a_sceptic_s_leading_questions():
     # a negated claim stays refused
     assert_refused(parser, ["Picture the biplane floating in the air from the very start: it couldn't possibly still "
                             "have hit the grey car, could it?"])
+
+
+def test_radio_brevity():
+    assert radio_as_asked(tokenize("Verify green dirt bike running fast at first frame, over."))[0] == \
+        tokenize("is it true that the green dirt bike running fast at first frame.")
+    assert radio_as_asked(tokenize("Say again: how fast is the bus?")) == (tokenize("Say again: how fast is the bus?"),
+                                                                            ())
+    parser = QuestionParser.load()
+    say, verify, stopped = parser.parse_batch([
+        "Say speed of the blue bus at contact with the green car.",
+        "Verify green dirt bike running fast at first frame, over.",
+        "Verify: red motorbike dead stopped at time of contact with the blue one, yes or no?"])
+    assert say[-1] == "query_moving_velocity" and "filter_collision" in say
+    assert verify == ["Objects", "filter_attributes[green]", "filter_attributes[dirtbike]", "unique", "start",
+                      "is_moving_velocity[fast]"]
+    assert stopped[-1] == "is_static" and "filter_collision" in stopped
+    # a time asked is refused, however said
+    assert_refused(parser, {"Say time in seconds of first contact between the red sedan and the blue bus.": "when"})

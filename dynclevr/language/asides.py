@@ -309,8 +309,8 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             k = end + between + (not out and words[end:end + 1] == [","])
             continue
         # (a lead with nothing after it is a tag: '...; would you say so?')
-        confirm = next((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c and words[k + len(c):k + len(c) + 1]
-                        not in ([], ["so"], ["?"], ["."])), None) or \
+        confirm = max((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c and words[k + len(c):k + len(c) + 1]
+                       not in ([], ["so"], ["?"], ["."])), key=len, default=None) or \
             next((c for c in CLAIM_LABELS if tuple(words[k:k + len(c)]) == c and (k == 0 or words[k - 1] in
                   SENTENCE_ENDS) and words[k + len(c):k + len(c) + 1] and words[k + len(c)] not in QUESTION_OPENERS),
                  None)
@@ -712,6 +712,29 @@ def addressed_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
             out += AS_IT[said] if said else [words[n]]
         n += len(said) if said else 1
     return out, ((" ".join(words[j + 1:]), " ".join(out[j + 1:])),)
+
+
+# Radio brevity's imperatives before a vehicle said without its article ('Say speed of the blue bus at contact ...',
+# 'Report purple cruiser's speed class ...', 'Verify green dirt bike running fast at first frame, over.')
+RADIO_ASKS = {"say": ["tell", "me"], "report": ["tell", "me"], "verify": ["is", "it", "true", "that"],
+              "confirm": ["is", "it", "true", "that"]}
+SIGN_OFFS = ([",", "over", "."], [",", "over"], ["over", "."], [",", "over", "and", "out", "."])
+
+
+def radio_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'say speed of the blue bus ...' -> 'tell me the speed of the blue bus ...'; 'verify green dirtbike running fast
+    ...' -> 'is it true that the green dirtbike running fast ...'. With the words read so, or the words as they are
+    and ()."""
+    said = RADIO_ASKS.get(words[0]) if words else None
+    if said is None or not words[1:2] or words[1] in DETERMINERS | QUESTION_OPENERS | {"whether", "if", "me", ":"}:
+        return words, ()
+    # a vehicle or what is asked of it follows ('say again', 'verify the claim' are no such request)
+    if words[1] not in NAMING and (said[0] == "is" or words[1] not in QUERY_NOUNS | {"heading"}):
+        return words, ()
+    out = [*said, "the", *words[1:]]
+    end = next((e for e in SIGN_OFFS if out[-len(e):] == e), None)
+    out = out[:-len(end)] + ["."] if end else out
+    return out, ((" ".join(words[:2]), " ".join([*said, "the", words[1]])),)
 
 
 # A label the question is put under ('Q1:', 'Question 3:', 'Quick question:'), and an aside in brackets that only

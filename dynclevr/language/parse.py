@@ -53,7 +53,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
                                       dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
                                       hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
-                                      prompt_dropped, requested_as_asked, ticket_fields_read, wagers_read)
+                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
                                       compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
@@ -314,7 +314,9 @@ class QuestionParser:
         words, scenario = scenario_as_asked(words)
         words, told = told_otherwise_as_imagined(words)
         corrected += setting + scenario + told
+        words, radioed = radio_as_asked(words)
         words, examined = examination_as_asked(words)
+        examined = radioed + examined
         words, wagered = wagers_read(words)
         words, requested = requested_as_asked(words)
         words, tested = hypothesis_as_asked(words)

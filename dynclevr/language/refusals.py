@@ -136,7 +136,12 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     labelled, _ = _asked(said[len(said) - said[::-1].index(":"):]) if ":" in said else (None, "")
     # 'Replay time: at what second does ...', a learner's 'Blue bus and green car collide at what second?'
     if {asked, as_said, labelled} & TIME_ASKED or any(
-            a in ("at", "in", "on") and b in ASKING and c in TIME_ASKED for a, b, c in zip(said, said[1:], said[2:])):
+            a in ("at", "in", "on") and b in ASKING and c in TIME_ASKED for a, b, c in zip(said, said[1:], said[2:])) \
+            or any(a == "time" and (b, c) in (("in", "seconds"), ("in", "moments"), ("in", "frames"), ("of", "first"),
+                                              ("of", "contact"), ("of", "impact"), ("of", "collision"))
+                   and "at" not in said[max(k - 2, 0):k]   # ('at the time of impact' is at the collision)
+                   for k, (a, b, c) in enumerate(zip(said, said[1:], said[2:]))):   # 'Say time in seconds of ...'
+
         return ("the question asks when something happens, which no question here asks (they ask about the start, "
                 "a collision or what comes after the video)")
     why = ("which no question here asks" if {asked, as_said} & SPATIAL else "a word the parser does not know"

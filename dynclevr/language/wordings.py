@@ -469,6 +469,9 @@ IDIOMS = phrase_table({
     # a sceptic's 'Surely you can tell me ..., can't you?'
     **{("surely", "you", can, "tell", "me"): ("tell", "me") for can in ("can", "could")},
     **{(",", can, "not", "you", "?"): ("?",) for can in ("can", "could")},
+    # radio's 'at start of tape', 'at first frame'
+    **{("at", "start", "of", film): _START for film in ("tape", "feed", "video", "clip", "footage", "recording")},
+    ("at", "first", "frame"): _START,
     # a rhetorical aside after the question ('... at the start - wasn't it obvious?', '- didn't it stand out?')
     **{(sep, aux, "not", "it", *plain): () for sep in ("-", ",") for aux in ("is", "was", "did", "does")
        for plain in (("obvious",), ("clear",), ("plain",), ("evident",), ("easy", "to", "spot"), ("easy", "to", "see"),
