@@ -53,7 +53,8 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
                                       dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
                                       hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
-                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
+                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read,
+                                      wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
                                       compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
