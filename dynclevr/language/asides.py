@@ -718,7 +718,7 @@ def addressed_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
 # 'Report purple cruiser's speed class ...', 'Verify green dirt bike running fast at first frame, over.')
 RADIO_ASKS = {"say": ["tell", "me"], "report": ["tell", "me"], "verify": ["is", "it", "true", "that"],
               "confirm": ["is", "it", "true", "that"]}
-SIGN_OFFS = ([",", "over", "."], [",", "over"], ["over", "."], [",", "over", "and", "out", "."])
+OVER = ([",", "over", "."], [",", "over"], ["over", "."], [",", "over", "and", "out", "."])   # a radio's sign-off
 
 
 def radio_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -732,7 +732,7 @@ def radio_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if words[1] not in NAMING and (said[0] == "is" or words[1] not in QUERY_NOUNS | {"heading"}):
         return words, ()
     out = [*said, "the", *words[1:]]
-    end = next((e for e in SIGN_OFFS if out[-len(e):] == e), None)
+    end = next((e for e in OVER if out[-len(e):] == e), None)
     out = out[:-len(end)] + ["."] if end else out
     return out, ((" ".join(words[:2]), " ".join([*said, "the", words[1]])),)
 

@@ -139,7 +139,7 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
             a in ("at", "in", "on") and b in ASKING and c in TIME_ASKED for a, b, c in zip(said, said[1:], said[2:])) \
             or any(a == "time" and (b, c) in (("in", "seconds"), ("in", "moments"), ("in", "frames"), ("of", "first"),
                                               ("of", "contact"), ("of", "impact"), ("of", "collision"))
-                   and "at" not in said[max(k - 2, 0):k]   # ('at the time of impact' is at the collision)
+                   and not {"at", "in", "on", "by"} & set(said[max(k - 2, 0):k])   # 'at the time of impact' is at it
                    for k, (a, b, c) in enumerate(zip(said, said[1:], said[2:]))):   # 'Say time in seconds of ...'
 
         return ("the question asks when something happens, which no question here asks (they ask about the start, "
