@@ -875,6 +875,12 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         end = next((k for k, w in enumerate(words) if w in (".", "!", ":") and not _decimal(words, k)), None)
         heading = [w for j, w in enumerate(words[:end or 0]) if not (w == "quick" and words[j + 1:j + 2] and
                                                                      words[j + 1] in QUICK_LABELS)]   # 'quick one'
+        if end is not None and words[end] == ":" and words[1:3] == ["'", "s"] and \
+                words[3:4] in (["question"], ["questions"], ["query"], ["note"], ["corner"]):
+            # someone's label, whatever it says ("Coach's question for film session:"; 'coach' is read as a bus)
+            read.append((" ".join(words[:end + 1]), "nothing, a remark"))
+            words = words[end + 1:]
+            continue
         if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
         elif end is not None and words[end] == ":" and _headline(heading, words[end + 1:]):

@@ -13,11 +13,11 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_end
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
-                                     COPULAS, DETERMINERS, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID, IMPACT_STEMS,
-                                     INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID,
-                                     OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED,
-                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED,
-                                     asks_impact, _at)
+                                     COPULAS, DETERMINERS, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID, IMAGINING,
+                                     IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
+                                     NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS,
+                                     SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED,
+                                     UNNAMED, asks_impact, _at)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -57,7 +57,8 @@ IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "corre
 NAMELESS = {"some", "a", "an", "another", "one"}
 THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
              ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
-             *((p, d, m) for p in ("at", "in", "during") for d in ("this", "that", "the") if (p, d) != ("at", "the")
+             *((p, d, *very, m) for p in ("at", "in", "during") for d in ("this", "that", "the")
+               if (p, d) != ("at", "the") for very in ((), ("very",), ("exact",), ("precise",))
                for m in ("moment", "instant", "point", "event", "collision", "crash", "impact")),
              *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
              ("then",))
@@ -421,7 +422,9 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         return (out, read) if read else (words, ())
     context = [words[a:b] for a, b in spans[:asked_at]]
     question = words[spans[asked_at][0]:spans[asked_at][1]]
-    conditions = [_condition_said(s, bool(j and (IMAGINED_SAID | {"if"}) & set(context[j - 1])
+    # ('Imagine this. The bike moves fast. Would ...?', 'Picture this. ...')
+    conditions = [_condition_said(s, bool(j and ((IMAGINED_SAID | {"if"}) & set(context[j - 1])
+                                                 or context[j - 1][0] in IMAGINING)
                                           and not mentions(context[j - 1]))) for j, s in enumerate(context)]
     # 'In that world, does it ...?': where no sentence imagines, the sentence before is what is imagined
     back = _at(question[:4], IMAGINED_BACK)
@@ -523,8 +526,9 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         out[struck:struck + 1] = _said(others[0])
         used.add(others[0])
         named = mentions(out)
-    if plural:
-        others = [r for r in latest if not _named(r, named)]
+    if plural:   # the context's two, none named in the question, in the order it names them ('Here is the bus.
+        # Here is the car. Do they crash?')
+        others = [r for r in (fullest if not named and len(fullest) == 2 else latest) if not _named(r, named)]
         pair = [r for _, _, r in named][:1] + others[:2 - len(named[:1])]
         if len(pair) < 2 or len(fullest) > 2 and not named:
             return words, ()

@@ -83,8 +83,8 @@ from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, colour_cla
                                        spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, run_together, slipped, slips, sound_index,
-                                     stretched)
+from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
+                                     sound_index, stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
                                         floating_plane_as_vehicle, fronted_value_as_asked, heading_as_direction,
@@ -288,8 +288,11 @@ class QuestionParser:
             return [], "empty question", (), []
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
-        held = {w: stretched(w, self.readable) for w in words if w not in self.readable}
-        held = {w: k for w, k in held.items() if k}   # 'sloooow', 'sooo': chat's held letters
+        words = rejoined(words, self.readable, SPELLINGS)
+        # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print
+        held = {w: stretched(w, self.readable) or scanned(w, self.readable, SPELLINGS)
+                for w in words if w not in self.readable}
+        held = {w: k for w, k in held.items() if k}
         words = [held.get(w, w) for w in words]
         words = closing_mark_added(words)
         words, pictured = moment_pictured(words)

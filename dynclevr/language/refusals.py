@@ -43,6 +43,11 @@ SUBJECT_VERBS = {"hit", "hits", "collide", "collides", "crash", "crashes", "bump
 PARTNER_WORDS = {"with", "into", "hit", "hits", "hitting", "struck", "strike", "strikes"}
 
 
+# whatever is ending, a clause of time that says it ends ('when the show's wrapping up', 'once the picture is over',
+# 'by the time the reel is done'): the video's end, whatever it is called
+ENDING_CLAUSE = re.compile(r"\b(?:when|once|as|by the time|until) (?:the|this|that) [a-z]+ (?:' s |is |are )?(?:all )?"
+                           r"(?:over|done|finished|ending|wrapping up|wraps up|winding down|winds down|about to end)\b")
+
 def _unknown_vehicle(words: list[str], k: int) -> bool:
     """Whether the unknown word after the determiner at k is where the question names a vehicle."""
     after = words[k + 2:k + 3]
@@ -293,7 +298,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
                 "it is moving)")
-    ended = _video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said)) for e in END_TIMES)
+    ended = _video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said)) for e in END_TIMES) or \
+        ENDING_CLAUSE.search(" ".join(said))
     if ended and not asks_impact(said) and not asks_impact(words):   # 'colide' as read, typos fixed
         return ("the question asks about the video's end, which no question here asks (they ask about the start, "
                 "an object's coming into view, a collision, and collisions after the video)")

@@ -18,7 +18,7 @@ from dynclevr.language.tokenize import SPELLINGS
 from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
                                      GENERIC_NOUNS, NAMING, NEGATIONS, OTHER_COLOURS, OTHER_VEHICLES, QUERY_NOUNS,
-                                     QUESTION_OPENERS, SPEED_CHOICES, asks_impact)
+                                     QUESTION_OPENERS, SPEED_CHOICES, START_WORDS, asks_impact)
 
 # A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
 # false: the red sedan is moving fast.', 'Circle one: static / slow / fast', 'it is moving ______ (static/slow/fast).')
@@ -241,6 +241,12 @@ GLOSS_OPENERS = (["ie"], ["eg"], ["that", "is"], ["meaning"], ["namely"], ["in",
 CHOICE_LABELS = {"levels", "options", "choices", "classes", "categories", "answers"}
 CHOICES_SAID = {"static", "stationary", "parked", "still", "moving", "slow", "slowly", "fast", "quick", "quickly",
                 "yes", "no", "or", ",", "/", "left", "right", "front", "back", "up", "down", "none", "zero"}
+# states a gloss after a dash says again ('speeding up - going faster and faster because its engine is on', 'moves
+# fast - not slow'), and the words of a clause after a dash that asks more than a gloss ('fast - or slow?')
+GLOSSED_STATES = {"fast", "slow", "slowly", "quickly", "static", "still", "stationary", "parked", "floating",
+                  "hovering", "accelerating", "speeding", "up", "moving", "standing"}
+GLOSS_KEEPS = {"or", "when", "while", "as", "if", "whether", "than", "but", "then", "after", "before", "what", "which",
+               "how", "who", "where", "whose"}
 # the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
 SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
             "?"}
@@ -285,6 +291,13 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             a = d + 1
             continue
         a = b + 1
+    for k in range(len(out) - 2, 0, -1):   # plain language's gloss after a dash ('is it floating - staying up?')
+        end = next((j for j in range(k + 1, len(out)) if out[j] in (".", "?", "!")), len(out))
+        clause = out[k + 1:end]
+        if out[k] == "-" and clause and out[k - 1] in GLOSSED_STATES | START_WORDS and \
+                not set(clause) & (NAMING | GLOSS_KEEPS) and not asks_impact(clause):
+            read.append((" ".join(out[k:end]), "nothing, a gloss"))
+            out[k:end] = []
     return (out, tuple(read)) if read else (words, ())
 
 

@@ -127,6 +127,51 @@ def stretched(word: str, words: set[str]) -> str | None:
     return next((w for w in map("".join, itertools.product(*options)) if w in words), None)
 
 
+# Printed letters a scanner (OCR) takes for others, read either way: 'rnotorbike', 'bicyde', 's1ower', 'int0'.
+SCANNED = (("rn", "m"), ("cl", "d"), ("li", "h"), ("vv", "w"), ("1", "l"), ("1", "i"), ("l", "i"), ("0", "o"),
+           ("5", "s"))
+
+
+def scanned(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
+    """The one word of `words` that `word` (3+ characters) reads as with one or two of a scanner's confusions of
+    printed letters (`SCANNED`) undone; None when there is none or more than one."""
+    if len(word) < 3:
+        return None
+    spellings = spellings or {}
+    pairs = [p for pair in SCANNED for p in (pair, pair[::-1])]
+
+    def undone(w: str) -> set[str]:
+        return {w[:k] + b + w[k + len(a):] for a, b in pairs for k in range(len(w)) if w.startswith(a, k)}
+
+    once = undone(word)
+    hits = {spellings.get(w, w) for w in once} & words
+    if not hits:
+        hits = {spellings.get(w, w) for w in set().union(*map(undone, once))} & words
+    return hits.pop() if len(hits) == 1 else None
+
+
+def rejoined(words: list[str], readable: set[str], spellings: dict[str, str] | None = None) -> list[str]:
+    """A word a printed line's break or a stray space split ('col lides', 'col - lide', 'yel low') made whole, where
+    a part is no word of `readable` and the whole is."""
+    spellings = spellings or {}
+    out: list[str] = []
+    k = 0
+    while k < len(words):
+        a = words[k]
+        for gap in (1, 2):
+            b = words[k + gap] if k + gap < len(words) else ""
+            whole = spellings.get(a + b, a + b)
+            if b.isalpha() and (gap == 1 or words[k + 1] == "-") and a.isalpha() and whole in readable \
+                    and (a not in readable or b not in readable):
+                out.append(whole)
+                k += gap + 1
+                break
+        else:
+            out.append(a)
+            k += 1
+    return out
+
+
 def run_together(word: str, words: set[str]) -> str | None:
     """'fastmoving' -> 'fast moving': two words of `words` (of 2+ letters each) that `word` is, typed without the
     space or hyphen between them, where it splits so one way only; else None."""

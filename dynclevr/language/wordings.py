@@ -161,6 +161,8 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"(?:old |elderly |poor )?"
                      r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?(?! about)|please tell me|let me know"
+                     # a worksheet's bare 'Tell the colour of ...'
+                     r"|(?:please )?tell(?= the (?:color|type|kind|shape|category|class|speed|velocity|direction) )"
                      r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
                      r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know(?! is )"
                      r"|(?:[a-z]+ ){1,3}(?:is|are|was|were|' s) (?:asking|wondering)"
@@ -224,7 +226,10 @@ def request_after_setting(words: list[str]) -> list[str]:
         if (m := REQUEST.match(said)) and len(rest := said[m.end():].split()) >= 3:
             # (the request itself dropped where the question follows it whole: 'i'm asking about the pickup :
             # after the clip stops , will it ...?')
-            asked = rest if rest[:1] and rest[0] in YES_NO_OPENERS | TIME_OPENERS else words[k + 1:]
+            # (and a question word's, as the grammar's 'tell me how fast ...', so that the scene's moment is
+            # said before the question, not before the request)
+            asked = rest if rest[:1] and rest[0] in YES_NO_OPENERS | TIME_OPENERS else ["tell", "me", *rest] \
+                if rest[0] in ("how", "what", "which", "where") else words[k + 1:]
             return words[:k] + ["."] + asked[:-1] + ["?" if asked[-1] == "." else asked[-1]]
     return words
 
@@ -355,12 +360,13 @@ def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 
 def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
-    thing that floats?', 'blue scooter speed at the start?'), or asked for by 'tell me' where the grammar's 'tell me'
-    never does ('tell me the speed of the red car', 'tell me the red car's direction'; it says 'tell me how fast
-    ...'), read as 'what is ...'; with the words read so, or the words as they are and ()."""
+    thing that floats?', 'blue scooter speed at the start?'), or asked for by 'tell me' ('tell me the speed of the
+    red car', 'tell me the red car's direction': the grammar says 'tell me how fast ...'; 'tell me the colour of
+    the plane that floats', which the decoder read as yes or no), read as 'what is ...'; with the words read so, or
+    the words as they are and ()."""
     told = words[:2] == ["tell", "me"]
     k = 2 * told + (words[2 * told:2 * told + 1] == ["the"])
-    nouns = MOTION_NOUNS if told else QUERY_NOUNS
+    nouns = QUERY_NOUNS
     if words[k:k + 1] and words[k] in nouns and words[k + 1:k + 2] == ["of"]:
         return ["what", "is", "the"] + words[k:], ((" ".join(words[:k + 2]), f"what is the {words[k]} of"),)
     if told and k == 3:   # 'tell me the red car's speed'
@@ -442,7 +448,13 @@ IDIOMS = phrase_table({
     **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
         ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
     # Gen-Z's opener and 'giving' ('ok but ...', 'is it giving parked, slow or zooming'), 'the first few seconds'
-    ("ok", "but"): (), ("okay", "but"): (), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
+    ("ok", "but"): (), ("okay", "but"): (), ("this", "here"): ("this",),
+    # learners' 'stands on place', 'arrives in view first time', 'to which side is it driving'
+    **{(v, p, "place"): (v, "still") for v in ("stand", "stands", "standing", "stood", "stay", "stays", "staying",
+                                                 "stayed") for p in ("on", "in", "at")},
+    **{("view", "first", "time"): ("view", "for", "the", "first", "time"),
+       ("sight", "first", "time"): ("sight", "for", "the", "first", "time"),
+       ("to", "which", "side"): ("in", "which", "direction")}, **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
     # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's

@@ -297,12 +297,12 @@ SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}  
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
              for very in ((), ("very",)) for e in ("end", "finish", "close", "conclusion", "finale", "ending")] + \
     [["end", "of", f] for f in ("video", "clip", "footage", "film")] + \
-    [[*p, "the", *very, a, *few, f] for p in (("in",), ("at",), ("during",), ()) for very in ((), ("very",))
-     for a in ("last", "final", "closing")
+    [[*p, *the, *very, a, *few, f] for p in (("in",), ("at",), ("during",), ()) for the in (("the",), ())
+     for very in ((), ("very",)) for a in ("last", "final", "closing")
      for few in ((), ("few",), ("couple", "of")) for f in ("frame", "frames", "second", "seconds", "moment", "moments",
                                                          "timestep", "timesteps", "instant", "instants", "stage",
                                                          "stages", "part", "whistle", "shot", "shots", "scene",
-                                                         "scenes")]
+                                                         "scenes", "timestamp", "image", "bit", "reel")]
 START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "began", "begun", "initially", "opening",
                "outset", "onset"}
 
