@@ -54,8 +54,8 @@ from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstrac
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import (EOS_ID, UNK_ID, Vocab, run_together, slipped, slips, sound_index, sound_key,
-                                     sounded, stretched)
+from dynclevr.language.vocab import (EOS_ID, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
+                                     sound_index, sound_key, sounded, stretched)
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
 from dynclevr.questions import phrasing
@@ -3127,3 +3127,45 @@ def test_radio_brevity():
     assert stopped[-1] == "is_static" and "filter_collision" in stopped
     # a time asked is refused, however said
     assert_refused(parser, {"Say time in seconds of first contact between the red sedan and the blue bus.": "when"})
+
+
+def test_a_scanner_s_misread_print_and_split_words():
+    known = {"motorbike", "slower", "into", "bicycle", "collides", "yellow", "color", "red", "reel"}
+    assert scanned("rnotorbike", known) == "motorbike" and scanned("s1ower", known) == "slower"
+    assert scanned("int0", known) == "into" and scanned("bicyde", known) == "bicycle"
+    assert scanned("co1our", known, {"colour": "color"}) == "color"
+    assert scanned("tale", known) is None   # no reading of it is a word: left as it is
+    assert rejoined("the car col lides with the yel low one".split(), known) == \
+        "the car collides with the yellow one".split()
+    assert rejoined("col - lides".split(), known) == ["collides"]
+    assert rejoined("the red reel".split(), known) == "the red reel".split()   # two words stay two
+    parser = QuestionParser.load()
+    ocr, split = parser.parse_batch(["At the start. is the yellow rnotorbike moving slowly?",
+                                     "What type of vehicle does the road bike col- lide with?"])
+    assert ocr == ["Objects", "filter_attributes[yellow]", "filter_attributes[motorbike]", "unique", "start",
+                   "is_moving_velocity[slow]"]
+    assert split == ["Events", "Objects", "filter_attributes[road_bike]", "unique", "get_all_col_partners", "unique",
+                     "query_attributes[shape]"]
+
+
+def test_plain_language_and_a_persona_s_words():
+    parser = QuestionParser.load()
+    floating, picture, pair, moment = parser.parse_batch([
+        "Look at the red biplane. Is it floating at the start - staying up in the air without falling?",
+        "Picture this. At the start, the brown mountain bike moves fast - not slow. Would the mountain bike crash "
+        "into the cyan minivan?",
+        "Here is the yellow school bus. Here is the grey sedan. Do they ever crash into each other in the video?",
+        "The red bendy bus hits the grey car. Think about that moment. Is the bendy bus slower than the car?"])
+    assert floating == ["Objects", "filter_attributes[red]", "filter_attributes[biplane]", "unique", "start",
+                        "is_floating"]
+    assert picture[4] == "Counterfactual_moving_fast"
+    assert pair[1:3] == ["Objects", "filter_attributes[yellow]"]   # the pair in the order the context names them
+    assert moment[-1] == "slower_velocity" and "get_frame" in moment
+    told, = parser.parse_batch(["Tell the colour of the aeroplane that hovers in the air at the beginning."])
+    assert told == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    # a dash that starts a question or a request is no gloss
+    assert parser.parse_batch(["Summary: floating object at clip start - report its colour."])[0][-1] == \
+        "query_attributes[color]"
+    # the video's end, whatever it is called, is refused of a factual question
+    assert_refused(parser, {"Is that red pickup faster than the green car when the show's wrappin' up, partner?":
+                            "end", "IS THE GRAY SEDAN STATIC AT FINAL TIMESTAMP? BEEP BOOP.": "end"})

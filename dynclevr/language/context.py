@@ -448,7 +448,10 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     # a sentence that says the video stopped ('video stops partway through . does the sedan hit ...?'): the question
     # asks after its end
     stopped = next((c for c in context if (e := _video_end(c)) and (e[0] == 0 or c[e[0] - 1] == ":")), None)
-    if stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
+    ended = _video_end(asked, stopped or [])   # its 'it' the video the context names ('After it stops, will ...?')
+    if stopped and asks_impact(question) and ended and not _video_end(asked):
+        asked = [*asked[:ended[0]], "after", "the", "video", "ends", *asked[ended[1]:]]
+    elif stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
         asked = ["after", "the", "video", "ends", ",", *asked]
     # the vehicles the context names, fullest mention of each, in the order of the sentences that name them; those
     # said with a word the parser does not know are not read for it

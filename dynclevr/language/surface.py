@@ -247,6 +247,7 @@ GLOSSED_STATES = {"fast", "slow", "slowly", "quickly", "static", "still", "stati
                   "hovering", "accelerating", "speeding", "up", "moving", "standing"}
 GLOSS_KEEPS = {"or", "when", "while", "as", "if", "whether", "than", "but", "then", "after", "before", "what", "which",
                "how", "who", "where", "whose"}
+GLOSS_STARTS = {"not", "meaning", "ie", "no", "without", "like", "with", "so", "in"}   # or a participle
 # the words of a speaker's aside in brackets, about how they say it ('I think they call it', 'is that the word?')
 SPEAKING = {"i", "we", "they", "say", "call", "called", "word", "think", "believe", "hope", "mean", "gather", "reckon",
             "?"}
@@ -295,6 +296,7 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
         end = next((j for j in range(k + 1, len(out)) if out[j] in (".", "?", "!")), len(out))
         clause = out[k + 1:end]
         if out[k] == "-" and clause and out[k - 1] in GLOSSED_STATES | START_WORDS and \
+                (clause[0].endswith("ing") or clause[0] in GLOSS_STARTS) and \
                 not set(clause) & (NAMING | GLOSS_KEEPS) and not asks_impact(clause):
             read.append((" ".join(out[k:end]), "nothing, a gloss"))
             out[k:end] = []

@@ -187,7 +187,7 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
             if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]) and \
                     not asks_impact(words[k:sep]):
                 k = sep
-            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS:
+            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS | {"("}:
                 continue   # 'the video stops before they collide': the clause is the question's own
             return i, k
     return None
