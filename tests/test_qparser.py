@@ -29,17 +29,17 @@ from dynclevr.language.checks import (anything_unasked, clock_unasked, collision
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
                                       motion_unfiltered, named_attribute, reversed_reading, speed_unsaid, time_unasked)
-from dynclevr.language.context import (afterthoughts_read, context_as_question, impact_said_first,
-                                       told_otherwise_as_imagined)
+from dynclevr.language.context import (afterthoughts_read, check_ins_stated, context_as_question,
+                                       impact_said_first, told_otherwise_as_imagined)
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, program_shape, synonyms,
                                      time_clause_last, well_formed)
 from dynclevr.language.refusals import (chained, checked_attribute, imagined_otherwise, ordered, otherwise_compared,
                                         premised, properties_joined, quantified, questions_joined, ranking,
                                         reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
                                         times_joined)
-from dynclevr.language.surface import (archaic_as_said, corrections_starred, glosses_read, homophones_as_said,
-                                       lettered_options, quoted_question, shorthand_as_said, spelt_by_ear,
-                                       worksheet_as_said)
+from dynclevr.language.surface import (archaic_as_said, corrections_starred, creole_as_said, glosses_read,
+                                       homophones_as_said, lettered_options, quoted_question, shorthand_as_said,
+                                       spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
@@ -3169,3 +3169,56 @@ def test_plain_language_and_a_persona_s_words():
     # the video's end, whatever it is called, is refused of a factual question
     assert_refused(parser, {"Is that red pickup faster than the green car when the show's wrappin' up, partner?":
                             "end", "IS THE GRAY SEDAN STATIC AT FINAL TIMESTAMP? BEEP BOOP.": "end"})
+
+
+def test_creoles_and_pidgins():
+    assert creole_as_said(tokenize("Di blue car did a go faster dan di green bus a di start?"))[0] == \
+        tokenize("the blue car did go faster than the green bus at the start?")
+    # Hawaiian 'wen': 'when' before its clause's subject, a past tense's mark before a verb
+    assert creole_as_said(tokenize("Wen da brown one wen smash da gray minivan"))[0] == \
+        tokenize("when the brown one smash the gray minivan")
+    # without a creole's own words, standard English keeps 'stay', 'for', 'a' and 'jam'
+    said = tokenize("Does the bus stay parked for a while in the jam?")
+    assert creole_as_said(said) == (said, ())
+    parser = QuestionParser.load()
+    lick, air, jam = parser.parse_batch(["Di red sedan and di blue scooter did lick up demself?",
+                                         "Dat yellow biplane dey float for air for beginning?",
+                                         "Dat purple dirt bike jam anything at all for di video?"])
+    assert lick == ["Events", "Objects", "filter_attributes[red]", "filter_attributes[sedan]", "unique",
+                    "filter_collision", "Objects", "filter_attributes[blue]", "filter_attributes[scooter]", "unique",
+                    "filter_collision", "exist"]
+    assert air == ["Objects", "filter_attributes[yellow]", "filter_attributes[biplane]", "unique", "start",
+                   "is_floating"]
+    assert jam == ["Events", "Objects", "filter_attributes[purple]", "filter_attributes[dirtbike]", "unique",
+                   "filter_collision", "exist"]
+
+
+def test_a_shy_speaker_s_apologies_courtesies_and_softeners():
+    parser = QuestionParser.load()
+    sorry, trouble, possibly = parser.parse_batch([
+        "Sorry to ask a what-if, but if the cyan motorbike had started off slowly, would it have collided with the "
+        "brown bus?",
+        "If it isn't too much trouble, does the red sedan hit the blue bus?",
+        "Apologies in advance, but was the brown cruiser possibly going fast when it crashed into the red bus?"])
+    assert sorry[4] == "Counterfactual_moving_slow"
+    assert trouble[0] == "Events" and trouble[-1] == "exist"
+    assert possibly[-1] == "is_moving_velocity[fast]" and "filter_collision" in possibly
+    # what could happen stays refused: 'could' and 'might' ask it, and so does 'is it possible'
+    assert_refused(parser, {"Is it possible that the red sedan hits the blue bus?": "could happen"})
+
+
+def test_a_tutor_s_check_ins_are_context():
+    parser = QuestionParser.load()
+    seen, noticed, moment = parser.parse_batch([
+        "You saw the red sedan right at the very start, didn't you? How fast was it going, standing still, slow, or "
+        "fast?",
+        "Did you notice the blue biplane at the beginning? Was it floating in the air?",
+        "Think about the moment the grey mountain bike collides with the cyan minivan. What direction was the "
+        "mountain bike travelling in?"])
+    assert seen == ["Objects", "filter_attributes[red]", "filter_attributes[sedan]", "unique", "start",
+                    "query_moving_velocity"]
+    assert noticed == ["Objects", "filter_attributes[blue]", "filter_attributes[biplane]", "unique", "start",
+                       "is_floating"]
+    assert moment[-1] == "query_moving_direction" and "get_frame" in moment   # the moment the context pictures
+    # a claim's tag is no check-in before a question
+    assert check_ins_stated(tokenize("the cyan one was standing still at the start, right? Or no?"))[1] == ()

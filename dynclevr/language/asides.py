@@ -171,6 +171,19 @@ ASKED_IN_DOUBT = {"if", "suppose", "had", "when", "?", "which", "what", "how", "
                   "hovered", "float", "floats", "floated"}
 
 
+# what an apology before the question leads into ('Sorry to ask a what-if, but if ...', '... but imagine ...')
+APOLOGY_THEN = {"if", "imagine", "suppose", "say", "picture", "had", "after", "once", "let", "let's"}
+# a courtesy said first ('If it's okay to ask, ...', 'If it isn't too much trouble, ...', 'If you wouldn't mind
+# guessing, ...')
+POLITE_IF = re.compile(r"^(?:if (?:it (?:' s |is )(?:not )?(?:too much (?:trouble|bother)|(?:ok|okay|alright|fine|all "
+                       r"right))(?: (?:to|for) [a-z ]+?)?|you (?:do not|would not|don ' t) mind(?: [a-z]+ing)?"
+                       r"|i (?:may|might)(?: ask)?|you (?:please|can|could)) , )")
+APOLOGISING = {"sorry", "silly", "dumb", "stupid", "apologies", "apologise", "apologize", "forgive", "excuse",
+               "pardon", "basic", "obvious"}   # ('This might be a silly one, sorry, but ...': 'one' is no vehicle)
+SOFTENED = {"was", "is", "were", "are", "did", "does", "do", "will", "has", "had"}   # not 'could', 'might', 'would'
+SOFTENERS = {"possibly", "perhaps", "probably", "maybe"}
+
+
 def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'not sure , but did the sedan hit the bus ?' and 'sorry if this is a silly question , but does ...' -> 'did the
     sedan hit the bus ?', 'does ...'; 'was it slower , or am i misremembering ?' -> 'was it slower ?'; '...; is that
@@ -184,15 +197,31 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     undoubted = NAMING | ASKED_IN_DOUBT | UNNAMED | START_WORDS | MOTION_WORDS | AFLOAT_SAID | END_WORDS
     # an apology before the question needs no 'I' ('sorry if this is a silly question , but does ...')
     unapologetic = NAMING | GENERIC_NOUNS | START_WORDS | MOTION_WORDS | MOTION_DESCRIPTIONS | FLOATING_WORDS
-    apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in QUESTION_OPENERS
+    apology = lambda k, n: n == 2 and out[k + 1] == "but" and out[k + 2:k + 3] and out[k + 2] in (
+        QUESTION_OPENERS | TIME_OPENERS | APOLOGY_THEN)
     doubted = lambda said: next((opened(said)[len(v):] for v in VIEWER_DOUBTS if opened(said)[:len(v)] == list(v)),
                                 said)
     cut = max((k + n for k, n in ends if (first_person(out[:k]) and not undoubted & set(doubted(out[:k]))
-                                          or apology(k, n) and not unapologetic & set(out[:k]))
+                                          or apology(k, n) and (not unapologetic & set(out[:k]) or APOLOGISING
+                                                                & set(out[:k]) and not OBJECT_WORDS & set(out[:k])))
                and not asks_impact(out[:k]) and out[k + n:]), default=None)
     if cut is not None:
         read.append((" ".join(out[:cut]), "nothing, a doubt"))
         out = out[cut:]
+    polite = POLITE_IF.match(" ".join(out))
+    if polite and not NAMING & set(polite.group(0).split()):
+        read.append((polite.group(0).strip(), "nothing, a courtesy"))
+        out = out[len(polite.group(0).split()):]
+    # a shy speaker's softener in a question of fact ('was the cruiser possibly going fast ...', 'is it kind of
+    # slow'): not what could happen, which 'could' or 'might' ask
+    soft = [k for k, w in enumerate(out) if out[:1] and out[0] in SOFTENED and k > 1 and (
+        w in SOFTENERS or out[k:k + 2] in (["kind", "of"], ["sort", "of"]) and out[k + 2:k + 3] and
+        out[k + 2] in SPEED_CLASS_WORDS | STATIC_SAID | MOTION_WORDS)]
+    if soft:
+        k = soft[0]
+        n = 1 + (out[k] in ("kind", "sort"))
+        read.append((" ".join(out[k:k + n]), "nothing, a softener"))
+        out = out[:k] + out[k + n:]
     if out[-1:] == ["?"]:
         doubt = next((k for k in range(1, len(out) - 3) if out[k:k + 2] == [",", "or"] and out[k + 2] in DOUBTING
                       and "i" in out[k + 2:k + 5] and not NAMING & set(out[k:])), None)

@@ -402,6 +402,49 @@ def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
     return end, named
 
 
+# A tutor's check-in before the question ('You saw the red sedan at the very start, didn't you? How fast ...?',
+# 'Did you notice the blue biplane at the beginning? Was it floating?', 'Remember when the bus hit the car? ...'):
+# asked only to be agreed with, it is context, said as a statement
+CHECK_OPENERS = sorted(((*you, seen) for you in (("did", "you"), ("you",), ("do", "you"), ("can", "you"), ())
+                        for seen in ("see", "seen", "saw", "notice", "noticed", "spot", "spotted", "catch", "caught",
+                                     "remember", "recall") if you or seen in ("remember", "recall", "notice")),
+                       key=len, reverse=True)
+CHECK_TAGS = ((",", "right"), (",", "did", "not", "you"), (",", "do", "not", "you"), (",", "yes"), (",", "remember"),
+              (",", "ok"), (",", "okay"), (",", "yeah"), (",", "is", "not", "it"), (",", "does", "not", "it"),
+              (",", "did", "not", "it"), (",", "was", "not", "it"), (",", "correct"))
+TURN_WORDS = {"your", "now", "over", "you", "if", "had", "tell"}
+TURN_LABELS = (("your", "turn"), ("now", "your", "turn"), ("over", "to", "you"), ("you", "try"))
+
+
+def check_ins_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """Each sentence before the question that only checks what was seen (`CHECK_OPENERS`, `CHECK_TAGS`) said as a
+    statement of it; a label handing the question over ('Your turn -') dropped. With the words read so, or the words
+    as they are and ()."""
+    spans = _sentence_spans(words)
+    if len(spans) < 2 or words[-1] != "?" or not _opening(words[spans[-1][0]:])[:1] or \
+            _opening(words[spans[-1][0]:])[0] not in QUESTION_OPENERS | TIME_OPENERS | TURN_WORDS:
+        return words, ()   # (the question itself, not a tag after a claim: '..., right? Or no?')
+    out, read = [], []
+    for n, (a, b) in enumerate(spans):
+        sentence = words[a:b]
+        if n < len(spans) - 1 and sentence[-1] == "?" and (mentions(sentence) or asks_impact(sentence)):
+            opened = next((o for o in CHECK_OPENERS if tuple(sentence[:len(o)]) == o), ())
+            opened += ("when",) * (opened[-1:] in (("remember",), ("recall",)) and sentence[len(opened):][:1] ==
+                                   ["when"])
+            tag = next((t for t in CHECK_TAGS if tuple(sentence[-1 - len(t):-1]) == t), ())
+            if opened or tag:
+                stated = sentence[len(opened) - (opened[-1:] == ("when",)):len(sentence) - 1 - len(tag)] + ["."]
+                read.append((" ".join(sentence), " ".join(stated)))
+                sentence = stated
+        label = next((t for t in TURN_LABELS if tuple(sentence[:len(t)]) == t and sentence[len(t):len(t) + 1]
+                      and sentence[len(t)] in (":", "-", ",")), None)
+        if label:
+            read.append((" ".join(sentence[:len(label) + 1]), "nothing, a label"))
+            sentence = sentence[len(label) + 1:]
+        out += sentence
+    return (out, tuple(read)) if read else (words, ())
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
@@ -546,8 +589,15 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         then = _at(out, THEN_SAID)
         impact = _at(out, IMPACT_MOMENTS)
         own = {next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(out)}
+        # a sentence that is a moment alone ('Think about the moment the bike hits the van.', read 'at the moment
+        # the bike hits the van .'; 'Remember when the bus bumped into the car?'): the question's time, where it
+        # says none
+        pictured = not then and not impact and not (timed & set(out) or asks_impact(out)) and \
+            _opening(context[-1])[:1] in (["at"], ["when"], ["remember"]) and asks_impact(context[-1])
         if then and not (timed & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
             moment, (k, p) = _moment(context, fullest), then
+        elif pictured:
+            moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
         elif impact and len(own) == 1:
             moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
         else:

@@ -65,8 +65,9 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       reversed_reading, size_unread, speed_unsaid, still_continuing, time_unasked,
                                       uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
-from dynclevr.language.context import (afterthoughts_read, closing_mark_added, context_as_question, impact_said_first,
-                                       scenario_as_asked, settings_as_imagined, told_otherwise_as_imagined)
+from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
+                                       impact_said_first, scenario_as_asked, settings_as_imagined,
+                                       told_otherwise_as_imagined)
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
                                           corefer, delexicalise, described_as_named, description_as_said,
@@ -79,8 +80,8 @@ from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW
                                         unknown_property, _unknown_vehicle)
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, colour_clause_as_named, corrections_starred,
-                                       glosses_read, homophones_as_said, quoted_question, shorthand_as_said,
-                                       spelt_by_ear, worksheet_as_said)
+                                       creole_as_said, glosses_read, homophones_as_said, quoted_question,
+                                       shorthand_as_said, spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
@@ -303,6 +304,8 @@ class QuestionParser:
         starred += archaic + relayed
         words, printed = worksheet_as_said(words)
         words, shorthand = shorthand_as_said(words)
+        words, creole = creole_as_said(words)
+        shorthand += creole
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
         words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
@@ -335,7 +338,9 @@ class QuestionParser:
         words, kind = type_of_category_as_vehicle(words)
         words, restated = restated_dropped(words)
         words = request_after_setting(words)
+        words, checked = check_ins_stated(words)
         words, context = context_as_question(words, self.known)
+        context = checked + context
         context = prompted + kind + restated + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)

@@ -312,7 +312,9 @@ PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "
                  ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"],
                  # a learner's comparative of a place ('which one is more close to the camera?' was read as faster)
                  *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"],
-                 *(["parking", w] for w in ("spot", "space", "lot", "bay")))
+                 *(["parking", w] for w in ("spot", "space", "lot", "bay")),
+                 # a side of the picture, as learners say it ('in left or in right side?')
+                 *([s, "side"] for s in ("left", "right")), ["in", "left"], ["in", "right"])
 
 
 # a video that goes on further is a later time, not a place ('if video would continue further, ...')

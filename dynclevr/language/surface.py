@@ -13,7 +13,7 @@ import unicodedata
 from difflib import SequenceMatcher
 
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, phrase_table, phrases_as_said
 from dynclevr.language.tokenize import SPELLINGS
 from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
@@ -391,6 +391,61 @@ def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tu
     return words, ()
 
 
+# English-based creoles and pidgins (Nigerian Pidgin, Jamaican Patois, Hawaiian Pidgin, Singlish) as written: read
+# only in a question that has one of their own function words (`CREOLE_MARKERS`), so that standard English 'stay',
+# 'for', 'a', 'pass' and 'jam' keep their meanings elsewhere
+CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "them", "dan": "than", "wetin": "what",
+                "wah": "what", "wat": "what", "weh": "that", "wey": "that", "inna": "in", "nuh": "not", "mo": "more",
+                "afta": "after", "ting": "thing", "anyting": "anything", "someting": "something", "wit": "with",
+                "woulda": "would", "abi": "or", "bumbye": "later", "langgar": "collide", "lick": "hit",
+                "demself": "each other", "e": "it", "bin": "had", "dey": "is"}
+CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
+                  "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg"}
+CREOLE_PHRASES = phrase_table([
+    (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
+    (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
+    *(((f, s), ("at", "the", s)) for f in ("for", "a") for s in ("beginning", "start")),
+    (("for", "air"), ("in", "the", "air")), (("for", "di", "video"), ("in", "the", "video")),
+    (("for", "middle"), ("partway",)), (("e", "for"), ("it", "would")), (("for", "still"), ("would", "still")),
+    *(((a, "pass"), (b, "than")) for a, b in (("slow", "slower"), ("fast", "faster"))),
+    *((("a", v), ("is", v + "ing" if v[-1] != "e" else v[:-1] + "ing")) for v in (
+        "go", "move", "head", "hover", "speed", "float", "drive")),
+    (("one", "place"), ("still",)), (("mo", "fast"), ("faster",)), (("mo", "slow"), ("slower",)),
+    (("beginning", "time"), ("at", "the", "beginning")), (("kind", "a"), ("kind", "of"))])
+
+
+def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'di blue car did a go faster dan di green bus a di start ?' -> 'the blue car did go faster than the green bus
+    at the start ?': a creole's function words as standard English says them (`CREOLE_WORDS`, `CREOLE_PHRASES`);
+    Hawaiian 'wen' is 'when' before its clause's subject and a past tense's mark before a verb, 'stay' before a
+    participle is 'is', Pidgin 'jam' before what is hit is 'hit', a coloured 'motor' is a car. With the words read
+    so, or the words as they are and ()."""
+    if not CREOLE_MARKERS & set(words):
+        return words, ()
+    out, read = phrases_as_said(words, CREOLE_PHRASES)
+    read, said = list(read), []
+    for k, w in enumerate(out):
+        after = out[k + 1] if k + 1 < len(out) else ""
+        before = said[-1] if said else ""
+        if w == "wen":
+            w = "when" if after in CREOLE_WORDS or after in DETERMINERS | NAMING | {"it", "they", "he", "she"} else ""
+        elif w == "stay" and (after.endswith("ing") or after in ("parked", "still")) and before not in (
+                "to", "would", "will", "did", "does"):
+            w = "is"
+        elif w == "jam" and (after in CREOLE_WORDS or after in DETERMINERS | {"anything", "something", "it"}):
+            w = "hit"
+        elif w == "jam" and (before in ("go", "will", "would", "", ",") or after in (",", "later", "?", "")):
+            w = "collide"
+        elif w == "motor" and before in COLOR_NAMES:
+            w = "car"
+        else:
+            w = CREOLE_WORDS.get(w, w)
+        if w != out[k]:
+            read.append((out[k], w or "nothing, a past tense's mark"))
+        said += w.split()
+    return said, tuple(read)
+
+
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
     (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With
@@ -471,7 +526,7 @@ SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pic
                                             "motorcycle"}
 # ... and never from a word that names what no vehicle is ('white', 'tractor'), nor from a real word said like a
 # vehicle's ('the plain red car')
-NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great"}
+NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky"}
 NAME_SAID = SPELT_BY_EAR - set(COLOR_NAMES)
 BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
 NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS

@@ -232,12 +232,14 @@ def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     for k in range(len(words)):
         said = next((p for p in PICTURING if words[k:k + len(p)] == p), None)
         j = k + len(said) if said else 0
-        if said and (k == 0 or words[k - 1] in CLAUSE_SEPARATORS) and words[j:j + 1] in (["the"], ["that"], ["this"]) \
+        first = k - (k > 0 and words[k - 1] in ("now", "so", "ok", "okay", "and", "just", "first"))
+        if said and (first == 0 or words[first - 1] in CLAUSE_SEPARATORS) and \
+                words[j:j + 1] in (["the"], ["that"], ["this"]) \
                 and words[j + 1:j + 2] and words[j + 1] in MOMENTS and words[j + 2:j + 3] != ["of"]:
             if words[j] != "the" and words[j + 2:j + 3] in ([","], ["."], ["!"], [";"], [":"]):
                 # 'the bus hits the car . think about that moment . is ...': the moment said before, then
-                return (words[:k] + ["at", "that", "moment", ","] + words[j + 3:],
-                        ((" ".join(words[k:j + 3]), "at that moment ,"),))
-            return (words[:k] + ["at", "the", "moment"] + words[j + 2:],
-                    ((" ".join(words[k:j + 2]), "at the moment"),))
+                return (words[:first] + ["at", "that", "moment", ","] + words[j + 3:],
+                        ((" ".join(words[first:j + 3]), "at that moment ,"),))
+            return (words[:first] + ["at", "the", "moment"] + words[j + 2:],
+                    ((" ".join(words[first:j + 2]), "at the moment"),))
     return words, ()

@@ -452,9 +452,9 @@ IDIOMS = phrase_table({
     # learners' 'stands on place', 'arrives in view first time', 'to which side is it driving'
     **{(v, p, "place"): (v, "still") for v in ("stand", "stands", "standing", "stood", "stay", "stays", "staying",
                                                  "stayed") for p in ("on", "in", "at")},
-    **{("view", "first", "time"): ("view", "for", "the", "first", "time"),
-       ("sight", "first", "time"): ("sight", "for", "the", "first", "time"),
-       ("to", "which", "side"): ("in", "which", "direction")}, **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
+    **{(v, "first", "time"): (v, "for", "the", "first", "time") for v in (
+        "view", "sight", "enters", "enter", "entered", "appears", "appear", "appeared", "arrives", "arrived")},
+    ("to", "which", "side"): ("in", "which", "direction"), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
     # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's
