@@ -37,9 +37,9 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         premised, properties_joined, quantified, questions_joined, ranking,
                                         reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
                                         times_joined)
-from dynclevr.language.surface import (archaic_as_said, corrections_starred, creole_as_said, glosses_read,
-                                       homophones_as_said, lettered_options, quoted_question, shorthand_as_said,
-                                       spelt_by_ear, worksheet_as_said)
+from dynclevr.language.surface import (archaic_as_said, code_switched_as_said, corrections_starred, creole_as_said,
+                                       glosses_read, homophones_as_said, lettered_options, quoted_question,
+                                       shorthand_as_said, spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
@@ -3222,3 +3222,31 @@ def test_a_tutor_s_check_ins_are_context():
     assert moment[-1] == "query_moving_direction" and "get_frame" in moment   # the moment the context pictures
     # a claim's tag is no check-in before a question
     assert check_ins_stated(tokenize("the cyan one was standing still at the start, right? Or no?"))[1] == ()
+
+
+def test_a_bilingual_speaker_s_other_language():
+    assert tokenize("début vídeo") == ["debut", "video"]   # accents folded
+    assert code_switched_as_said(tokenize("Est-ce que the red car était fast au début?"))[0] == \
+        tokenize("the red car was fast at the start?")
+    said = tokenize("Also, the red car was fast, ma'am?")   # English 'also' and 'ma' stay, with no other word
+    assert code_switched_as_said(said) == (said, ())
+    parser = QuestionParser.load()
+    colour, = parser.parse_batch(["Qual é a cor of the vehicle floating no começo, tipo?"])
+    assert colour == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    # a clause in a language the parser does not read is no digression: it may say when
+    assert_refused(parser, ["Quando eles batem, o red bicycle tava faster than the school bus, tipo?",
+                            "the red car zai zuihou is it static ma?"])
+
+
+def test_a_promo_s_teasers_and_a_signer_s_gloss():
+    parser = QuestionParser.load()
+    teased, called = parser.parse_batch([
+        "Will sparks fly?! Do the red sedan and the yellow school bus crash into each other at any point? You tell us!",
+        "Speed demon spotted! What kind of vehicle is zooming along fast at the start? Name it to claim it!"])
+    assert teased[0] == "Events" and teased[-1] == "exist"   # in the video, not after it
+    assert called == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    then, = parser.parse_batch(["SCHOOL BUS, BLUE ONE, BUMP. THAT TIME SCHOOL BUS STAND STILL, NOT MOVE, TRUE?"])
+    assert then[-1] == "is_static" and "get_frame" in then
+    assert_refused(parser, {"GRAY AIRLINER FIRST COME-IN SCREEN, MOVE HOW FAST?": "comes into view",
+                            "Red sedan crash blue bus, what second happen?": "when something happens",
+                            "Yellow scooter, video start, where located, left or right?": "where a vehicle is"})

@@ -894,6 +894,29 @@ def _headline(heading: list[str], question: list[str]) -> bool:
         bool(runs) and runs[0][0] < pronoun and (asks_impact(question) or not asks_impact(heading))
 
 
+def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A promo's teaser asked before the question ('Will sparks fly?! Do the red sedan and the bus crash ...?', 'Who's
+    got the edge? In the opening seconds, ...?'): a first short question that names no vehicle, no time and no
+    collision, before a question that names one, asks nothing itself. With the words read so, or the words as they
+    are and ()."""
+    read = []
+    # ... and a call to answer after it ('Name it to claim it!', 'Spill it!', 'Only true fans know!')
+    last = len(words) - 1 - words[::-1].index("?") if "?" in words else None
+    if last is not None and words[-1:] == ["!"] and 0 < len(words) - last - 1 <= 9 and \
+            not set(words[last + 1:]) & (NAMING | START_WORDS | END_WORDS) and not asks_impact(words[last + 1:]):
+        read.append((" ".join(words[last + 1:]), "nothing, a call to answer"))
+        words = words[:last + 1]
+    # (a motion or a collision it may say: 'Speed demon spotted! What kind of vehicle is zooming ...?')
+    end = next((k for k, w in enumerate(words) if w in ("?", "!")), None)
+    if end is None or not 0 < end <= 6 or "?" not in words[end + 1:] or not mentions(words[end + 1:]) or \
+            set(words[:end]) & (NAMING | GENERIC_NOUNS | START_WORDS | END_WORDS | {"it", "they", "then", "that"}) \
+            or asks_impact(words[:end]) and not asks_impact(words[end + 1:]):
+        return (words, tuple(read)) if read else (words, ())
+    while words[end + 1:end + 2] in (["!"], ["?"]):
+        end += 1
+    return words[end + 1:], (*read, (" ".join(words[:end + 1]), "nothing, a teaser"))
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -1104,7 +1127,7 @@ SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS 
              "time", "point", "engine", "ground", "air", "sky", "future", "next", "last", "will", "gonna", "going",
              "frames", "from", "past", "beyond", "freeze", "afterwards", "afterward", "hereafter", "eventually",
              "through", "scale", "state", "tell", "give", "name", "describe", "identify", "determine", "report",
-             "find", "list"}
+             "find", "list", "twice", "thrice", "again", "repeatedly"}
           | {w for t in LATER_TIMES for w in t} | START_ADJECTIVES | DURATIONS | NUMBERS
           | {"partway", "halfway", "midway", "middle", "stop", "stopped", "halted", "paused", "frozen", "froze",
              "freezes", "cut", "cuts", "terminates", "terminated", "truncated"})

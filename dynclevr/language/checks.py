@@ -33,12 +33,12 @@ from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
-                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMPARING, COMPARISONS, CONDITION_LABELS,
-                                     DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS, FLOATING_WORDS,
-                                     FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS,
-                                     MOTION_KINDS, MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS,
-                                     REST_WORDS, RESTING, REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID,
-                                     STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS, asks_impact, _head)
+                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS, COMPARING, COMPARISONS,
+                                     CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS,
+                                     FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES,
+                                     MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID,
+                                     QUERY_NOUNS, REST_WORDS, RESTING, REVERSERS, SPEED_CLASS_WORDS, START_WORDS,
+                                     STATIC_SAID, STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS, asks_impact, _head)
 from dynclevr.questions.programs import OPS
 
 
@@ -233,6 +233,11 @@ def time_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading at the start is not the question's ('' when it is): the question says no word of the start but
     another time ('in the middle of the video, is the red car fast?', 'after two seconds', 'at frame 50', 'ever'),
     which the decoder read as the start."""
+    if "start" in program and not START_WORDS & set(words) and any(
+            w == "first" and COMES_IN_WORDS & set(words[k + 1:k + 3]) for k, w in enumerate(words)):
+        return ("the question asks when a vehicle comes into view ('first ... " + next(
+            v for k, w in enumerate(words) if w == "first" for v in words[k + 1:k + 3] if v in COMES_IN_WORDS)
+                + "'), but its nearest reading asks at the start: ask how fast it moves when it first comes into view")
     if "start" not in program or START_WORDS & set(words) or "first" in words:
         return ""
     # (or when it comes into view: 'does the car come into view fast?' was read at the start)

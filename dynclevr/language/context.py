@@ -13,9 +13,9 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_end
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
-                                     COPULAS, DETERMINERS, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID, IMAGINING,
-                                     IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
-                                     NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS,
+                                     COPULAS, DETERMINERS, END_TIMES, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID,
+                                     IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS,
+                                     NAMING, NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS,
                                      SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED,
                                      UNNAMED, asks_impact, _at)
 
@@ -61,6 +61,8 @@ THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "
                if (p, d) != ("at", "the") for very in ((), ("very",), ("exact",), ("precise",))
                for m in ("moment", "instant", "point", "event", "collision", "crash", "impact")),
              *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
+             # a signer's gloss ('... BUMP. THAT TIME SCHOOL BUS STAND STILL, TRUE?')
+             ("that", "time"), ("that", "moment"), ("that", "instant"),
              ("then",))
 # a collision said without its partner ('At the moment of impact, how fast is the bike?'), the context's
 IMPACT_NOUNS = ("impact", "crash", "collision", "contact", "hit", "smash", "bump")
@@ -603,6 +605,11 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         else:
             moment, k, p = [], 0, ()
             started = next((s for s in reversed(context) if START_WORDS & set(s)), None)
+            # ... and the end, which no question asks: the whole text is read, and refused ('the red car zai zuihou
+            # is it static ma?', 'zuihou' said 'at the end')
+            if not started and not (timed & set(out) or asks_impact(out)) and any(
+                    s[k:k + len(e)] == e for s in context for k in range(len(s)) for e in END_TIMES):
+                return words, ()
             if started and not (timed & set(out) or asks_impact(out)):
                 out = out[:-1] + ["at", "the", "start", "?"]
                 read.append((" ".join(started), "at the start"))

@@ -52,9 +52,9 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
                                       dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
-                                      hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
-                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read,
-                                      wagers_read)
+                                      hooks_dropped, hypothesis_as_asked, interjections_dropped, owners_dropped,
+                                      preamble_dropped, prompt_dropped, radio_as_asked, requested_as_asked,
+                                      ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
                                       compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
@@ -79,9 +79,9 @@ from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW
                                         several_asked, speed_measure, speed_measured, speeds_alike, times_joined,
                                         unknown_property, _unknown_vehicle)
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
-from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, colour_clause_as_named, corrections_starred,
-                                       creole_as_said, glosses_read, homophones_as_said, quoted_question,
-                                       shorthand_as_said, spelt_by_ear, worksheet_as_said)
+from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
+                                       corrections_starred, creole_as_said, glosses_read, homophones_as_said,
+                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
@@ -305,7 +305,8 @@ class QuestionParser:
         words, printed = worksheet_as_said(words)
         words, shorthand = shorthand_as_said(words)
         words, creole = creole_as_said(words)
-        shorthand += creole
+        words, switched = code_switched_as_said(words)
+        shorthand += creole + switched
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
         words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
@@ -348,7 +349,9 @@ class QuestionParser:
         words, owned = owners_dropped(words)
         words, spoken_to = addressed_as_named(words)
         owned += spoken_to
+        words, teased = hooks_dropped(words)
         words, labelled = asides_dropped(words)
+        labelled = teased + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
         words, idioms = idioms_as_said(words)

@@ -140,8 +140,10 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     as_said, what_said = _asked(said)
     labelled, _ = _asked(said[len(said) - said[::-1].index(":"):]) if ":" in said else (None, "")
     # 'Replay time: at what second does ...', a learner's 'Blue bus and green car collide at what second?'
+    # (and 'what second' asked anywhere: a signer's 'Red sedan crash blue bus, what second happen?')
     if {asked, as_said, labelled} & TIME_ASKED or any(
             a in ("at", "in", "on") and b in ASKING and c in TIME_ASKED for a, b, c in zip(said, said[1:], said[2:])) \
+            or any(a in ("what", "which") and b in TIME_ASKED - {"when"} for a, b in zip(said, said[1:])) \
             or any(a == "time" and (b, c) in (("in", "seconds"), ("in", "moments"), ("in", "frames"), ("of", "first"),
                                               ("of", "contact"), ("of", "impact"), ("of", "collision"))
                    and not {"at", "in", "on", "by"} & set(said[max(k - 2, 0):k])   # 'at the time of impact' is at it
@@ -314,7 +316,8 @@ PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "
                  *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"],
                  *(["parking", w] for w in ("spot", "space", "lot", "bay")),
                  # a side of the picture, as learners say it ('in left or in right side?')
-                 *([s, "side"] for s in ("left", "right")), ["in", "left"], ["in", "right"])
+                 *([s, "side"] for s in ("left", "right")), ["in", "left"], ["in", "right"], ["located"],
+                 ["location"])
 
 
 # a video that goes on further is a later time, not a place ('if video would continue further, ...')

@@ -446,6 +446,49 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return said, tuple(read)
 
 
+# A bilingual speaker's other language between English words (French, German, Portuguese, Mandarin in pinyin,
+# Arabizi): its words of time, joining and comparing as English says them, its tags and fillers dropped; read only
+# in a question that has one of its own words (`SWITCH_MARKERS`), so English 'also', 'ma' or 'que' stay as they are
+SWITCH_PHRASES = phrase_table([
+    *(((*p,), ("at", "the", "start")) for p in (
+        ("au", "debut"), ("au", "tout", "debut"), ("am", "anfang"), ("no", "comeco"), ("zai", "kaishi", "de", "shihou"),
+        ("zai", "kaishi"), ("ganggang", "kaishi"))),
+    *(((*p,), ("from", "the", "start")) for p in (
+        ("depuis", "le", "debut"), ("von", "anfang", "an"), ("desde", "o", "inicio"), ("desde", "o", "comeco"),
+        ("cong", "kaishi", "jiu"), ("cong", "kaishi"))),
+    *(((*p,), ("in", "the", "video")) for p in (("dans", "la", "video"), ("im", "video"), ("no", "video"))),
+    (("est", "-", "ce", "qu", "'"), ()), (("est", "-", "ce", "que"), ()), (("du", "coup"), ()), (("hui", "bu", "hui"),
+                                                                                            ("will",)),
+    (("you", "mei", "you"), ("did",)), (("shi", "bu", "shi"), ("is",)), (("la", "video"), ("the", "video")),
+    (("o", "video"), ("the", "video")), (("apres",), ("afterwards",)), (("depois",), ("afterwards",)),
+    *(((w,), ()) for w in ("genre", "tipo", "ne", "halt", "ma", "le", "ya3ni", "wallah", "yalla", "khalas", "oder")),
+    *(((w,), ("when",)) for w in ("quand", "quando", "wenn")), (("ruguo",), ("if",)), (("zhuang",), ("hit",)),
+    *(((w,), ("or",)) for w in ("ou", "haishi")), *(((w,), ("is",)) for w in ("ist", "est")),
+    *(((w,), ("was",)) for w in ("tava", "era", "etait", "estava", "war")),
+    *(((c, w), (c, "than")) for c in ("faster", "slower", "quicker") for w in ("que", "als", "do", "bi")),
+    (("qual", "e", "a", "cor"), ("what", "is", "the", "color")), (("a", "cor"), ("the", "color")),
+    (("welche", "farbe", "hat"), ("what", "color", "is")), (("welche", "farbe"), ("what", "color")),
+    (("welche", "art"), ("what", "kind", "of")), (("was", "fur", "ein"), ("what", "kind", "of")),
+    (("quelle", "couleur"), ("what", "color")), (("quel", "type", "de"), ("what", "kind", "of")),
+    # a time said in the other language is read, so that one the questions do not ask is refused, not dropped
+    *(((*p,), ("at", "the", "end")) for p in (("zai", "zuihou"), ("zuihou",), ("a", "la", "fin"), ("am", "ende"),
+                                              ("no", "final"))),
+    *(((*p,), ("in", "the", "middle")) for p in (("zai", "zhongjian"), ("au", "milieu"), ("in", "der", "mitte"),
+                                                 ("no", "meio")))])
+SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
+                  "est", "quand", "quando", "wenn", "ist", "tava", "etait", "estava", "haishi", "ruguo", "zhuang",
+                  "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual", "welche",
+                  "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio"}
+
+
+def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'est-ce que the red car etait fast au debut ?' -> 'the red car was fast at the start ?' (`SWITCH_PHRASES`).
+    With the words read so, or the words as they are and ()."""
+    if not SWITCH_MARKERS & set(words):
+        return words, ()
+    return phrases_as_said(words, SWITCH_PHRASES)
+
+
 def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it fast ? y/n' -> 'is it fast ?', 'collides w/ the bus' -> 'collides with the bus', 'the car + the bus'
     (or 'vs') -> 'the car and the bus', 'its speed (static/slow/fast)' -> 'its speed : static , slow or fast'. With

@@ -43,6 +43,8 @@ def tokenize(text: str) -> list[str]:
     """'Is the grey SUV moving?' -> ['is', 'the', 'gray', 'suv', 'moving', '?']; "isn't" -> ['is', 'not']. Never
     raises on a str."""
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
+    # accents folded ('début', 'vídeo', 'naïve'): the parser's words are written without them
+    text = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
     text = _MENTION.sub(" ", text)

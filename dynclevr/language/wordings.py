@@ -448,13 +448,16 @@ IDIOMS = phrase_table({
     **{(pootle, "along"): (moving, "slowly") for pootle, moving in (
         ("pootling", "moving"), ("pootles", "moves"), ("pootled", "moved"), ("pootle", "move"))},
     # Gen-Z's opener and 'giving' ('ok but ...', 'is it giving parked, slow or zooming'), 'the first few seconds'
-    ("ok", "but"): (), ("okay", "but"): (), ("this", "here"): ("this",),
+    ("ok", "but"): (), ("okay", "but"): (), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
+    # a dialect's 'this here', a promo's 'kicking off at top speed'
+    ("this", "here"): ("this",), ("kicking", "off"): ("starting",),
     # learners' 'stands on place', 'arrives in view first time', 'to which side is it driving'
     **{(v, p, "place"): (v, "still") for v in ("stand", "stands", "standing", "stood", "stay", "stays", "staying",
                                                  "stayed") for p in ("on", "in", "at")},
     **{(v, "first", "time"): (v, "for", "the", "first", "time") for v in (
         "view", "sight", "enters", "enter", "entered", "appears", "appear", "appeared", "arrives", "arrived")},
-    ("to", "which", "side"): ("in", "which", "direction"), **{(be, "it", "giving"): (be, "it") for be in ("is", "was")},
+    ("to", "which", "side"): ("in", "which", "direction"),
+    ("fast", "more"): ("faster",), ("slow", "more"): ("slower",),   # a signer's gloss: 'CYAN CAR FAST MORE?'
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
     # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's
