@@ -38,8 +38,8 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
                                         times_joined)
 from dynclevr.language.surface import (archaic_as_said, code_switched_as_said, corrections_starred, creole_as_said,
-                                       glosses_read, homophones_as_said, lettered_options, quoted_question,
-                                       shorthand_as_said, spelt_by_ear, worksheet_as_said)
+                                       emoji_as_said, glosses_read, homophones_as_said, lettered_options,
+                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
@@ -3250,3 +3250,23 @@ def test_a_promo_s_teasers_and_a_signer_s_gloss():
     assert_refused(parser, {"GRAY AIRLINER FIRST COME-IN SCREEN, MOVE HOW FAST?": "comes into view",
                             "Red sedan crash blue bus, what second happen?": "when something happens",
                             "Yellow scooter, video start, where located, left or right?": "where a vehicle is"})
+
+
+def test_emoji_said_for_words_and_a_swipe_keyboard_s_words():
+    assert emoji_as_said(tokenize("is the 🔵 🚙 🛑 at the beginning?"))[0] == \
+        tokenize("is the blue suv static at the beginning?")
+    assert emoji_as_said(tokenize("🎬 how fast is it? 🛑 or 🐢 or 💨"))[0] == \
+        tokenize("at the start, how fast is it? static or slow or fast")
+    parser = QuestionParser.load()
+    scooter, crash, swiped = parser.parse_batch([
+        "what speed is the cyan 🛵 doing when the clip begins 🤔 parked, slow or fast?",
+        "when the ⚪ road bike 💥 the 🟡 🚗, was the road bike just standing there 🛑?",
+        "how fast was the yellow car going when it hot the purple bud"])
+    assert scooter == ["Objects", "filter_attributes[cyan]", "filter_attributes[scooter]", "unique", "start",
+                       "query_moving_velocity"]   # the emoji names the vehicle: never dropped as a decoration
+    assert crash[1:3] == ["filter_attributes[gray]", "filter_attributes[road_bike]"] and crash[-1] == "is_static"
+    assert "filter_attributes[bus]" in swiped and swiped[-1] == "query_moving_velocity"
+    # a colour the catalogue has not, said as an emoji, is refused like its word
+    assert_refused(parser, ["is the 🟠 🚗 moving fast at the start?"])
+    # a yes-or-no tag asks yes or no, never which
+    assert_refused(parser, ["When the grey pickup is colliding with red bicycle, fast he is going or not?"])

@@ -595,7 +595,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         # the bike hits the van .'; 'Remember when the bus bumped into the car?'): the question's time, where it
         # says none
         pictured = not then and not impact and not (timed & set(out) or asks_impact(out)) and \
-            _opening(context[-1])[:1] in (["at"], ["when"], ["remember"]) and asks_impact(context[-1])
+            (_opening(context[-1])[:1] in (["at"], ["when"], ["remember"]) or _opening(context[-1])[:2] in (
+                ["the", "moment"], ["the", "instant"])) and asks_impact(context[-1])
         if then and not (timed & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
             moment, (k, p) = _moment(context, fullest), then
         elif pictured:

@@ -80,8 +80,9 @@ from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW
                                         unknown_property, _unknown_vehicle)
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
-                                       corrections_starred, creole_as_said, glosses_read, homophones_as_said,
-                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
+                                       corrections_starred, creole_as_said, emoji_as_said, glosses_read,
+                                       homophones_as_said, quoted_question, shorthand_as_said, spelt_by_ear,
+                                       worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
@@ -303,7 +304,9 @@ class QuestionParser:
         words, relayed = quoted_question(words)
         starred += archaic + relayed
         words, printed = worksheet_as_said(words)
+        words, pictured_words = emoji_as_said(words)
         words, shorthand = shorthand_as_said(words)
+        shorthand = pictured_words + shorthand
         words, creole = creole_as_said(words)
         words, switched = code_switched_as_said(words)
         shorthand += creole + switched

@@ -391,6 +391,50 @@ def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tu
     return words, ()
 
 
+# Emoji said for words, as chat puts them ('is the 🔵 🚙 🛑 at the beginning?', 'when it 💥 into the red sedan'): a
+# colour's circle or heart, a vehicle's picture, a crash; a speed's picture where it stands for a word ('going 💨',
+# '🛑 or 🐢 or 💨?'), the start's or the cut's where the words say no time. Any other emoji only decorates.
+EMOJI_WORDS = {"🔴": "red", "❤": "red", "🔵": "blue", "💙": "blue", "🟢": "green", "💚": "green", "🟡": "yellow",
+               "💛": "yellow", "🟣": "purple", "💜": "purple", "🟤": "brown", "🤎": "brown", "⚪": "gray",
+               "\U0001fa76": "gray", "⚫": "black", "🖤": "black", "🟠": "orange", "🧡": "orange", "🤍": "white",
+               "🚗": "car", "🚘": "car", "🚕": "car", "🚙": "suv", "🚌": "bus", "🚍": "bus", "🚎": "bus",
+               "🏍": "motorbike", "🛵": "scooter", "🚲": "bicycle", "✈": "aeroplane", "🛩": "aeroplane",
+               "🛫": "aeroplane", "🛬": "aeroplane", "🛻": "pickup", "🚐": "minivan", "🚚": "truck", "🚁": "helicopter",
+               "🚜": "tractor", "🚑": "ambulance", "🚓": "police car", "🚒": "fire engine", "🚂": "train"}
+EMOJI_CLASSES = {"🛑": "static", "🐢": "slow", "🐌": "slow", "💨": "fast", "🚀": "fast", "⚡": "fast"}
+EMOJI_VERBS = {"is", "was", "are", "were", "be", "been", "being", "going", "moving", "goes", "went", "started",
+               "starts", "off", "or", ","}
+
+
+def emoji_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The emoji that say words (`EMOJI_WORDS`, `EMOJI_CLASSES`, '💥', '⏱️', '⏭️', '❓') read as those words.
+    With the words read so, or the words as they are and ()."""
+    out = [w for w in words if w != "\ufe0f"]   # (the emoji presentation selector)
+    if not set(out) & {*EMOJI_WORDS, *EMOJI_CLASSES, "💥", "⏱", "🎬", "⏭", "❓"}:
+        return words, ()
+    timed = bool(START_WORDS & set(out)) or "after" in out
+    said, read = [], []
+    for k, w in enumerate(out):
+        before, after = (said[-1] if said else ""), (out[k + 1] if k + 1 < len(out) else "")
+        word = EMOJI_WORDS.get(w)
+        if w in EMOJI_CLASSES and (before in EMOJI_VERBS | OBJECT_WORDS or after == "or"):
+            word = EMOJI_CLASSES[w]
+        elif w == "💥" and said and before not in ("?", "!", ".", ":"):
+            word = "crash"
+        elif w in ("⏱", "🎬") and not timed and not said:
+            word, timed = "at the start ,", True
+        elif w == "⏭" and not timed and not said:
+            word, timed = "after the video ends ,", True
+        elif w == "❓" and "?" not in out[k + 1:]:
+            word = "?"
+        if word is None:
+            said.append(w)
+            continue
+        read.append((w, word))
+        said += word.split()
+    return (said, tuple(read)) if read else (words, ())
+
+
 # English-based creoles and pidgins (Nigerian Pidgin, Jamaican Patois, Hawaiian Pidgin, Singlish) as written: read
 # only in a question that has one of their own function words (`CREOLE_MARKERS`), so that standard English 'stay',
 # 'for', 'a', 'pass' and 'jam' keep their meanings elsewhere

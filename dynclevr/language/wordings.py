@@ -458,6 +458,12 @@ IDIOMS = phrase_table({
         "view", "sight", "enters", "enter", "entered", "appears", "appear", "appeared", "arrives", "arrived")},
     ("to", "which", "side"): ("in", "which", "direction"),
     ("fast", "more"): ("faster",), ("slow", "more"): ("slower",),   # a signer's gloss: 'CYAN CAR FAST MORE?'
+    # South Asian learners' 'in beginning itself'; a guide's 'over the course of the film', 'compare, if you will, ...'
+    **{(w, "itself"): (w,) for w in ("start", "beginning", "starting", "begin", "first")},
+    **{("in", w, "itself"): ("at", "the", "start") for w in ("beginning", "start", "starting")},
+    **{("over", "the", "course", "of", "the", f): ("in", "the", "video") for f in (
+        "video", "clip", "film", "footage", "recording")},
+    (",", "if", "you", "will", ","): (",",),
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
     # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's

@@ -155,7 +155,9 @@ STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["froz
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
-                *(["'", "s", *been, p] for p in ("stopped", "halted", "paused", "frozen") for been in ((), ("been",))))
+                *(["'", "s", *been, p] for p in ("stopped", "halted", "paused", "frozen") for been in ((), ("been",))),
+                # learners' ('Video is stopping in the middle', 'Video is cut in between')
+                ["is", "stopping"], *([*v, "cut", "in", "between"] for v in ((), ("is",), ("was",))))
 START_ADJECTIVES = {"initial", "starting", "start", "beginning", "first", "opening"}
 REST_WORDS = {"static", "stationary", "still", "stop", "stops", "stopped", "stopping", "parked", "park", "rest",
               "motionless", "standing", "stand", "stands", "stood", "standstill", "halt", "halted", "idle", "stay",
