@@ -30,7 +30,7 @@ from dynclevr.language.checks import (anything_unasked, clock_unasked, collision
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
                                       motion_unfiltered, named_attribute, reversed_reading, speed_unsaid, time_unasked)
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, context_as_question,
-                                       impact_said_first, told_otherwise_as_imagined)
+                                       impact_said_first, told_otherwise_as_imagined, transcript_as_asked)
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, program_shape, synonyms,
                                      time_clause_last, well_formed)
 from dynclevr.language.refusals import (chained, checked_attribute, imagined_otherwise, ordered, otherwise_compared,
@@ -39,7 +39,8 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         times_joined)
 from dynclevr.language.surface import (archaic_as_said, code_switched_as_said, corrections_starred, creole_as_said,
                                        emoji_as_said, glosses_read, homophones_as_said, lettered_options,
-                                       quoted_question, shorthand_as_said, spelt_by_ear, worksheet_as_said)
+                                       quoted_question, shorthand_as_said, spelt_by_ear, telegram_as_said,
+                                       worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         class_as_asked, comparative_as_said, floating_plane_as_vehicle,
@@ -3270,3 +3271,29 @@ def test_emoji_said_for_words_and_a_swipe_keyboard_s_words():
     assert_refused(parser, ["is the 🟠 🚗 moving fast at the start?"])
     # a yes-or-no tag asks yes or no, never which
     assert_refused(parser, ["When the grey pickup is colliding with red bicycle, fast he is going or not?"])
+
+
+def test_a_telegram_a_pasted_chat_and_a_whiteboard_s_symbols():
+    assert telegram_as_said(tokenize("REQUEST ADVISE how fast the motorbike is going when it strikes the gray car "
+                                     "STOP"))[0] == \
+        tokenize("tell me how fast the motorbike is going when it strikes the gray car.")
+    said = tokenize("Does the red car ever stop?")   # 'stop' is a full stop only in a telegram
+    assert telegram_as_said(said) == (said, ())
+    assert transcript_as_asked(tokenize("Q1: the cyan bus. A1: yes, what about it? Q2: what does it hit?"))[0] == \
+        tokenize("the cyan bus. what does it hit?")
+    parser = QuestionParser.load()
+    wire, chat, setting = parser.parse_batch([
+        "FILM STOPPED PART WAY STOP WILL BLUE DOUBLE DECKER AND PURPLE CAR COLLIDE AFTERWARDS QUERY",
+        "User: hi, I'm watching the clip now. Assistant: Great, what would you like to know? User: how fast is the red "
+        "sedan going at the very start, static, slow or fast?",
+        "Set the yellow scooter's initial speed to fast. Does the yellow scooter then hit the purple sedan?"])
+    assert wire[0] == "futureEvents" and wire[-1] == "exist"
+    assert chat == ["Objects", "filter_attributes[red]", "filter_attributes[sedan]", "unique", "start",
+                    "query_moving_velocity"]
+    assert setting[4] == "Counterfactual_moving_fast"   # a setting said alone is a condition, not what happened
+    # a time named by a symbol, a count and a yes-or-no instruction after a reading of which are refused
+    assert_refused(parser, {"for t > T_cut: does the jet hit anything?": "symbol",
+                            "Let t_c be the moment the cyan one and the brown one collide. Is the cyan one standing "
+                            "still (v = 0) at t_c?": "symbol",
+                            "Number of aeroplanes floating at the start = ?": "count",
+                            "v(yellow motorbike, t=0) = fast? yes or no.": "yes or no"})

@@ -340,6 +340,18 @@ PART_ORDINALS = {"first", "last", "final", "next", "second", "latter"}
 PART_NOUNS = {"half", "part", "few", "moments", "moment"}
 
 
+def time_symbol_said(words: list[str]) -> str:
+    """Why the question (its words as written) cannot be read ('' when it can): it asks at a time named by a symbol
+    ('at t_c', 'for t > T_cut', 'at t*'), which the rules would drop as a decoration or a remark and the decoder
+    read at the start or in the video; 't = 0', 't0' and 't_0' are the start, which the parser reads."""
+    symbol = next((f"t {b}" for k, (a, b) in enumerate(zip(words, words[1:])) if a == "t" and (
+        b in ("*", ">", "<", "'") or b == "_" and words[k + 2:k + 3] not in (["0"], ["start"]))), None)
+    if symbol is None:
+        return ""
+    return (f"the question asks at a time named by a symbol ('{symbol}'), which no question here reads: say it in "
+            "words ('at the start', 'when the red car hits the bus', 'after the video ends')")
+
+
 def clock_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
     within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'), or
@@ -537,7 +549,7 @@ def answer_form_unmatched(read_as: tuple[tuple[str, str], ...], program: list[st
     @ start = not moving? (y/n)'), and its nearest reading asks which."""
     # (or a yes-or-no tag: a learner's 'fast he is going or not?')
     if any(why == "nothing, an answer's form" or said.strip(" ,?") in ("or not", "or no", "or nah") and why == "?"
-           for said, why in read_as) and OPS[operation(program[-1])].output is str:
+           or why.startswith("nothing") and {"yes", "no"} <= set(said.split()) for said, why in read_as) and OPS[operation(program[-1])].output is str:
         return ("the question asks yes or no (its answer's form), but its nearest reading asks which (a speed, a "
                 "direction, a colour or a type)")
     return ""

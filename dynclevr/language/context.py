@@ -8,6 +8,8 @@ collision said first without its pair is said with the two vehicles (`impact_sai
 
 from __future__ import annotations
 
+import re
+
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
@@ -404,6 +406,32 @@ def coordinated_subject(said: list[str]) -> tuple[int, list] | None:
     return end, named
 
 
+# A chat pasted with its speakers' labels ('User: hi. Assistant: what would you like to know? User: was the red car
+# slow at the start?', 'Q1: the cyan bus. A1: yes? Q2: what does it hit?'): the last speaker's turns are the question
+# and its context; the other speaker's are dropped
+SPEAKERS = {"user", "assistant", "human", "ai", "bot", "me", "you", "customer", "agent", "student", "tutor", "viewer",
+            "helper", "teacher", "child", "parent", "kid", "mum", "mom", "dad", "system", "chatbot", "model"}
+
+
+def _speaker(word: str) -> str | None:
+    """The speaker a label names: 'user', and 'q' for 'q1', 'q2' (and 'a' for 'a1'); None for any other word."""
+    return word if word in SPEAKERS else word[0] if re.fullmatch(r"[qa]\d{0,2}", word) else None
+
+
+def transcript_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The last speaker's turns of a chat with labels, the last one the question (`SPEAKERS`). With the words read
+    so, or the words as they are and ()."""
+    labels = [k for k in range(len(words) - 1) if words[k + 1] == ":" and _speaker(words[k]) and (
+        k == 0 or words[k - 1] in (".", "?", "!", ",", ";"))]
+    if len(labels) < 2 or len({_speaker(words[k]) for k in labels}) < 2:
+        return words, ()
+    asker = _speaker(words[labels[-1]])
+    turns = [words[k + 2:end] for k, end in zip(labels, labels[1:] + [len(words)]) if _speaker(words[k]) == asker]
+    out = [w for turn in turns[:-1] for w in (turn if turn[-1:] in ([","], ["."], ["?"], ["!"]) and turn[-1] != ","
+                                              else [*turn[:len(turn) - (turn[-1:] == [","])], "."])] + turns[-1]
+    return out, ((" ".join(words[:labels[-1] + 2]), "nothing, the chat before the question"),)
+
+
 # A tutor's check-in before the question ('You saw the red sedan at the very start, didn't you? How fast ...?',
 # 'Did you notice the blue biplane at the beginning? Was it floating?', 'Remember when the bus hit the car? ...'):
 # asked only to be agreed with, it is context, said as a statement
@@ -478,7 +506,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         question = question[len(back) + (question[len(back):len(back) + 1] == [","]):]
         conditions[-1] = _condition_said(context[-1], True)
     if any(c is None and not _stated(s) and not _imagining_only(s) and (
-            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s)
+            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or _opening(s)[:1] in (["set"], ["let"])
                                              or "if" in s and s[s.index("if") - 1] not in WHETHER))
            for s, c in zip(context, conditions)) or back and not conditions[-1]:
         return words, ()
@@ -795,6 +823,10 @@ def settings_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
         said = ["the", *words[a:b], "had", "been", SET_VALUES[value[0]], "from", "the", "start"]
         end += 3 * (words[end:end + 3] == said[-3:])
         k -= bool(k) and words[k - 1] in ("we", "you", "i", "they")   # 'if we set ...'
+        # a setting said as a sentence of its own ('Set the scooter's initial speed to fast. Does it then hit ...?')
+        # is a condition, not a statement of what the video shows
+        said = ["suppose", *said] if (k == 0 or words[k - 1] in (".", ":", ";", "!")) and \
+            words[end:end + 1] in ([","], ["."], [";"], [":"]) else said
         return words[:k] + said + words[end:], ((" ".join(words[k:end]), " ".join(said)),)
     return words, ()
 

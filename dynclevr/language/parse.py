@@ -62,12 +62,12 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       floating_unread, floating_unsaid, form_unasked, form_unmatched, future_unread,
                                       imagining_unread, impact_unsaid, motion_unfiltered, motion_unread,
                                       named_attribute, operation, own_attribute_asked, property_unread,
-                                      reversed_reading, size_unread, speed_unsaid, still_continuing, time_unasked,
-                                      uncompared, visibility_unread, what_happens)
+                                      reversed_reading, size_unread, speed_unsaid, still_continuing, time_symbol_said,
+                                      time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        impact_said_first, scenario_as_asked, settings_as_imagined,
-                                       told_otherwise_as_imagined)
+                                       told_otherwise_as_imagined, transcript_as_asked)
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
                                           corefer, delexicalise, described_as_named, description_as_said,
@@ -82,7 +82,7 @@ from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_b
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
                                        homophones_as_said, quoted_question, shorthand_as_said, spelt_by_ear,
-                                       worksheet_as_said)
+                                       telegram_as_said, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
@@ -290,6 +290,8 @@ class QuestionParser:
             return [], "empty question", (), []
         if len(words) > MAX_WORDS:
             return [], f"too long ({len(words)} words, at most {MAX_WORDS})", (), []
+        if symbol := time_symbol_said(words):
+            return [], symbol, (), []
         words = rejoined(words, self.readable, SPELLINGS)
         # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print
         held = {w: stretched(w, self.readable) or scanned(w, self.readable, SPELLINGS)
@@ -303,11 +305,15 @@ class QuestionParser:
         words, archaic = archaic_as_said(words, self.readable)
         words, relayed = quoted_question(words)
         starred += archaic + relayed
+        words, transcribed = transcript_as_asked(words)
         words, printed = worksheet_as_said(words)
+        printed = transcribed + printed
         words, pictured_words = emoji_as_said(words)
         words, shorthand = shorthand_as_said(words)
         shorthand = pictured_words + shorthand
+        words, telegram = telegram_as_said(words)
         words, creole = creole_as_said(words)
+        creole = telegram + creole
         words, switched = code_switched_as_said(words)
         shorthand += creole + switched
         words, heard = heard_as_said(words, self.known)
@@ -424,7 +430,8 @@ class QuestionParser:
         # No program counts (questions/programs.py has no count operation): 'how many' or 'how much' asks what no
         # question here answers, however the rest reads.
         if any(a == "how" and b in ("many", "much") for a, b in zip(words, words[1:])) or \
-                said[:1] == ["count"] or any(said[k:k + 3] == ["the", "number", "of"] for k in range(len(said))):
+                said[:1] == ["count"] or said[:2] == ["number", "of"] or \
+                any(said[k:k + 3] == ["the", "number", "of"] for k in range(len(said))):
             return [], "the question asks for a count ('how many'), which no question here answers", read_as, said
         lasting = next((w for w in said if w in DURATIONS), None)
         if lasting:

@@ -45,7 +45,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "stringbag": "biplane",
                   # as bikers and bus and car enthusiasts name them
                   "hog": "cruiser", "step - through": "scooter", "decker": "double bus", "bendy": "articulated bus",
-                  "estate": "wagon",
+                  "estate": "wagon", "whip": "car",   # London's car
                   "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
                   "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",

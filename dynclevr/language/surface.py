@@ -413,13 +413,18 @@ def emoji_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     if not set(out) & {*EMOJI_WORDS, *EMOJI_CLASSES, "💥", "⏱", "🎬", "⏭", "❓"}:
         return words, ()
     timed = bool(START_WORDS & set(out)) or "after" in out
+    # after the question's mark, or beside the vehicle's own name ('... at the start?? 🚗💨', 'the green airliner
+    # ✈️'), an emoji only decorates
+    last = max((k for k, w in enumerate(out) if w in ("?", "!", ".")), default=len(out))
     said, read = [], []
     for k, w in enumerate(out):
         before, after = (said[-1] if said else ""), (out[k + 1] if k + 1 < len(out) else "")
-        word = EMOJI_WORDS.get(w)
-        if w in EMOJI_CLASSES and (before in EMOJI_VERBS | OBJECT_WORDS or after == "or"):
+        word = EMOJI_WORDS.get(w) if k < last and not (w in EMOJI_WORDS and EMOJI_WORDS[w] not in COLOR_NAMES and
+                                                        before in OBJECT_WORDS - set(COLOR_NAMES)) else None
+        if w in EMOJI_CLASSES and (before in EMOJI_VERBS | OBJECT_WORDS and k < last or before == "or"
+                                   or after == "or"):
             word = EMOJI_CLASSES[w]
-        elif w == "💥" and said and before not in ("?", "!", ".", ":"):
+        elif w == "💥" and said and before not in ("?", "!", ".", ":") and k < last:
             word = "crash"
         elif w in ("⏱", "🎬") and not timed and not said:
             word, timed = "at the start ,", True
@@ -433,6 +438,44 @@ def emoji_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
         read.append((w, word))
         said += word.split()
     return (said, tuple(read)) if read else (words, ())
+
+
+# A telegram's marks and words ('RED SEDAN SPEED AT START QUERY', 'FILM STOPPED PART WAY STOP WILL ... COLLIDE
+# QRY', 'REQUEST ADVISE ...', 'COLL', 'ACCEL'): read only in a text that ends on one of its marks or says 'QRY'
+TELEGRAM_MARKS = {"stop": ".", "query": "?", "qry": "?"}
+TELEGRAM_WORDS = {"accel": "accelerating", "aft": "after", "init": "start", "veh": "vehicle", "vehs": "vehicles"}
+
+
+def telegram_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'request advise how fast the bus is going stop' -> 'tell me how fast the bus is going .'; 'stop' is a full
+    stop, 'query' a question mark, 'request advise' a request, 'request confirm' a claim to check. With the words
+    read so, or the words as they are and ()."""
+    ended = [w for w in words if w not in ("?", ".", "!")][-1:]
+    if not ("qry" in words or ended and ended[0] in ("query", "qry") or ended == ["stop"] and {
+            "request", "advise", "confirm"} & set(words)):
+        return words, ()
+    out, read = [], []
+    for k, w in enumerate(words):
+        before = out[-1] if out else ""
+        said = TELEGRAM_MARKS.get(w) if before not in ("to", "a", "the", "will", "would", "could", "did", "does",
+                                                       "not", "it", "they", "") else None
+        if w == "coll":
+            said = "collide" if before in ("to", "then", "will", "would", "it", "they", "does", "did") else "collision"
+        said = said or TELEGRAM_WORDS.get(w)
+        if said and said != w:
+            read.append((w, said))
+        out.append(said or w)
+    out = [w for k, w in enumerate(out) if not (w in (".", "?") and out[k + 1:k + 2] in ([w], ["?"], ["."]))]
+    text = " ".join(out)
+    for opener, asked in (("request advise ", "tell me "), ("request advice ", "tell me "), ("advise ", "tell me "),
+                          ("request confirm ", "is it true that "), ("request advise . ", "")):
+        if text.startswith(opener):
+            text, read = asked + text[len(opener):], read + [(opener.strip(), asked.strip() or "nothing")]
+    for tag in (" confirm or negative", " affirm or negative", " confirm"):
+        if text.endswith(tag + " ?") or text.endswith(tag):
+            text = text[:text.rindex(tag)].rstrip(" ?") + " ?"
+            read.append((tag.strip(), "?"))
+    return text.split(), tuple(read)
 
 
 # English-based creoles and pidgins (Nigerian Pidgin, Jamaican Patois, Hawaiian Pidgin, Singlish) as written: read
