@@ -616,11 +616,13 @@ def test_a_question_said_as_a_noun_phrase_or_a_height_reads_as_the_grammar_says_
                                                                                           "what is the speed of"),)
     assert noun_phrase_as_question(tokenize("the colour of the thing that floats?"))[0][:4] == ["what", "is", "the",
                                                                                                "color"]
-    # 'tell me' with a motion's noun phrase, which the grammar never says ('tell me how fast ...' it does)
-    for text in ("tell me the speed of the red car at first", "tell me the red car's speed at first"):
+    # 'tell me' with a motion's noun phrase, which the grammar never says ('tell me how fast ...' it does), or with
+    # a colour's or a kind's, which the decoder read as yes or no before a clause ('... of the plane that floats')
+    for text in ("tell me the speed of the red car at first", "tell me the red car's speed at first",
+                 "Tell me the color of the thing that floats."):
         assert noun_phrase_as_question(tokenize(text))[0][:2] == ["what", "is"], text
     for text in ("What is the speed of the red car?", "Is the speed of the red car high?",
-                 "Tell me the speed at which the red car is moving.", "Tell me the color of the thing that floats."):
+                 "Tell me the speed at which the red car is moving."):
         assert noun_phrase_as_question(tokenize(text)) == (tokenize(text), ()), text
     assert height_as_aloft(tokenize("is the jet high above the ground?"))[0] == tokenize("is the jet up above the "
                                                                                          "ground?")
@@ -3297,3 +3299,17 @@ def test_a_telegram_a_pasted_chat_and_a_whiteboard_s_symbols():
                             "still (v = 0) at t_c?": "symbol",
                             "Number of aeroplanes floating at the start = ?": "count",
                             "v(yellow motorbike, t=0) = fast? yes or no.": "yes or no"})
+
+
+def test_scandinavian_learners_and_a_clinician_s_note():
+    parser = QuestionParser.load()
+    driven, floor, verbless = parser.parse_batch([
+        "Does the purple one drive on the road bike some time in the film?",
+        "Does the purple one drive on the grey floor at the start?",
+        "At impact w/ green pickup: blue chopper the slower one?"])
+    assert driven == ["Events", "Objects", "filter_attributes[purple]", "unique", "filter_collision", "Objects",
+                      "filter_attributes[road_bike]", "unique", "filter_collision", "exist"]
+    assert floor is None   # 'drive on' the floor is no collision (the floor is refused as no vehicle)
+    assert verbless[:4] == ["Objects", "filter_attributes[blue]", "filter_attributes[chopper]", "unique"]
+    post, = parser.parse_batch(["?collision blue road bike + red pickup post-cut"])
+    assert post[0] == "futureEvents"

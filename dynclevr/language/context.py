@@ -423,6 +423,8 @@ def transcript_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     so, or the words as they are and ()."""
     labels = [k for k in range(len(words) - 1) if words[k + 1] == ":" and _speaker(words[k]) and (
         k == 0 or words[k - 1] in (".", "?", "!", ",", ";"))]
+    # (a prompt's empty answer is no turn: 'Q: ... ? A:')
+    labels = [k for k, end in zip(labels, labels[1:] + [len(words)]) if any(w.isalnum() for w in words[k + 2:end])]
     if len(labels) < 2 or len({_speaker(words[k]) for k in labels}) < 2:
         return words, ()
     asker = _speaker(words[labels[-1]])
@@ -506,7 +508,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         question = question[len(back) + (question[len(back):len(back) + 1] == [","]):]
         conditions[-1] = _condition_said(context[-1], True)
     if any(c is None and not _stated(s) and not _imagining_only(s) and (
-            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or _opening(s)[:1] in (["set"], ["let"])
+            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or _opening(s)[:1] == ["set"]
+                                             or _opening(s)[:1] == ["let"] and "be" in s
                                              or "if" in s and s[s.index("if") - 1] not in WHETHER))
            for s, c in zip(context, conditions)) or back and not conditions[-1]:
         return words, ()

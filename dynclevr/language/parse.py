@@ -93,7 +93,8 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_after_setting,
                                         request_as_imperative, restated_dropped, speed_as_subject, tail_as_question,
-                                        type_as_said, type_of_category_as_vehicle)
+                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked,
+                                        drive_on_as_hit)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -293,8 +294,9 @@ class QuestionParser:
         if symbol := time_symbol_said(words):
             return [], symbol, (), []
         words = rejoined(words, self.readable, SPELLINGS)
-        # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print
-        held = {w: stretched(w, self.readable) or scanned(w, self.readable, SPELLINGS)
+        # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print (read only as a
+        # word the parser knows, never a synonym's: 'tell' is two confusions from 'teh')
+        held = {w: stretched(w, self.readable) or scanned(w, self.known, SPELLINGS)
                 for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}
         words = [held.get(w, w) for w in words]
@@ -376,7 +378,11 @@ class QuestionParser:
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)
         words, stated = imperative_as_stated(words)
+        words, verbless = verbless_comparison_asked(words)
+        words, driven = drive_on_as_hit(words)
+        verbless += driven
         words, fronted = fronted_value_as_asked(words)
+        fronted = verbless + fronted
         words, negative = negative_question_as_asked(words)
         negative = fronted + negative
         words, asked = noun_phrase_as_question(words)
@@ -414,7 +420,7 @@ class QuestionParser:
         # parser reads (known, or a synonym's, which then stands in; 'tsruck' is 'struck', not 'truck').
         # Two words run together ('fastmoving', 'speedup') are read apart where they split one way only. A question's
         # first word is no vehicle's ('Track the blue bus' was read about a truck).
-        fixed = {w: slipped(w, self.readable, SPELLINGS) or run_together(w, self.readable)
+        fixed = {w: self._slipped(w) or run_together(w, self.readable)
                  or (w != words[0] and OBJECT_LEXICON.closest(w)) or (len(w) >= TYPO_LETTERS and self.words.closest(w))
                  or w
                  for w in words if w not in self.known}
@@ -515,6 +521,14 @@ class QuestionParser:
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as, said
         return words, "", read_as, said
+
+    def _slipped(self, word: str) -> str | None:
+        """The one word `word` is a slip of (`vocab.slipped`); or, where it slips from a known word and from
+        synonyms of it alone, that word ('fsat': 'fast', and 'fat', a swipe keyboard's 'fast')."""
+        hit = slipped(word, self.readable, SPELLINGS)
+        hits = [] if hit else slips(word, self.readable, SPELLINGS)
+        meant = {self.synonyms[h][0] if len(self.synonyms.get(h, ())) == 1 else h for h in hits}
+        return hit or (meant.pop() if len(meant) == 1 and self.known.intersection(hits) else None)
 
     def _stand_in(self, word: str) -> list[str]:
         """Known words for an unknown one: its synonym, else the known (or lexicon) word of its stem with the same

@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.references import OBJECT_WORDS, phrase_table, phrases_as_said
+from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
                                      DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
@@ -278,6 +278,41 @@ FITTING = {"describe", "describes", "fit", "fits", "match", "matches", "capture"
            "characterises", "characterize", "characterizes", "sum"}
 
 
+DRIVE_ON = {"drive": "hit", "drives": "hits", "drove": "hit", "driving": "hitting", "driven": "hit"}
+
+
+def drive_on_as_hit(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A Scandinavian learner's 'the scooter drives on the grey pickup' (Swedish 'köra på') -> 'the scooter hits the
+    grey pickup': 'drive on' a vehicle named next is hitting it ('drives on the grey floor' stays). With the words
+    read so, or the words as they are and ()."""
+    out, read = list(words), []
+    for k in range(len(out) - 2):
+        if out[k] in DRIVE_ON and out[k + 1] == "on" and (m := mentions(out[k + 2:])) and \
+                m[0][0] == (out[k + 2] in ("the", "a", "an")) and out[k + 1 + m[0][1]] not in COLOR_NAMES:
+            read.append((f"{out[k]} on", DRIVE_ON[out[k]]))
+            out[k:k + 2] = [DRIVE_ON[out[k]]]
+            break
+    return (out, tuple(read)) if read else (words, ())
+
+
+def verbless_comparison_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A note's 'At impact w/ green pickup: blue chopper the slower one?' -> '...: is the blue chopper the slower
+    one?': a vehicle said with 'the slower (faster) one' and no verb, after a clause or at the start, asked whether
+    it is (the decoder took the clause's vehicle for the one compared). With the words read so, or the words as
+    they are and ()."""
+    for k in (0, *(j + 1 for j, w in enumerate(words) if w in (":", ","))):
+        j = k + (words[k:k + 1] == ["the"])
+        end = j
+        while end < len(words) and words[end] in OBJECT_WORDS:
+            end += 1
+        if end > j and words[end:end + 2] in (["the", "slower"], ["the", "faster"], ["the", "quicker"]) and \
+                words[end + 2:] in (["one", "?"], ["of", "the", "two", "?"], ["?"]):
+            said = ["is", "the", *words[j:end]]
+            lead = [*words[:k - 1], ","] if k else []   # (the clause before it read as the grammar's, with a comma)
+            return lead + said + words[end:], ((" ".join(words[max(k - 1, 0):end]), " ".join([*lead[-1:], *said])),)
+    return words, ()
+
+
 def fronted_value_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'slow - would that describe the pace of the suv ... ?' -> 'is slow the pace of the suv ... ?': a speed said
     first and pointed at by 'that' is the speed asked; with another verb the speed stands for 'that' ('fast : is
@@ -458,6 +493,10 @@ IDIOMS = phrase_table({
         "view", "sight", "enters", "enter", "entered", "appears", "appear", "appeared", "arrives", "arrived")},
     ("to", "which", "side"): ("in", "which", "direction"),
     ("fast", "more"): ("faster",), ("slow", "more"): ("slower",),   # a signer's gloss: 'CYAN CAR FAST MORE?'
+    **{("post", *d, "cut"): ("after", "the", "video", "ends") for d in ((), ("-",))},   # a clinician's 'post-cut'
+    # Scandinavian learners' 'shall' of what will happen, 'crash together (with)'
+    ("shall",): ("will",), **{("crash" + e, "together", *w): ("collide" + e, *w) for e in ("", "es", "ed")
+                              for w in ((), ("with",))},
     # South Asian learners' 'in beginning itself'; a guide's 'over the course of the film', 'compare, if you will, ...'
     **{(w, "itself"): (w,) for w in ("start", "beginning", "starting", "begin", "first")},
     **{("in", w, "itself"): ("at", "the", "start") for w in ("beginning", "start", "starting")},
