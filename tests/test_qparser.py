@@ -22,9 +22,10 @@ from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
-                                      dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
-                                      hypothesis_as_asked, interjections_dropped, preamble_dropped, prompt_dropped,
-                                      radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
+                                      distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
+                                      hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
+                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read,
+                                      wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -3313,3 +3314,23 @@ def test_scandinavian_learners_and_a_clinician_s_note():
     assert verbless[:4] == ["Objects", "filter_attributes[blue]", "filter_attributes[chopper]", "unique"]
     post, = parser.parse_batch(["?collision blue road bike + red pickup post-cut"])
     assert post[0] == "futureEvents"
+
+
+def test_a_vehicle_set_apart_and_a_ramble_before_the_question():
+    parser = QuestionParser.load()
+    ignoring, not_that, of_two, ramble = parser.parse_batch([
+        "Ignoring the green bus parked by the curb, how fast was the red sedan going at the start - stopped, slow or "
+        "fast?",
+        "Not the gray minivan beside it - the yellow SUV: was it standing still at the very start?",
+        "Of the two green vehicles, the motorbike: which way was it travelling at the beginning of the clip?",
+        "The purple mountain bike weaves around so much that I kept holding my breath, and the red SUV is just parked "
+        "there, but like does the mountain bike end up crashing into anything at all?"])
+    assert ignoring == ["Objects", "filter_attributes[red]", "filter_attributes[sedan]", "unique", "start",
+                        "query_moving_velocity"]
+    assert not_that == ["Objects", "filter_attributes[yellow]", "filter_attributes[suv]", "unique", "start",
+                        "is_static"]
+    assert of_two[1:3] == ["filter_attributes[green]", "filter_attributes[motorbike]"]   # the colour said there
+    assert ramble == ["Events", "Objects", "filter_attributes[purple]", "filter_attributes[mountain_bike]", "unique",
+                      "filter_collision", "exist"]   # the ramble is context: its fuller mention names the bike
+    # a clause of time is no vehicle set apart ('while they collide')
+    assert distractors_dropped(tokenize("While the bus and the car collide, is the bus fast?"))[1] == ()

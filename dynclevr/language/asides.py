@@ -16,7 +16,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
-from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS,
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS, COMES_IN_WORDS,
                                      COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
                                      CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
                                      FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
@@ -29,8 +29,8 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, C
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
-             "bot", "buddy", "mate", "dude", "bro", "friend", "friends", "team", "y'all", "all", "support", "there",
-             "sir", "madam", "colleagues", "staff", "helpdesk"}   # and a letter's ('Dear support,')
+             "bot", "buddy", "mate", "matey", "dude", "bro", "friend", "friends", "team", "y'all", "all", "support",
+             "there", "sir", "madam", "colleagues", "staff", "helpdesk"}   # and a letter's ('Dear support,')
 # ... and a child's or to a child, said alone before a comma or between commas ('Mummy, how fast ...', 'Can you tell
 # me, sweetie, is ...'): 'daddy' was read as 'pops' (into view)
 ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", "dad", "papa", "grandma", "granny",
@@ -892,6 +892,89 @@ def _headline(heading: list[str], question: list[str]) -> bool:
     return 0 < len(heading) <= 4 and not set(heading) <= OBJECT_WORDS and not set(heading) & said \
         and question[:1] != [] and question[0] in QUESTION_OPENERS | {"in", "at", "which", "if", "when"} and \
         bool(runs) and runs[0][0] < pronoun and (asks_impact(question) or not asks_impact(heading))
+
+
+# A vehicle said only to set the asked one apart or to set the scene ('Ignoring the parked green bus, was the red
+# sedan ...?', 'Not the yellow one - the blue scooter: did it ...?', 'Of the two cars, the red one: ...', 'While the
+# bus sat there, ...', '... - not the road bike, the mountain bike?', 'The red jet has nothing to do with it.')
+DISTRACTOR_LEADS = (("ignoring",), ("leaving",), ("setting",), ("putting",), ("forget",), ("forgetting",),
+                    ("never", "mind"), ("not", "counting"), ("apart", "from"), ("aside", "from"), ("besides",),
+                    ("except", "for"), ("excluding",), ("disregarding",), ("while",), ("not",), ("of", "the"))
+
+
+def distractors_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """The question without the vehicles it names only to set the asked one apart (`DISTRACTOR_LEADS`): a clause
+    said first that names a vehicle and asks nothing, where the rest names one; a clause with a collision, a start,
+    an end or a condition in it is no such clause ('while they collide', not 'as for the bus,', a topic). With the
+    words read so, or the words as they are and ()."""
+    out, read = list(words), []
+    lead = next((d for d in DISTRACTOR_LEADS if tuple(out[:len(d)]) == d), None)
+    end = next((k for k in range(len(lead or ()), len(out)) if out[k] in (",", "-", ":", ";")), None)
+    if lead and end:
+        clause, rest = out[:end], out[end + 1:]
+        timed = asks_impact(clause) or set(clause) & (START_WORDS | END_WORDS | COMES_IN_WORDS | IMAGINED_SAID
+                                                      | {"when", "if", "had", "would"})
+        named = mentions(rest)
+        if mentions(clause) and (named or lead not in (("not",), ("of", "the"))) and not timed and (
+                lead != ("not",) or named[0][0] <= 2) and (
+                lead != ("of", "the") or clause[2:3] and clause[2] in NUMBERS | {"both", "several"}):
+            read.append((" ".join(out[:end + 1]), "nothing, a vehicle set apart"))
+            out = rest
+            if lead == ("of", "the"):   # 'of the two green vehicles, the motorbike': its colour and kind said there
+                i, j, _ = named[0]
+                colours = [] if set(rest[i:j]) & set(COLOR_NAMES) else [w for w in clause if w in COLOR_NAMES]
+                kinds = [w[:-1] for w in clause if w.endswith("s") and w[:-1] in OBJECT_WORDS]
+                kind = kinds[:1] if rest[j - 1] == "one" and kinds else rest[j - 1:j]
+                out = [*rest[:j - 1], *colours, *kind, *rest[j:]]
+    if "?" in out and (k := next((k for k in range(len(out) - 3) if out[k:k + 2] in ([",", "not"], ["-", "not"])
+                                  and out[k + 2] in ("the", *OBJECT_WORDS) and out.index("?") > k), None)) is not None \
+            and mentions(out[k + 2:out.index("?")]) and len(mentions(out[:k])) >= 1:
+        read.append((" ".join(out[k:out.index("?")]), "nothing, a vehicle set apart"))
+        out = out[:k] + out[out.index("?"):]
+    spans = [(a, b) for a, b in _spans(out)]
+    kept = [out[a:b] for a, b in spans if not (out[a:b][-1:] == ["."] and "nothing" in out[a:b] and
+                                               "do" in out[a:b] and mentions(out[a:b]))]
+    if len(kept) < len(spans):
+        read.append(("... has nothing to do with it .", "nothing, a vehicle set apart"))
+        out = [w for s in kept for w in s]
+    return (out, tuple(read)) if read else (words, ())
+
+
+def _spans(words: list[str]) -> list[tuple[int, int]]:
+    """The sentences of `words`, as (first, past-last) word."""
+    spans, start = [], 0
+    for k, w in enumerate(words):
+        if w in (".", "?", "!"):
+            spans.append((start, k + 1))
+            start = k + 1
+    return spans + [(start, len(words))] * (start < len(words))
+
+
+RAMBLE_FILLERS = {"like", "i", "mean", "anyway", "okay", "ok", "so", "honestly", "um", "uh", ",", "well", "then"}
+
+
+def ramble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A long ramble before the question, ended by ', but' ('I kind of love how detailed these toys are, ..., and the
+    red wagon is cute too, but I mean was the purple chopper going fast ...?'): the question is what follows the last
+    ', but'; the ramble, where it says no collision and no time, is its context, a sentence of its own, from which
+    its shorter mentions and its 'it' are read.
+    With the words read so, or the words as they are and ()."""
+    if words[-1:] != ["?"]:
+        return words, ()
+    k = next((k for k in range(len(words) - 2, 7, -1) if words[k - 1:k + 1] == [",", "but"]), None)
+    # (only a ramble that says no collision and no time: 'It looked like the bike was standing still when it
+    # collided with the bus, but was it really?' is a claim doubted)
+    if k is None or k < 12 or asks_impact(words[:k]) or set(words[:k]) & (START_WORDS | END_WORDS | COMES_IN_WORDS):
+        return words, ()
+    j = k + 1
+    while j < len(words) and words[j] in RAMBLE_FILLERS:
+        j += 1
+    rest = words[j:]
+    if not rest[:1] or rest[0] not in QUESTION_OPENERS | YES_NO_OPENERS | TIME_OPENERS | {
+            "if", "suppose", "had", "what", "when", "after", "once", "which", "who", "the", "does", "did"} or \
+            "?" in rest[:-1]:
+        return words, ()
+    return [*words[:k - 1], ".", *rest], ((" ".join(words[k - 1:j]), "."),)
 
 
 def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

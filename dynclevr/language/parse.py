@@ -51,10 +51,10 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
-                                      dislocated_as_asked, examination_as_asked, framing_dropped, hedges_dropped,
-                                      hooks_dropped, hypothesis_as_asked, interjections_dropped, owners_dropped,
-                                      preamble_dropped, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      ticket_fields_read, wagers_read)
+                                      distractors_dropped, ramble_dropped, dislocated_as_asked, examination_as_asked,
+                                      framing_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
+                                      interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
+                                      radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, clock_unasked, collision_at_start, collision_unread,
                                       compared_unsaid, comparison_imagined, comparison_unread, comparison_unsaid,
@@ -342,6 +342,10 @@ class QuestionParser:
         wagered += requested + tested
         corrected += examined + wagered
         words, hedged = hedges_dropped(words)
+        words, rambled = ramble_dropped(words)
+        words, set_apart = distractors_dropped(words)
+        set_apart = rambled + set_apart
+        hedged += set_apart
         words, dislocated = dislocated_as_asked(words)
         corrected += hedged + dislocated
         words, ticket = ticket_fields_read(words)
