@@ -547,9 +547,11 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
 def answer_form_unmatched(read_as: tuple[tuple[str, str], ...], program: list[str]) -> str:
     """Why a reading is not the question's ('' when it is): the question gives yes or no as its answer's form ('State
     @ start = not moving? (y/n)'), and its nearest reading asks which."""
-    # (or a yes-or-no tag: a learner's 'fast he is going or not?')
-    if any(why == "nothing, an answer's form" or said.strip(" ,?") in ("or not", "or no", "or nah") and why == "?"
-           or why.startswith("nothing") and {"yes", "no"} <= set(said.split()) for said, why in read_as) and OPS[operation(program[-1])].output is str:
+    # (or a yes-or-no tag: a learner's 'fast he is going or not?'; or an instruction: '... = fast? yes or no.')
+    yes_or_no = any(why == "nothing, an answer's form" or said.strip(" ,?") in ("or not", "or no", "or nah") and
+                    why == "?" or why.startswith("nothing") and {"yes", "no"} <= set(said.split())
+                    for said, why in read_as)
+    if yes_or_no and OPS[operation(program[-1])].output is str:
         return ("the question asks yes or no (its answer's form), but its nearest reading asks which (a speed, a "
                 "direction, a colour or a type)")
     return ""

@@ -315,9 +315,8 @@ PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "
                  # a learner's comparative of a place ('which one is more close to the camera?' was read as faster)
                  *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"],
                  *(["parking", w] for w in ("spot", "space", "lot", "bay")),
-                 # a side of the picture, as learners say it ('in left or in right side?')
-                 *([s, "side"] for s in ("left", "right")), ["in", "left"], ["in", "right"], ["located"],
-                 ["location"])
+                 # where a vehicle is found ('where located, left or right?', 'Where is parked the yellow bus?')
+                 ["located"], ["location"], *(["where", *be, "parked"] for be in ((), ("is",), ("was",))))
 
 
 # a video that goes on further is a later time, not a place ('if video would continue further, ...')

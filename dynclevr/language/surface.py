@@ -564,8 +564,8 @@ SWITCH_PHRASES = phrase_table([
                                                  ("no", "meio")))])
 SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
                   "est", "quand", "quando", "wenn", "ist", "tava", "etait", "estava", "haishi", "ruguo", "zhuang",
-                  "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual", "welche",
-                  "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio"}
+                  "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual",
+                  "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio"}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -133,8 +133,9 @@ SCANNED = (("rn", "m"), ("cl", "d"), ("li", "h"), ("vv", "w"), ("1", "l"), ("1",
 
 
 def scanned(word: str, words: set[str], spellings: dict[str, str] | None = None) -> str | None:
-    """The one word of `words` that `word` (3+ characters) reads as with one or two of a scanner's confusions of
-    printed letters (`SCANNED`) undone; None when there is none or more than one."""
+    """The one word of `words` that `word` (3+ characters) reads as with one of a scanner's confusions of printed
+    letters (`SCANNED`) undone, or two in a word with a digit ('c0l1ide'); None when there is none or more than
+    one ('stll' is no misread 'sth')."""
     if len(word) < 3:
         return None
     spellings = spellings or {}
@@ -145,7 +146,7 @@ def scanned(word: str, words: set[str], spellings: dict[str, str] | None = None)
 
     once = undone(word)
     hits = {spellings.get(w, w) for w in once} & words
-    if not hits:
+    if not hits and any(c.isdigit() for c in word):   # two only where a digit shows the print was misread
         hits = {spellings.get(w, w) for w in set().union(*map(undone, once))} & words
     return hits.pop() if len(hits) == 1 else None
 
