@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.context import coordinated_subject
+from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS, COMES_IN_WORDS,
@@ -931,23 +931,13 @@ def distractors_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
             and mentions(out[k + 2:out.index("?")]) and len(mentions(out[:k])) >= 1:
         read.append((" ".join(out[k:out.index("?")]), "nothing, a vehicle set apart"))
         out = out[:k] + out[out.index("?"):]
-    spans = [(a, b) for a, b in _spans(out)]
+    spans = _sentence_spans(out)
     kept = [out[a:b] for a, b in spans if not (out[a:b][-1:] == ["."] and "nothing" in out[a:b] and
                                                "do" in out[a:b] and mentions(out[a:b]))]
     if len(kept) < len(spans):
         read.append(("... has nothing to do with it .", "nothing, a vehicle set apart"))
         out = [w for s in kept for w in s]
     return (out, tuple(read)) if read else (words, ())
-
-
-def _spans(words: list[str]) -> list[tuple[int, int]]:
-    """The sentences of `words`, as (first, past-last) word."""
-    spans, start = [], 0
-    for k, w in enumerate(words):
-        if w in (".", "?", "!"):
-            spans.append((start, k + 1))
-            start = k + 1
-    return spans + [(start, len(words))] * (start < len(words))
 
 
 RAMBLE_FILLERS = {"like", "i", "mean", "anyway", "okay", "ok", "so", "honestly", "um", "uh", ",", "well", "then"}

@@ -455,7 +455,7 @@ def telegram_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
             "request", "advise", "confirm"} & set(words)):
         return words, ()
     out, read = [], []
-    for k, w in enumerate(words):
+    for w in words:
         before = out[-1] if out else ""
         said = TELEGRAM_MARKS.get(w) if before not in ("to", "a", "the", "will", "would", "could", "did", "does",
                                                        "not", "it", "they", "") else None
@@ -467,8 +467,8 @@ def telegram_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         out.append(said or w)
     out = [w for k, w in enumerate(out) if not (w in (".", "?") and out[k + 1:k + 2] in ([w], ["?"], ["."]))]
     text = " ".join(out)
-    for opener, asked in (("request advise ", "tell me "), ("request advice ", "tell me "), ("advise ", "tell me "),
-                          ("request confirm ", "is it true that "), ("request advise . ", "")):
+    for opener, asked in (("request advise . ", ""), ("request advise ", "tell me "), ("request advice ", "tell me "),
+                          ("advise ", "tell me "), ("request confirm ", "is it true that ")):
         if text.startswith(opener):
             text, read = asked + text[len(opener):], read + [(opener.strip(), asked.strip() or "nothing")]
     for tag in (" confirm or negative", " affirm or negative", " confirm"):
