@@ -429,8 +429,10 @@ def transcript_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         return words, ()
     asker = _speaker(words[labels[-1]])
     turns = [words[k + 2:end] for k, end in zip(labels, labels[1:] + [len(words)]) if _speaker(words[k]) == asker]
-    out = [w for turn in turns[:-1] for w in (turn if turn[-1:] in ([","], ["."], ["?"], ["!"]) and turn[-1] != ","
-                                              else [*turn[:len(turn) - (turn[-1:] == [","])], "."])] + turns[-1]
+    # the asker's earlier turns as sentences of context ('Q1: the cyan bus.', 'me: watching the double-decker now,')
+    ended = [turn if turn[-1] in (".", "?", "!") else [*turn[:len(turn) - (turn[-1] == ",")], "."]
+             for turn in turns[:-1]]
+    out = [w for turn in ended for w in turn] + turns[-1]
     return out, ((" ".join(words[:labels[-1] + 2]), "nothing, the chat before the question"),)
 
 
