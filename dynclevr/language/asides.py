@@ -16,16 +16,16 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
-from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, CHAT, CLOSING_INTERJECTIONS, COMES_IN_WORDS,
-                                     COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS, CONDITION_OPENERS,
-                                     CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS,
-                                     FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID,
-                                     IMAGINING, IMAGINING_LABELS, INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS,
-                                     MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, NUMBERS,
-                                     OTHER_COLOURS, PARTICLES, PLURALS, QUERY_NOUNS, QUESTION_OPENERS, RESTING,
-                                     REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES,
-                                     START_WORDS, STATIC_SAID, STOP_CUES, TIME_OPENERS, UNNAMED, YES_NO_OPENERS,
-                                     asks_impact, impact_like)
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLOSING_INTERJECTIONS,
+                                     COMES_IN_WORDS, COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS,
+                                     CONDITION_OPENERS, CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS,
+                                     END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS,
+                                     HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS, INTERJECTIONS,
+                                     LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
+                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PLURALS, QUERY_NOUNS,
+                                     QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES,
+                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
+                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -630,12 +630,34 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         return words, ()
     end, named = subject
     pronoun = ["they"] if len(named) == 2 else ["it"]
+    one = end + (words[end:end + 1] == ["one"])   # 'the green one'
+    if words[one:one + 1] in ([","], ["-"], [":"]) and words[one + 1:one + 2] != pronoun:
+        return _topic_as_named(words, one, pronoun[0])
     if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
         return words, ()
     verb, rest = words[end + 2], words[end + 3:]
     said = [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
         ["do" if len(named) == 2 else "does", *words[:end], verb, *rest]
     return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
+
+
+def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the motorbike , once the clip cuts off , is it going to hit ...' -> 'once the clip cuts off , is the motorbike
+    going to hit ...'; 'the bus and the car - at any point collide , do they ?' -> 'do the bus and the car at any
+    point collide ?': a topic said first, then a question (after a clause of time, or a condition) that asks about
+    it as 'it' or 'they'. With the words read so, or the words as they are and ()."""
+    topic, rest = words[:end], words[end + 1:]
+    read = ((" ".join(words[:end + 1]), "nothing, the vehicle said first"),)
+    if len(rest) > 4 and rest[-4:] in ([",", a, pronoun, "?"] for a in AUXILIARIES | {"will", "would"}) and \
+            pronoun not in rest[:-4] and not set(rest[:-4]) & (QUESTION_OPENERS | SENTENCE_ENDS):
+        return [rest[-3], *topic, *rest[:-4], "?"], read
+    start = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS | {"once", "after", "before"} and "," in rest \
+        else 0
+    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and pronoun in rest \
+            and rest.index(pronoun) > start:
+        k = rest.index(pronoun)
+        return [*rest[:k], *topic, *rest[k + 1:]], read
+    return words, ()
 
 
 # A speaker correcting a vehicle's name as they say it ('the red no the blue sedan', 'the gray jet no sorry the gray
@@ -1061,7 +1083,10 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
         # (nor where speeds are offered after it: '..., the velocity of the suv is static, slow or fast?')
         rest = set(out[close + 1:]) if close else set()
-        if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED):
+        # (nor a clause where the vehicle itself collides: 'the thing it crashes into', 'with anything it collides')
+        own_impact = asks_impact(out[k:close]) and {"it", "they"} & set(out[k:close]) if close else False
+        if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
+                and not own_impact:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []
             continue

@@ -85,12 +85,12 @@ from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switc
                                        telegram_as_said, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
-from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
-                                     sound_index, stretched)
-from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
-                                        floating_plane_as_vehicle, fronted_value_as_asked, heading_as_direction,
-                                        height_as_aloft, idioms_as_said, imperative_as_stated,
+from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
+                                     slips, sound_index, stretched)
+from dynclevr.language.wordings import (alternatives_as_asked, inverted_as_asked, attention_as_subject,
+                                        attributes_offered_dropped, choices_as_which, class_as_asked, cleft_as_asked,
+                                        comparative_as_said, floating_plane_as_vehicle, fronted_value_as_asked,
+                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_after_setting,
                                         request_as_imperative, restated_dropped, speed_as_subject, tail_as_question,
                                         type_as_said, type_of_category_as_vehicle, verbless_comparison_asked,
@@ -296,7 +296,7 @@ class QuestionParser:
         words = rejoined(words, self.readable, SPELLINGS)
         # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print (read only as a
         # word the parser knows, never a synonym's: 'tell' is two confusions from 'teh')
-        held = {w: stretched(w, self.readable) or scanned(w, self.known, SPELLINGS)
+        held = {w: stretched(w, self.readable) or dropped_g(w, self.readable) or scanned(w, self.known, SPELLINGS)
                 for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}
         words = [held.get(w, w) for w in words]
@@ -369,6 +369,8 @@ class QuestionParser:
         labelled = teased + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)
+        words, inverted = inverted_as_asked(words)
+        opened += inverted
         words, idioms = idioms_as_said(words)
         words, digressed = digressions_dropped(words)
         idioms += digressed

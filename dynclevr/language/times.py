@@ -224,6 +224,7 @@ PICTURING = (["imagine"], ["picture"], ["consider"], ["envision"], ["visualise"]
              ["think", "of"], ["think", "about"], ["thinking", "of"], ["thinking", "about"], ["picturing"],
              ["imagining"], ["considering"])
 MOMENTS = {"moment", "instant", "point", "second"}
+BARE_MOMENT_NEXT = {"it", "they", "the", "that", "when", "of", "both", "these", "those", "this"}
 
 
 def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -242,4 +243,12 @@ def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
                         ((" ".join(words[first:j + 3]), "at that moment ,"),))
             return (words[:first] + ["at", "the", "moment"] + words[j + 2:],
                     ((" ".join(words[first:j + 2]), "at the moment"),))
+    # ... or the vehicle's own impact said first ('Striking the gray minivan, how fast was the cyan bicycle going?')
+    if words[:1] and words[0].endswith("ing") and asks_impact(words[:1]) and "," in words[1:8] and "?" in words:
+        return ["when", *words], ((words[0], f"when {words[0]}"),)
+    # ... or said bare as a clause of time ('The moment it crashes into the school bus, what speed ...?')
+    k = next((k for k in range(len(words) - 2) if words[k:k + 2] in (["the", "moment"], ["the", "instant"]) and (
+        k == 0 or words[k - 1] in CLAUSE_SEPARATORS) and words[k + 2] in BARE_MOMENT_NEXT), None)
+    if k is not None:
+        return words[:k] + ["at"] + words[k:], ((" ".join(words[k:k + 2]), "at the moment"),)
     return words, ()

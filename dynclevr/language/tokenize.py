@@ -18,6 +18,8 @@ _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": 
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
 _NOT = re.compile(r"\b(is|was|are|were|do|does|did|has|have|had|would|could|should|wo|ca)n'?t\b")
 _NOT_STEMS = {"wo": "will", "ca": "can"}
+# "ain't" is a negated 'is' (or 'has', 'did'), and "ain't never" a 'never' ('the wagon ain't never moved')
+_AINT = re.compile(r"\bain'?t( never\b)?")
 # A dropped g written with an apostrophe ("movin'", "drivin'") is the word in full
 _DROPPED_G = re.compile(r"(?<!')\b([a-z]{2,}in)'(?!s\b)")   # not a quoted word ("the 'spin'")
 # A chat's mention of someone ("@luna which type ...", "... ? @sam"), first or last; '@' alone is a note's 'at'
@@ -26,6 +28,13 @@ _MENTION = re.compile(r"^\s*@[a-z]\w*\s*[,:]?|(?<=\s)@[a-z]\w*(?=\s*(?:[,:!?.]|$
 # approx. speed class of the veh.'): 'approx' and 'veh' are read by synonyms.txt; 'i.e.' and 'e.g.' open a gloss
 _ABBREVIATED = re.compile(r"\b(approx|apprx|veh|esp|incl|resp)\.")
 _GLOSS = re.compile(r"\b([ie])\.\s?([eg])\.?(?=[\s,:)]|$)")
+
+
+# A chat's formatting before the question: a list's bullet or a quote's '>' ('- where is ...', '> did ...'), a bot's
+# slash command ('/ask would the bus ...')
+_LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
+# 'it'd been' is 'it had been' ('it'd had' and "I'd like" the rules read as said)
+_HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
 
 
 _SAID_MARKS = {"comma": " , ", "question mark": " ? ", "full stop": " . ", "period": " . ", "new line": " ",
@@ -45,8 +54,10 @@ def tokenize(text: str) -> list[str]:
     text = unicodedata.normalize("NFKC", text).translate(_QUOTES).lower()
     # accents folded ('début', 'vídeo', 'naïve'): the parser's words are written without them
     text = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
+    text = _AINT.sub(lambda m: "never" if m.group(1) else "is not", text)
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
+    text = _HAD.sub(r"\1 had", _LEAD.sub("", text))
     text = _MENTION.sub(" ", text)
     text = _GLOSS.sub(lambda m: " " + m.group(1) + m.group(2) + " " if m.group(1) + m.group(2) in ("ie", "eg")
                       else m.group(0), text)

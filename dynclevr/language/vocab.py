@@ -127,6 +127,17 @@ def stretched(word: str, words: set[str]) -> str | None:
     return next((w for w in map("".join, itertools.product(*options)) if w in words), None)
 
 
+# Words said with their g dropped and no apostrophe, which the refusals read in full ('slowin down')
+DROPPED_G_WORDS = {"slowing", "nothing", "losing", "braking", "stopping", "landing", "turning"}
+
+
+def dropped_g(word: str, words: set[str]) -> str | None:
+    """'movin' -> 'moving', 'somethin' -> 'something', 'slowin' -> 'slowing': a word ending in 'in' that is one of
+    `words` (or `DROPPED_G_WORDS`) with its g; else None. (Said first: 'slowin' was read as 'slow in'.)"""
+    full = word + "g"
+    return full if len(word) >= 5 and word.endswith("in") and (full in words or full in DROPPED_G_WORDS) else None
+
+
 # Printed letters a scanner (OCR) takes for others, read either way: 'rnotorbike', 'bicyde', 's1ower', 'int0'.
 SCANNED = (("rn", "m"), ("cl", "d"), ("li", "h"), ("vv", "w"), ("1", "l"), ("1", "i"), ("l", "i"), ("0", "o"),
            ("5", "s"))

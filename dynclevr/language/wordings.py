@@ -475,7 +475,11 @@ IDIOMS = phrase_table({
                            ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("outta", "the", "gate"),
                            ("outta", "the", "gates"), ("outta", "the", "blocks"), ("when", "things", "kick", "off"),
                            ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
-                           ("when", "everything", "kicks", "off"), ("from", "the", "off"))},
+                           ("when", "everything", "kicks", "off"), ("from", "the", "off"), ("from", "the", "jump"),
+                           ("off", "the", "jump"))},
+    # the video's end said as what someone did to it ('finna hit something after where they stopped the video?')
+    **{(*a, "they", v, "the", f): ("after", "the", "video", "ends") for a in (("after", "where"), ("after",), ("past",
+       "where")) for v in ("stopped", "cut", "paused", "ended") for f in ("video", "clip", "footage")},
     **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
                               ("at", "a", "good", "clip"), ("at", "a", "fair", "clip"), ("at", "quite", "a", "clip"),
                               ("like", "a", "rocket"), ("like", "the", "wind"),
@@ -1271,3 +1275,136 @@ def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
 
 
 OPPOSITES = {w for reversers in REVERSERS.values() for w in reversers}
+
+
+# Yoda's order, and a poet's: the predicate said first, the subject and its auxiliary last ('faster than the bus at
+# the start , the gray jet is ?', 'collide with the red bike , did the gray suv ?', 'into the bus crash the jet will ?')
+INVERTED_AUXILIARIES = {"is", "was", "are", "were", "did", "does", "do", "will", "would", "went", "moved", "travelled",
+                        "traveled", "drove"}
+PAST_MOTION = {"went": "going", "moved": "moving", "travelled": "travelling", "traveled": "travelling",
+               "drove": "driving"}
+# a value said first in a condition ('if slow it had been going ...', 'if motionless the cruiser had stayed ...')
+FRONTABLE_VALUES = {"slow", "slowly", "fast", "quickly", "static", "still", "motionless", "stationary", "parked",
+                    "accelerating", "floating", "hovering"}
+
+
+def _subject_at_end(clause: list[str]) -> int | None:
+    """Where the vehicle that ends `clause` begins ('the gray fighter' in '..., the gray fighter'), or None."""
+    named = [m for m in mentions(clause) if m[1] == len(clause) or m[1] == len(clause) - 1 and clause[-1] in (
+        "one", "thing", "vehicle")]
+    if not named:
+        return None
+    k = named[0][0]
+    return k - 1 if k and clause[k - 1] in DETERMINERS else k
+
+
+WH_NOUNS = {"way", "direction", "speed", "fast", "color", "kind", "type", "sort", "pace"}
+INVERTED_TAGS = {"hmm", "hm", "yes", "no", "eh", "huh", "mm"}
+TIME_CLAUSE_OPENERS = TIME_OPENERS | {"when", "after", "before", "once", "if"}
+
+
+def _predicate_clause(lead: list[str]) -> tuple[list[str], list[str]]:
+    """The clauses said before an inverted subject ('lag behind the bike , at the start ,'): those of time, kept
+    first, and the last other one, the predicate (without its separator)."""
+    clauses, start = [], 0
+    for k, w in enumerate(lead):
+        if w in (",", "-", ":"):
+            clauses.append(lead[start:k + 1])
+            start = k + 1
+    clauses.append(lead[start:]) if lead[start:] else None
+    k = next((k for k in reversed(range(len(clauses))) if clauses[k][:1] and
+              clauses[k][0] not in TIME_CLAUSE_OPENERS), None)
+    if k is None:
+        return lead, []
+    predicate = clauses[k][:-1] if clauses[k][-1:] and clauses[k][-1] in (",", "-", ":") else clauses[k]
+    return [w for c in clauses[:k] + clauses[k + 1:] for w in c], predicate
+
+
+def _is_verb(word: str) -> bool:
+    return word.endswith("ing") or asks_impact([word]) or word in MOTION_WORDS
+
+
+def _verb_moved(subject: list[str], predicate: list[str]) -> list[str]:
+    """The subject, then the predicate's last word where it is its verb ('into the bus crash' -> 'the jet crash into
+    the bus'), else the predicate after it."""
+    if predicate and _is_verb(predicate[-1]):
+        return [*subject, predicate[-1], *predicate[:-1]]
+    if predicate and _is_verb(predicate[0]):   # 'moving slower than the chopper'
+        return [*subject, *predicate]
+    return [*subject, *predicate]
+
+
+def inverted_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'faster than the bus at the start , the jet is ?' -> 'is the jet faster than the bus at the start ?';
+    'collide with the bike , did the suv ?' -> 'did the suv collide with the bike ?'; 'if slow it had been going at
+    the start , ...' -> 'if it had been going slow at the start , ...'. Clauses of time said first stay first. With
+    the words read so, or the words as they are and ()."""
+    out, read = list(words), []
+    for k in range(len(out) - 3):
+        if out[k] == "if" and (k == 0 or out[k - 1] in (",", ".", "-")) and out[k + 1] in FRONTABLE_VALUES:
+            had = next((j for j in range(k + 3, min(k + 10, len(out) - 1)) if out[j] == "had"), None)
+            if had is None or set(out[k + 2:had]) & {",", "would", "."}:
+                continue
+            j = had + 2 + (out[had + 1] == "been" and out[had + 2].endswith("ing"))
+            value = out[k + 1]
+            out = [*out[:k + 1], *out[k + 2:j], value, *out[j:]]
+            read.append((f"if {value}", "if"))
+            break
+    # a question word, then the subject before its auxiliary: 'what way it was travelling when ...', 'toward which
+    # way the red jet was travelling', 'at what speed the bicycle was'
+    for k in range(len(out) - 3):
+        if out[k] in ("which", "what", "how") and (k == 0 or out[k - 1] in (",", "-", ":", "toward", "towards", "at",
+                                                                            "in")):
+            j = k + 1 + (out[k + 1] in WH_NOUNS)
+            s = 1 if out[j:j + 1] in (["it"], ["they"]) else next(
+                (m[1] for m in mentions(out[j:j + 6]) if m[0] == (out[j] in DETERMINERS)), None)
+            if out[j:j + 1] in (["it"], ["they"], ["the"], ["that"], ["this"]) and s and j + s < len(out) and \
+                    out[j + s] in ("was", "is", "were", "are") and j > k + 1:
+                start = k - (k > 0 and out[k - 1] in ("toward", "towards"))
+                said = [*out[k:j], out[j + s], *out[j:j + s]]
+                read.append((" ".join(out[start:j + s + 1]), " ".join(said)))
+                out = [*out[:start], *said, *out[j + s + 1:]]
+                break
+    if out[-1:] != ["?"]:
+        return (out, tuple(read)) if read else (words, ())
+    body = out[:-1]
+    if body[-2:-1] == [","] and body[-1] in INVERTED_TAGS:   # '..., did the suv , hmm ?'
+        body = body[:-2]
+    cut = max((k for k, w in enumerate(body) if w in (",", "-", ":")), default=-1)
+    last = body[cut + 1:]
+    lead = body[:cut + 1]
+    # the subject and its auxiliary last: '..., the gray jet is ?', 'moving the school bus was ?'
+    if len(last) >= 2 and last[-1] in INVERTED_AUXILIARIES:
+        s = _subject_at_end(last[:-1])
+        # (not a comparison's ellipsis: 'is the biplane faster than the truck is ?')
+        if s is not None and not (s == 0 and not lead) and last[s - 1:s] != ["than"] and \
+                not set(last[:s]) & (AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had"}):
+            subject, predicate, aux = last[s:-1], last[:s], last[-1]
+            if not predicate or len(predicate) == 1 and _is_verb(predicate[0]):
+                # '..., the gray jet is ?', '..., moving the bus was ?': a clause before says what is asked
+                lead, more = _predicate_clause(lead)
+                predicate = [*predicate, *more]
+            if predicate and predicate[0] not in QUESTION_OPENERS | ASKING:
+                said = [aux if aux not in PAST_MOTION else "was", *subject,
+                        *([PAST_MOTION[aux]] if aux in PAST_MOTION else []), *predicate]
+                if aux not in PAST_MOTION:
+                    said = [said[0], *_verb_moved(subject, predicate)]
+                read.append((" ".join(body), " ".join(said)))
+                return [*lead, *said, "?"], tuple(read)
+    # the auxiliary and the subject last after a verb phrase: 'collide with the bike , did the suv ?', 'outpace the
+    # blue one does the red one ?'
+    s = _subject_at_end(last)
+    if s is not None and s >= 1 and last[s - 1] in AUXILIARIES | {"will", "would"}:
+        aux, subject, predicate = last[s - 1], last[s:], last[:s - 1]
+        if not predicate and lead:
+            lead, predicate = _predicate_clause(lead)
+        if predicate and (asks_impact(predicate[:1]) or predicate[0] in VERBS_FIRST):
+            said = [aux, *subject, *predicate]
+            read.append((" ".join(body), " ".join(said)))
+            return [*lead, *said, "?"], tuple(read)
+    return (out, tuple(read)) if read else (words, ())
+
+
+# a verb phrase's first word that the inverted order puts first ('outpace the blue one does the red one')
+VERBS_FIRST = {"outpace", "outpaces", "outrun", "lag", "trail", "move", "go", "float", "hover", "accelerate",
+               "speed", "run", "drive", "travel", "overtake", "beat", "stand", "sit", "stay", "remain"}

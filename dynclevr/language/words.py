@@ -96,7 +96,8 @@ IMPERATIVES = (["tell", "me"], ["describe"], ["give", "me"], ["state"], ["name"]
 ASKING_FOR = (*IMPERATIVES, ["identify"], ["determine"], ["report"], ["find"], ["give"], ["list"])
 AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"],
                  ["is", "that", "right"], ["is", "that", "correct"], ["am", "i", "right"], ["am", "i", "correct"],
-                 ["would", "you", "say", "so"], ["right", "or", "wrong"])
+                 ["would", "you", "say", "so"], ["right", "or", "wrong"],
+                 ["straight", "up"], ["for", "real"], ["no", "cap"], ["deadass"], ["fr"])   # and slang's
 
 
 MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
