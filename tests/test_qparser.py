@@ -44,7 +44,7 @@ from dynclevr.language.surface import (archaic_as_said, code_switched_as_said, c
                                        worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        class_as_asked, comparative_as_said, floating_plane_as_vehicle,
+                                        class_as_asked, inverted_as_asked, comparative_as_said, floating_plane_as_vehicle,
                                         heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         negative_question_as_asked, noun_phrase_as_question, request_as_imperative,
                                         speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle)
@@ -56,7 +56,7 @@ from dynclevr.language.references import (COLOUR_SHADES, EVERYDAY_NAMES, abstrac
 from dynclevr.language.seq2seq import Ensemble, pad_batch
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.train import blind_baseline, fit, train_qparser
-from dynclevr.language.vocab import (EOS_ID, UNK_ID, Vocab, rejoined, run_together, scanned, slipped, slips,
+from dynclevr.language.vocab import (EOS_ID, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped, slips,
                                      sound_index, sound_key, sounded, stretched)
 from dynclevr.pipeline import Runner
 from dynclevr.questions.generate import templates
@@ -3334,3 +3334,96 @@ def test_a_vehicle_set_apart_and_a_ramble_before_the_question():
                       "filter_collision", "exist"]   # the ramble is context: its fuller mention names the bike
     # a clause of time is no vehicle set apart ('while they collide')
     assert distractors_dropped(tokenize("While the bus and the car collide, is the bus fast?"))[1] == ()
+
+
+def test_the_inverted_order_reads_its_subject_as_the_one_asked_about():
+    parser = QuestionParser.load()
+    faster, collide, crash, moving = parser.parse_batch([
+        "Faster than the yellow tandem bike at the start, the gray fighter jet is?",
+        "Collide with the red tandem bike, did the gray SUV?",
+        "After where the clip pauses, into the school bus crash the purple fighter jet will, hmm?",
+        "At the beginning, slower than the cyan chopper, moving the school bus was?"])
+    # (each was read with the other vehicle first: the answer of the other comparison)
+    assert faster[:4] == ["Objects", "filter_attributes[gray]", "filter_attributes[fighter]", "unique"]
+    assert faster[-2:] == ["start", "faster_velocity"]
+    assert collide[:5] == ["Events", "Objects", "filter_attributes[gray]", "filter_attributes[suv]", "unique"]
+    assert crash[:4] == ["futureEvents", "Objects", "filter_attributes[purple]", "filter_attributes[fighter]"]
+    assert moving[:3] == ["Objects", "filter_attributes[school_bus]", "unique"] and moving[-1] == "slower_velocity"
+    # a comparison's ellipsis is no inverted subject, nor is a question's own order
+    for said in ("at the start is the red biplane moving faster than the blue truck is ?",
+                 "is the red car faster than the bus at the start ?"):
+        assert inverted_as_asked(tokenize(said)) == (tokenize(said), ())
+    # a value said first in a condition: 'if slow it had been going' was read as fast
+    slow, = parser.parse_batch(["The bus, if slow it had been going at the start, does it hit the cyan dirt bike?"])
+    assert "Counterfactual_moving_slow" in slow
+
+
+def test_an_impact_said_first_and_a_bare_moment_are_times():
+    parser = QuestionParser.load()
+    striking, moment, topic = parser.parse_batch([
+        "Striking the gray minivan, how fast was the cyan bicycle going?",
+        "The moment it crashes into the school bus, what speed has the cyan motorbike got?",
+        "The motorbike, once the clip cuts off, is it going to hit the grey one, yes or no?"])
+    # (the minivan was read as the one asked about; the clause of the moment was dropped as an aside)
+    assert striking[:4] == ["Objects", "filter_attributes[cyan]", "filter_attributes[bicycle]", "unique"]
+    assert moment[-3:] == ["unique", "get_frame", "query_moving_velocity"] and "filter_collision" in moment
+    assert topic[:4] == ["futureEvents", "Objects", "filter_attributes[motorbike]", "unique"]
+    # a clause where the vehicle itself collides is no aside (it was dropped as one and the question refused)
+    partner, = parser.parse_batch(["The red private jet, the thing it crashes into, what colour is that?"])
+    assert partner == ["Events", "Objects", "filter_attributes[red]", "filter_attributes[jet]", "unique",
+                       "get_all_col_partners", "unique", "query_attributes[color]"]
+
+
+def test_chat_formatting_slang_and_a_dropped_g():
+    assert tokenize("/ask would the **bicycle** run into it if it'd been fast?")[:3] == ["would", "the", "*"]
+    assert "had" in tokenize("if it'd been fast") and tokenize("- where is it?")[0] == "where"
+    assert tokenize("the wagon ain't never moved")[2:] == ["never", "moved"]
+    assert tokenize("was she hovering? what's her speed?") == ["was", "it", "hovering", "?", "what", "'", "s", "its",
+                                                                 "speed", "?"]
+    assert tokenize("Bus-senpai (ﾟoﾟ;) is fast") == ["bus", "is", "fast"]
+    assert dropped_g("slowin", {"slow"}) == "slowing" and dropped_g("movin", {"moving"}) == "moving"
+    assert dropped_g("thin", {"thing"}) is None   # too short to be one
+    parser = QuestionParser.load()
+    assert_refused(parser, {"the chopper slowin down at the start or nah?": "slows down",
+                            "- where in the frame is the school bus at the start, left side or right side?": "where"})
+    tag, = parser.parse_batch(["blue one movin faster than the red one when they crash, straight up?"])
+    assert tag and tag[-1] == "faster_velocity"
+
+
+def test_a_story_told_again_otherwise_is_a_condition():
+    parser = QuestionParser.load()
+    rewrite, head = parser.parse_batch([
+        "You rewrite the scene so the grey mountain bike is speeding up from the very start. Would it then collide "
+        "with the purple pickup?",
+        "You replay it in your head with the car launching fast from the start. Does the car crash into the airliner "
+        "then?"])
+    # (both were read as what happens in the video, or after it)
+    assert "Counterfactual_accelerating" in rewrite and "Counterfactual_moving_fast" in head
+    # said where no rule makes it a condition, it is refused rather than read as what happened
+    assert_refused(parser, ["DIRECTOR: Rewrite the fighter jet floating from FADE IN. Does it hit the green one?"])
+
+
+def test_a_vehicle_called_she_fondness_a_script_s_times_and_a_fan_s_words():
+    parser = QuestionParser.load()
+    she, fond, top, edge, inch, senpai, beauty = parser.parse_batch([
+        "The purple biplane, was she hovering right at the beginning?",
+        "When things got going at the start, was that sweet blue tandem bike slower than the red motorbike?",
+        "DIRECTOR: At the top of the scene, is the pickup accelerating?",
+        "At the moment they hit, did the purple dirt bike have the edge in speed over the yellow SUV?",
+        "Suppose the yellow bendy bus never moved an inch from the beginning: would she have collided with the gray "
+        "car?",
+        "Yabai (ﾟoﾟ;) at the start, is the green sedan faster than Bus-senpai, the yellow one?",
+        "The red fighter jet, what a beauty: what was her speed the moment she first showed up in the frame?"])
+    assert she == ["Objects", "filter_attributes[purple]", "filter_attributes[biplane]", "unique", "start",
+                   "is_floating"]
+    assert fond[:4] == ["Objects", "filter_attributes[blue]", "filter_attributes[tandem_bike]", "unique"]
+    assert top == ["Objects", "filter_attributes[truck]", "unique", "start", "is_accelerating"]
+    # (an edge in speed was read as slow, an inch as slow)
+    assert edge[-1] == "faster_velocity" and "Counterfactual_static" in inch
+    assert senpai[4:8] == ["Objects", "filter_attributes[yellow]", "filter_attributes[bus]", "unique"]
+    assert beauty[-2:] == ["come_in_frame", "query_moving_velocity"]   # (read as the start)
+    # 'chop her' is a chopper heard apart, not a vehicle called her
+    chopper, = parser.parse_batch(["does the brown chop her hit anything"])
+    assert chopper[2:4] == ["filter_attributes[brown]", "filter_attributes[chopper]"]
+    # the script's end is the end, which no question asks
+    assert_refused(parser, ["How fast is the grey SUV moving at FADE OUT: static, slow or fast?"])

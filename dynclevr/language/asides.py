@@ -653,10 +653,11 @@ def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str]
         return [rest[-3], *topic, *rest[:-4], "?"], read
     start = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS | {"once", "after", "before"} and "," in rest \
         else 0
-    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and pronoun in rest \
-            and rest.index(pronoun) > start:
-        k = rest.index(pronoun)
-        return [*rest[:k], *topic, *rest[k + 1:]], read
+    own = {"it": "its", "they": "their"}[pronoun]
+    k = next((k for k in range(start, len(rest)) if rest[k] in (pronoun, own)), None)
+    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and k:
+        # ('what was its speed the moment it ...' -> 'what was the red fighter 's speed ...')
+        return [*rest[:k], *topic, *(["'", "s"] if rest[k] == own else []), *rest[k + 1:]], read
     return words, ()
 
 
@@ -695,6 +696,9 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 
 OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me little bus' as said in Ireland
 TOYS = {"toy", "toys", "model", "little", "wee"}
+# ... and fondness ('that sweet blue tandem bike', 'poor gray mountain bike', 'our trusty old pickup')
+FOND = {"sweet", "poor", "lovely", "old", "grand", "beautiful", "trusty", "beloved", "dear", "brave", "plucky",
+        "faithful", "gorgeous", "cute", "darling", "precious", "adorable", "bonny", "pretty", "mighty", "gallant"}
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -704,7 +708,7 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     vehicles differ only by colour and kind, so it describes one and picks none out; but not two materials set
     against each other ('the metal bus ... the rubber car'), which pick by what none has. With the words read so, or
     the words as they are and ()."""
-    decorative = TOYS | (LOOKS if len(MATERIALS.intersection(words)) < 2 else set())
+    decorative = TOYS | FOND | (LOOKS if len(MATERIALS.intersection(words)) < 2 else set())
     out, read, k = [], [], 0
     while k < len(words):
         j = k + (words[k] in OWNERS)

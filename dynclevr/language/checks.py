@@ -445,20 +445,29 @@ def comparison_unread(words: list[str], program: list[str]) -> str:
 
 
 # the words that say a question imagines its video otherwise (a label, an opener or 'instead')
+# a story told again otherwise ('You rewrite the scene so ...', 'an alternate take'), never the video going on
+REWRITING = {"rewrite", "rewrites", "rewriting", "rewritten", "reimagine", "reimagined", "reimagining", "alternate"}
 IMAGINING_SAID = {"imagine", "imagining", "suppose", "supposing", "pretend", "hypothetically", "hypothetical",
-                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif"}
+                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif",
+                  *REWRITING}
 
 
-def imagining_unread(words: list[str], program: list[str]) -> str:
+def imagining_unread(words: list[str], program: list[str], said_first: list[str] = ()) -> str:
     """Why a reading of what happened is not the question's ('' when it is): the question imagines otherwise ('brown
     motorbike starting slow instead, it hits the gray car?', 'cf: gray one starts slow instead -> ...' were read as
     whether it is slow at the collision), and no counterfactual was read. Only a reading about collisions, as every
     counterfactual is ('Picture this: ... is it crawling at the start?' imagines nothing), and not of the future
     ('suppose the clip went on for longer')."""
-    if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program or \
-            "futureEvents" in program:
+    if any(t.startswith("Counterfactual") for t in program) or "filter_collision" not in program:
         return ""
-    said = next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
+    # (a story told again is read in the words as first said too: its sentence may have been read as context)
+    told = next((w for w in [*words, *said_first] if w in REWRITING), None)
+    if "futureEvents" in program:
+        said = told
+        return "" if said is None else (f"the question imagines the video otherwise ('{said}'), but its nearest "
+                                        "reading asks what happens after it: ask as 'if X had been ... from the "
+                                        "start, would it hit Y?'")
+    said = told or next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
         next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
              None)   # 'the engine is on from the very start. Would the SUV hit the bike?'

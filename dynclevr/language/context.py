@@ -908,3 +908,39 @@ def told_otherwise_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple
     if words[k:k + 1] == [","]:
         return ["imagine", *words[k + 1:]], ((" ".join(words[:k + 1]), "imagine"),)
     return words, ()
+
+
+# A story told again otherwise, as a condition ('You rewrite the scene so the bike is speeding up from the start.',
+# 'You replay it in your head with the car launching fast', 'Alternate timeline where ...', 'DIRECTOR: Rewrite, ...')
+RETELLING = {"rewrite", "rewrites", "rewrote", "reimagine", "reimagines", "reimagined", "replay", "replays",
+             "replayed", "rerun", "reruns", "reran"}
+RETOLD = {"scene", "video", "clip", "shot", "take", "story", "footage", "film", "it", "things", "events", "timeline"}
+RETOLD_LINKS = (["so", "that"], ["such", "that"], ["so"], ["where"], ["with"], ["in", "which"], [":"], [","])
+TELLERS = {"you", "we", "i", "they", "now", "so", "then", "ok", "okay"}
+
+
+def retold_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'you rewrite the scene so the bike is speeding up ...' -> 'suppose the bike is speeding up ...'; 'you picture
+    the minivan starting slow' -> 'picture the minivan starting slow' (which reads as imagined). With the words read
+    so, or the words as they are and ()."""
+    for k in range(len(words)):
+        if k and words[k - 1] not in (".", ":", ";", "!", "?"):
+            continue
+        j = k
+        while words[j:j + 1] and words[j] in TELLERS:
+            j += 1
+        if words[j:j + 1] and words[j] in ("picture", "imagine", "suppose", "envision", "pictured", "imagined") \
+                and j > k:
+            return words[:k] + words[j:], ((" ".join(words[k:j + 1]), words[j]),)
+        alternate = words[j:j + 2] in (["alternate", w] for w in ("take", "timeline", "version", "world", "universe",
+                                                                   "ending", "cut"))
+        if words[j:j + 1] and words[j] in RETELLING or alternate:
+            m = j + (2 if alternate else 1)
+            m += words[m:m + 1] in (["the"], ["this"]) and words[m + 1:m + 2] != [] and words[m + 1] in RETOLD
+            m += words[m:m + 1] != [] and words[m] in RETOLD and not alternate
+            m += 3 * (words[m:m + 3] in (["in", "your", "head"], ["in", "my", "head"], ["in", "our", "heads"]))
+            link = next((p for p in RETOLD_LINKS if words[m:m + len(p)] == p), None)
+            if link and words[m + len(link):m + len(link) + 1] not in ([], ["?"]):
+                n = m + len(link)
+                return words[:k] + ["suppose", *words[n:]], ((" ".join(words[k:n]), "suppose"),)
+    return words, ()

@@ -66,7 +66,7 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
-                                       impact_said_first, scenario_as_asked, settings_as_imagined,
+                                       impact_said_first, retold_as_imagined, scenario_as_asked, settings_as_imagined,
                                        told_otherwise_as_imagined, transcript_as_asked)
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
@@ -81,7 +81,7 @@ from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
-                                       homophones_as_said, quoted_question, shorthand_as_said, spelt_by_ear,
+                                       homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
                                        telegram_as_said, worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
 from dynclevr.language.tokenize import SPELLINGS, tokenize
@@ -271,14 +271,14 @@ class QuestionParser:
             or future_unread(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
             or comparison_unread(read, c.program)
-            or imagining_unread(said, c.program) or floating_unread(said, c.program)
+            or imagining_unread(said, c.program, tokenize(text)) or floating_unread(said, c.program)
             or condition_unsaid(said + [w for a, _ in c.read_as for w in a.split()], c.program)
             or motion_unread(said, c.program)
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
             or acceleration_unread(said, c.program) or acceleration_unsaid(read, c.program)
             or end_unread(said + read, c.program) or size_unread(said, c.program)) else c
-            for c, said, read in zip(chosen, said_words, read_words)]
+            for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
         """The question's words, unknown ones read as known ones where it can and typos fixed, or a reason it cannot
@@ -321,6 +321,8 @@ class QuestionParser:
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
         words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
+        words, her = she_as_it(words)
+        by_ear += her
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
         words, looked = described_as_named(words)
@@ -330,6 +332,8 @@ class QuestionParser:
         named += looked + attributed + clause + glossed
         words, corrected = corrections_dropped(words)
         words, setting = settings_as_imagined(words)
+        words, retold = retold_as_imagined(words)
+        setting += retold
         words, scenario = scenario_as_asked(words)
         words, told = told_otherwise_as_imagined(words)
         corrected += setting + scenario + told

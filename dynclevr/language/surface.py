@@ -681,3 +681,17 @@ def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[st
            else said for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
     read = tuple((said, w) for said, w in zip(words, out) if said != w)
     return (out, tuple(dict.fromkeys(read))) if read else (words, ())
+
+
+# a vehicle called 'she' ('was she hovering at the start, the purple biplane?', 'what was her speed'): the videos
+# show no people, so 'she' is 'it'
+HER_NOUNS = {"speed", "velocity", "direction", "heading", "engine", "pace", "way", "color", "kind", "type", "own",
+             "motion", "path"}
+
+
+def she_as_it(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'was she fast' -> 'was it fast', 'her speed' -> 'its speed', 'hit her' -> 'hit it'. (After the words heard
+    as others: 'chop her' is a chopper.) With the words read so, or the words as they are and ()."""
+    out = [("its" if w == "her" and words[k + 1:k + 2] and words[k + 1] in HER_NOUNS else "it")
+           if w in ("she", "her", "hers") else w for k, w in enumerate(words)]
+    return (out, (("she", "it"),)) if out != words else (words, ())

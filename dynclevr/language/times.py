@@ -224,6 +224,8 @@ PICTURING = (["imagine"], ["picture"], ["consider"], ["envision"], ["visualise"]
              ["think", "of"], ["think", "about"], ["thinking", "of"], ["thinking", "about"], ["picturing"],
              ["imagining"], ["considering"])
 MOMENTS = {"moment", "instant", "point", "second"}
+NOT_BEFORE_MOMENT = {"at", "from", "since", "until", "till", "by", "to", "in", "on", "of", "for", "that", "this",
+                     "the", "what", "which", "after", "before", "during", "just", "right", "exactly", "precisely"}
 BARE_MOMENT_NEXT = {"it", "they", "the", "that", "when", "of", "both", "these", "those", "this"}
 
 
@@ -247,8 +249,10 @@ def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     if words[:1] and words[0].endswith("ing") and asks_impact(words[:1]) and "," in words[1:8] and "?" in words:
         return ["when", *words], ((words[0], f"when {words[0]}"),)
     # ... or said bare as a clause of time ('The moment it crashes into the school bus, what speed ...?')
+    # (or after the words it says the time of: 'what was its speed the moment it first showed up ?')
     k = next((k for k in range(len(words) - 2) if words[k:k + 2] in (["the", "moment"], ["the", "instant"]) and (
-        k == 0 or words[k - 1] in CLAUSE_SEPARATORS) and words[k + 2] in BARE_MOMENT_NEXT), None)
+        k == 0 or words[k - 1] in CLAUSE_SEPARATORS or words[k - 1].isalpha() and words[k - 1] not in NOT_BEFORE_MOMENT
+        and words[k + 2] in ("it", "they")) and words[k + 2] in BARE_MOMENT_NEXT), None)
     if k is not None:
         return words[:k] + ["at"] + words[k:], ((" ".join(words[k:k + 2]), "at the moment"),)
     return words, ()

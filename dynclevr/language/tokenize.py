@@ -37,6 +37,12 @@ _LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
 _HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
 
 
+# A fan's honorific on a vehicle's name ('Bus-senpai', 'bicycle-chan'), a kaomoji ('(ﾟoﾟ;)'), a script's beat
+_HONORIFIC = re.compile(r"-(?:chan|kun|senpai|sama|san|tan)\b")
+_KAOMOJI = re.compile(r"\((?=[^()\s]*[;^\u00b0\u309a\u309c\u00b4`~\u03c9])[^()\s]{1,12}\)"
+                      r"|\((?:a )?(?:beat|pause|long beat)\)")
+
+
 _SAID_MARKS = {"comma": " , ", "question mark": " ? ", "full stop": " . ", "period": " . ", "new line": " ",
                "new paragraph": " ", "exclamation mark": " ! ", "exclamation point": " ! "}
 _DICTATED = re.compile(r"\b(comma|question mark|new line|new paragraph|exclamation (?:mark|point))\b"
@@ -58,6 +64,7 @@ def tokenize(text: str) -> list[str]:
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
     text = _HAD.sub(r"\1 had", _LEAD.sub("", text))
+    text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
     text = _MENTION.sub(" ", text)
     text = _GLOSS.sub(lambda m: " " + m.group(1) + m.group(2) + " " if m.group(1) + m.group(2) in ("ie", "eg")
                       else m.group(0), text)

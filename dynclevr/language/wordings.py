@@ -477,6 +477,23 @@ IDIOMS = phrase_table({
                            ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
                            ("when", "everything", "kicks", "off"), ("from", "the", "off"), ("from", "the", "jump"),
                            ("off", "the", "jump"))},
+    # a script's 'top of the scene' and 'fade in' (its 'fade out' the end, which no question asks)
+    **{(*a, "top", "of", "the", f): ("the", "start") for a in ((), ("the",)) for f in (
+        "scene", "take", "shot", "clip", "video", "reel", "footage", "hour", "show")},
+    ("fade", "in"): ("the", "start"), ("fade", "out"): ("the", "end"), ("fade", "-", "in"): ("the", "start"),
+    ("fade", "-", "out"): ("the", "end"),
+    # the whole of the video is the video ('over the whole clip', 'the entire time')
+    **{(p, d, w, f): (p, d, f) for p in ("over", "during", "in", "throughout", "across") for d in ("the", "this")
+       for w in ("whole", "entire", "full") for f in ("video", "clip", "footage", "film", "recording", "scene")},
+    # an edge in speed is more of it ('did the dirt bike have the edge in speed over the suv ?')
+    **{(h, "the", "edge", *s, "over"): (g, "faster", "than") for h, g in (("have", "go"), ("has", "goes"),
+       ("had", "went")) for s in ((), ("in", "speed"), ("in", "pace"))},
+    # a kind of pace is a speed ('what sort of pace was she keeping'), coming to grief a collision
+    **{("what", k, "of", "pace"): ("what", "speed") for k in ("kind", "sort", "type")},
+    **{(v, "to", "grief", p): (h, "into") for v, h in (("come", "crash"), ("came", "crashed"), ("comes", "crashes"))
+       for p in ("against", "on", "with")},
+    # not an inch is not at all ('never moved an inch': it was read as slow)
+    **{(v, "an", "inch"): (v,) for v in ("moved", "move", "moves", "budged", "budge", "budges")},
     # the video's end said as what someone did to it ('finna hit something after where they stopped the video?')
     **{(*a, "they", v, "the", f): ("after", "the", "video", "ends") for a in (("after", "where"), ("after",), ("past",
        "where")) for v in ("stopped", "cut", "paused", "ended") for f in ("video", "clip", "footage")},

@@ -24,7 +24,9 @@ PLURALS = {"vehicles", "objects", "things", "cars", "buses", "bikes", "bicycles"
 CHAT = {"ngl", "tbh", "idk", "imo", "imho", "fr", "smh", "omg", "lowkey", "srsly", "tbf"}   # a chat's asides
 INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well", "ok", "okay", "alright", "oh", "ah",
                  "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
-                 "evening", "sure", "roger", "copy", "dude", "bro"} | CHAT
+                 "evening", "sure", "roger", "copy", "dude", "bro",
+                 # a fan's Japanese ('yabai, was the cyan one ...', 'sugoi!')
+                 "yabai", "sugoi", "nani", "kawaii", "ara", "hontou", "desu", "uwu", "owo"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
@@ -38,7 +40,7 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
                          "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah", "na", "yaar", "diba",
                          "naman", "po",
                          # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
-                         "affirmative", "roger"} | CHAT
+                         "affirmative", "roger", "ne", "desu", "nani"} | CHAT
 
 
 SENTENCE_ENDS = {".", "!", "?"}
