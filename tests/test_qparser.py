@@ -40,7 +40,7 @@ from dynclevr.language.refusals import (chained, checked_attribute, imagined_oth
                                         times_joined)
 from dynclevr.language.surface import (archaic_as_said, code_switched_as_said, corrections_starred, creole_as_said,
                                        emoji_as_said, glosses_read, homophones_as_said, lettered_options,
-                                       quoted_question, shorthand_as_said, spelt_by_ear, telegram_as_said,
+                                       quoted_question, she_as_it, shorthand_as_said, spelt_by_ear, telegram_as_said,
                                        worksheet_as_said)
 from dynclevr.language.times import first_frames_as_said, inserted_time_last, video_end_as_said
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
@@ -3378,8 +3378,8 @@ def test_chat_formatting_slang_and_a_dropped_g():
     assert tokenize("/ask would the **bicycle** run into it if it'd been fast?")[:3] == ["would", "the", "*"]
     assert "had" in tokenize("if it'd been fast") and tokenize("- where is it?")[0] == "where"
     assert tokenize("the wagon ain't never moved")[2:] == ["never", "moved"]
-    assert tokenize("was she hovering? what's her speed?") == ["was", "it", "hovering", "?", "what", "'", "s", "its",
-                                                                 "speed", "?"]
+    assert she_as_it(tokenize("was she hovering? what's her speed?"))[0] == [
+        "was", "it", "hovering", "?", "what", "'", "s", "its", "speed", "?"]
     assert tokenize("Bus-senpai (ﾟoﾟ;) is fast") == ["bus", "is", "fast"]
     assert dropped_g("slowin", {"slow"}) == "slowing" and dropped_g("movin", {"moving"}) == "moving"
     assert dropped_g("thin", {"thing"}) is None   # too short to be one
