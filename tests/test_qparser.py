@@ -2282,7 +2282,8 @@ def test_vehicles_said_first_then_asked_as_they_or_it_and_lagging_behind():
         tokenize("do Blue minivan and green chopper crash into each other?")
     assert dislocated_as_asked(tokenize("The green sedan, it collide with something in the video?"))[0] == \
         tokenize("does The green sedan collide with something in the video?")
-    assert dislocated_as_asked(tokenize("The red sedan, is it fast?"))[0] == tokenize("The red sedan, is it fast?")
+    # ... or asked about in a question of its own ('the motorbike , once the clip cuts off , is it going to ...')
+    assert dislocated_as_asked(tokenize("The red sedan, is it fast?"))[0] == tokenize("is The red sedan fast?")
     parser = QuestionParser.load()
     lagging, together = parser.parse_batch([
         "Is the blue airliner lagging behind the purple suv in speed at the beginning?",
@@ -3427,3 +3428,29 @@ def test_a_vehicle_called_she_fondness_a_script_s_times_and_a_fan_s_words():
     assert chopper[2:4] == ["filter_attributes[brown]", "filter_attributes[chopper]"]
     # the script's end is the end, which no question asks
     assert_refused(parser, ["How fast is the grey SUV moving at FADE OUT: static, slow or fast?"])
+
+
+def test_a_viewer_s_premise_regional_names_and_walks_of_life_s_motion_words():
+    parser = QuestionParser.load()
+    seeing, footage, identified, bakkie, stop, better, hammer = parser.parse_batch([
+        "If I'm seeing the impact right, was the plane slower than the car when they collided?",
+        "Provided the clip isn't edited, how fast is the green SUV moving at the moment it hits the yellow pickup?",
+        "If I'm reading the colours right, had the purple one been accelerating from the beginning, would it have "
+        "struck the yellow car?",
+        "Is the blue bakkie standing still at the start of the clip?",
+        "Suppose the yellow mountain bike had been at a dead stop from the beginning; would it and the grey pickup "
+        "have collided?",
+        "When the clip opens, is the double-decker making better speed than the green station wagon?",
+        "If the blue double-decker had been putting the hammer down from the start, would it have struck the red "
+        "motorbike?"])
+    # (each premise of the viewer's, or of the footage, was refused as a premise or read as a condition)
+    assert seeing[-1] == "slower_velocity" and footage[-1] == "query_moving_velocity"
+    assert "Counterfactual_accelerating" in identified
+    # ('bakkie' was heard as 'bike')
+    assert bakkie == ["Objects", "filter_attributes[blue]", "filter_attributes[truck]", "unique", "start",
+                      "is_static"]
+    assert "Counterfactual_static" in stop and better[-1] == "faster_velocity"
+    assert "Counterfactual_accelerating" in hammer
+    # a premise about what the vehicles did is no viewer's: 'assuming the bus had stopped' stays a premise
+    assert_refused(parser, ["Assuming the footage is accurate up to where it stops, will the brown sedan hit "
+                            "anything after that?"])

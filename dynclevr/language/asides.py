@@ -184,6 +184,37 @@ SOFTENED = {"was", "is", "were", "are", "did", "does", "do", "will", "has", "had
 SOFTENERS = {"possibly", "perhaps", "probably", "maybe"}
 
 
+# A premise of the viewer's, or of the footage, said first: no change to what the video shows ('If I'm seeing it
+# right, ...', 'Assuming the footage is accurate, ...', 'Unless I missed something, ...', 'Provided I've identified the
+# fighter jet correctly, supposing it had ...')
+PREMISE_OPENERS = (["if"], ["assuming", "that"], ["assuming"], ["provided", "that"], ["provided"], ["providing"],
+                   ["supposing"], ["unless"], ["as", "long", "as"])
+VIEWER_WORDS = {"i", "me", "my", "we", "our", "us", "you", "your", "memory", "eyes"}
+FOOTAGE_WORDS = {"footage", "clip", "video", "camera", "frames", "recording", "colors", "hues", "edited", "cropped"}
+IDENTIFYING = {"right", "correct", "correctly", "identified", "spotted", "straight"}
+GOING_ON = {"continued", "continues", "kept", "keeps", "went", "gone", "goes", "on", "playing", "watching", "rolling",
+            "running", "longer", "further", "more"}
+
+
+def _viewer_premise(words: list[str]) -> int | None:
+    """Where a premise of the viewer's said first ends (past its comma), or None."""
+    opener = next((o for o in PREMISE_OPENERS if words[:len(o)] == o), None)
+    end = next((k for k in range(len(opener or []), min(len(words), 16)) if words[k] == ","), None)
+    if opener is None or end is None or not words[end + 1:end + 2]:
+        return None
+    clause = set(words[len(opener):end])
+    said = clause & (VIEWER_WORDS | FOOTAGE_WORDS)
+    # (not the video going on: 'if the video went on , would ...', 'if we kept watching , ...')
+    if not said or clause & ({"had", "were", "would"} | GOING_ON | MOTION_WORDS | SPEED_CLASS_WORDS | STATIC_SAID - {"not"}
+                             | AFLOAT_SAID | END_WORDS | STOP_CUES | START_WORDS) or \
+            asks_impact(list(clause)) and not clause & VIEWER_WORDS or \
+            NAMING & clause and not (clause & IDENTIFYING and clause & VIEWER_WORDS):
+        return None
+    after = words[end + 1]
+    return end + 1 if after in QUESTION_OPENERS | TIME_OPENERS | {"had", "if", "suppose", "supposing", "what",
+                                                                  "which", "how"} else None
+
+
 def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'not sure , but did the sedan hit the bus ?' and 'sorry if this is a silly question , but does ...' -> 'did the
     sedan hit the bus ?', 'does ...'; 'was it slower , or am i misremembering ?' -> 'was it slower ?'; '...; is that
@@ -208,6 +239,10 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if cut is not None:
         read.append((" ".join(out[:cut]), "nothing, a doubt"))
         out = out[cut:]
+    premise = _viewer_premise(out)
+    if premise:
+        read.append((" ".join(out[:premise]), "nothing, a premise of the viewer's"))
+        out = out[premise:]
     polite = POLITE_IF.match(" ".join(out))
     if polite and not NAMING & set(polite.group(0).split()):
         read.append((polite.group(0).strip(), "nothing, a courtesy"))

@@ -669,7 +669,9 @@ def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[st
     (`vocab.sound_index` of SPELT_BY_EAR) it sounds like (`vocab.sounded`), where it stands in a vehicle's
     description. With the words read so, or the words as they are and ()."""
     # (a slip of the fingers is read as one first: 'cash' is 'crash', 'fater' 'faster')
+    # (nor a vehicle's everyday name: 'bakkie' is a pickup, not a 'bike')
     heard = {w: k for w in set(words) if w not in readable and w not in SPELT_BY_EAR | NOT_SPELT_BY_EAR
+             and w not in EVERYDAY_NAMES
              and not slips(w, readable, SPELLINGS) and (k := sounded(w, index))}
     if not heard:
         return words, ()

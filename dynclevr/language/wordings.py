@@ -639,6 +639,24 @@ IDIOMS = phrase_table({
                            ("right", "off", "the", "top"), ("off", "the", "top"),
                            *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape",
                                                                              "hour")))},
+    # a rider's, a runner's and a driver's words ('at a dead stop', 'at a gallop', 'jogging along', 'making better
+    # speed than', 'at a gentler pace than', 'putting the hammer down', 'fetched up against')
+    ("at", "a", "dead", "stop"): ("static",), ("at", "anchor"): ("static",),
+    **{p: ("fast",) for p in (("at", "a", "gallop"), ("at", "full", "gallop"), ("at", "a", "sprint"),
+                              ("at", "full", "sprint"))},
+    **{p: ("slowly",) for p in (("at", "a", "jog"), ("at", "a", "trot"))},
+    ("jogging", "along"): ("moving", "slowly"),
+    **{("making", m, "speed", "than"): ("moving", said, "than") for m, said in (
+        ("better", "faster"), ("more", "faster"), ("less", "slower"), ("worse", "slower"))},
+    **{("at", "a", m, "pace", "than"): (said, "than") for m, said in (
+        ("gentler", "slower"), ("slower", "slower"), ("lower", "slower"), ("faster", "faster"), ("quicker", "faster"),
+        ("higher", "faster"), ("brisker", "faster"))},
+    **{(w, "up", "the", "pace"): (a,) for w, a in (("winding", "accelerating"), ("winds", "accelerates"))},
+    **{(p, "the", "hammer", "down"): (a,) for p, a in (("putting", "accelerating"), ("puts", "accelerates"),
+                                                       ("put", "accelerated"))},
+    **{(f, "up", "against"): (c, "into") for f, c in (("fetched", "crashed"), ("fetches", "crashes"),
+                                                       ("fetch", "crash"))},
+    **{(*i, "throttle", "open"): ("engine", "on") for i in ((), ("the",))},
     # a ship's words for moving and standing ('dead in the water', 'making less way than')
     ("dead", "in", "the", "water"): ("static",), ("making", "way"): ("moving",), ("make", "way"): ("move",),
     **{("making", more, "way", "than"): ("moving", said, "than") for more, said in (("less", "slower"),
