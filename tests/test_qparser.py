@@ -3454,3 +3454,26 @@ def test_a_viewer_s_premise_regional_names_and_walks_of_life_s_motion_words():
     # a premise about what the vehicles did is no viewer's: 'assuming the bus had stopped' stays a premise
     assert_refused(parser, ["Assuming the footage is accurate up to where it stops, will the brown sedan hit "
                             "anything after that?"])
+
+
+def test_british_indirectness_and_a_relative_clause_s_that_s():
+    parser = QuestionParser.load()
+    suppose, right, mind, grateful, wondering, happen, plane = parser.parse_batch([
+        "I don't suppose the blue city bus was going terribly fast at the start, was it?",
+        "Am I right in supposing the brown station wagon was only going slowly when it ran into the red bicycle?",
+        "Which way is the brown chopper heading at the start, if you don't mind my asking?",
+        "I'd be ever so grateful to know in what direction the bendy bus is travelling in the opening moments.",
+        "One can't help wondering in which direction the scooter was going when it clipped the grey pickup.",
+        "Does the yellow bicycle happen to bump into the brown bus at some stage?",
+        "What colour is the plane that's hovering in the air at the start?"])
+    # ('I don't suppose' was read as a negation, the courtesy after the question as one)
+    assert suppose == ["Objects", "filter_attributes[blue]", "filter_attributes[regular_bus]", "unique", "start",
+                       "is_moving_velocity[fast]"]
+    assert right[-1] == "is_moving_velocity[slow]" and mind[-2:] == ["start", "query_moving_direction"]
+    assert grateful[-2:] == ["start", "query_moving_direction"] and wondering[-1] == "query_moving_direction"
+    assert happen[0] == "Events" and plane == ["Objects", "start", "filter_floating", "unique",
+                                               "query_attributes[color]"]
+    # which was hit first asks one of two in turn; what a vehicle hits first is its first partner
+    assert_refused(parser, {"Which of the two, the bus or the motorbike, was hit first?": "in turn"})
+    first, = parser.parse_batch(["What colour is the vehicle the bus hits first?"])
+    assert first[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]

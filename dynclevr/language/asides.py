@@ -257,6 +257,15 @@ def hedges_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         n = 1 + (out[k] in ("kind", "sort"))
         read.append((" ".join(out[k:k + n]), "nothing, a softener"))
         out = out[:k] + out[k + n:]
+    # a courtesy or a musing after the question (', if you don't mind my asking?', ', I wonder?')
+    tail = next((k for k in range(max(1, len(out) - 12), len(out) - 2) if out[k] == "," and (
+        out[k + 1] == "if" and {"you", "i", "it", "my"} & set(out[k + 2:-1]) and "guess" not in out[k:] or out[
+            k + 1:-1] in (
+            ["i", "wonder"], ["i", "suppose"], ["i", "wonder", "?"]))), None)
+    if tail and out[-1:] == ["?"] and not (NAMING | START_WORDS | END_WORDS | MOTION_WORDS | AFLOAT_SAID) & set(
+            out[tail:]) and not asks_impact(out[tail:]) and tail > 3:
+        read.append((" ".join(out[tail:-1]), "nothing, a courtesy"))
+        out = out[:tail] + ["?"]
     if out[-1:] == ["?"]:
         doubt = next((k for k in range(1, len(out) - 3) if out[k:k + 2] == [",", "or"] and out[k + 2] in DOUBTING
                       and "i" in out[k + 2:k + 5] and not NAMING & set(out[k:])), None)
@@ -294,6 +303,13 @@ CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"],
               *(("is", "it", "not", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
               *(("is", "not", "it", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
               ("is", "it", "the", "case", "that"),
+              # British indirectness ('Am I right in thinking ...', 'I don't suppose the bus was ..., was it?')
+              *((*am, right, "in", think, *that) for am in (("am", "i"), ("would", "i", "be")) for right in (
+                  "right", "correct") for think in ("thinking", "supposing", "saying", "believing")
+                for that in ((), ("that",))),
+              *(("am", "i", right, "that") for right in ("right", "correct")),
+              *(("i", *rather, *verb, *that) for rather in ((), ("rather",)) for verb in (
+                  ("do", "not", "suppose"), ("suspect",), ("suppose",), ("gather",)) for that in ((), ("that",))),
               # a report put to be confirmed ('Sources tell us the bus was parked; can we confirm that?')
               *((*said, *that) for said in (("sources", "tell", "us"), ("sources", "say"), ("we", "are", "told"),
                                             ("we", "'", "re", "told"), ("i", "am", "told"), ("i", "'", "m", "told"),
@@ -420,7 +436,9 @@ REQUESTING = {"clarify", "clarified", "state", "stated", "specify", "specified",
               "seek", "seeks", "request", "requests", "requested", "speculate", "forecast", "evident", "clear",
               "obvious", "unclear", "sure", "certain", "tell", "verify", "verified", "document", "documented",
               # a question relayed ('A coworker asked me how quickly ...', 'Mum wondered which colour ...')
-              "asked", "wondered", "wonders", "curious", "pestering"}
+              "asked", "wondered", "wonders", "curious", "pestering",
+              # ... and British indirectness ('One can't help wondering in which direction ...')
+              "wondering"}
 _REQUESTED = ("whether", "if", "how", "what", "which", "that", "the")
 CONFIRMING_VERBS = {"confirm", "confirmed", "verify", "verified", "establish", "established"}
 OBJECT_TAKING = CONFIRMING_VERBS | {"state", "report", "specify", "clarify", "indicate", "determine", "explain",
@@ -439,6 +457,7 @@ def _requested_at(words: list[str], k: int) -> int | None:
     j = k + 1
     for skip in (_ASKED_FOR, _ASKED_AS):
         j += next((len(s) for s in skip if words[j:j + len(s)] == s), 0)
+    j += words[j:j + 1] == ["in"] and words[j + 1:j + 2] in (["what"], ["which"])   # 'to know in what direction
     # 'report the speed of', never 'ask the authors'; 'not evident whether', never 'dead certain the ...'
     asked = _REQUESTED[:5] + ("that",) * (j > k + 1 or words[k] in CONFIRMING_VERBS) + \
         ("the",) * (words[k] in OBJECT_TAKING)
@@ -676,6 +695,9 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
 
 
+SUBJECT_AFTER = {"when", "once", "as", "after", "before", "while", "until", "till", "since"}
+
+
 def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'the motorbike , once the clip cuts off , is it going to hit ...' -> 'once the clip cuts off , is the motorbike
     going to hit ...'; 'the bus and the car - at any point collide , do they ?' -> 'do the bus and the car at any
@@ -689,8 +711,11 @@ def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str]
     start = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS | {"once", "after", "before"} and "," in rest \
         else 0
     own = {"it": "its", "they": "their"}[pronoun]
-    k = next((k for k in range(start, len(rest)) if rest[k] in (pronoun, own)), None)
-    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and k:
+    # (the first 'it', or the subject of the clause of time: 'the purple one , as soon as it appears , how quick is
+    # it ...'; not in an inverted clause's: 'when into the purple wagon it bumped')
+    k = next((k for k in range(1, start) if rest[k] == pronoun and rest[k - 1] in SUBJECT_AFTER), None) or next(
+        (k for k in range(start, len(rest)) if rest[k] in (pronoun, own)), None)
+    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and k is not None:
         # ('what was its speed the moment it ...' -> 'what was the red fighter 's speed ...')
         return [*rest[:k], *topic, *(["'", "s"] if rest[k] == own else []), *rest[k + 1:]], read
     return words, ()

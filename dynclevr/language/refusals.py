@@ -173,7 +173,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     later = next((" ".join(said[k:k + 2]) for k in range(len(said) - 1) if said[k] in ORDINALS and (
         said[k + 1] in GENERIC_NOUNS | OBJECT_WORDS | {"time", "partner"} or asks_impact(said[k + 1:k + 2]))), None) \
         or next((" ".join(said[k - 1:k + 1]) for k in range(1, len(said)) if said[k] in ORDINALS - {"next"}
-                 and asks_impact(said[k - 1:k])), None)   # 'what does the truck hit third?'
+                 and asks_impact(said[k - 1:k])), None) \
+        or next((" ".join(said[k - 1:k + 1]) for k in range(2, len(said)) if said[k] == "first" and
+                 asks_impact(said[k - 1:k]) and said[k + 1:k + 2] in ([], ["?"], ["."], [","]) and (
+                     said[k - 2] in ("was", "were", "is", "are", "got", "gets", "get", "be", "been")
+                     or said[k - 1].startswith(("collid", "crash", "bump", "smash")))), None)
+    # ('what does the truck hit third?', 'which of the two was hit first?'; 'what does it hit first?' asks the
+    # first partner, as a partner's question does)
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")

@@ -35,6 +35,8 @@ _GLOSS = re.compile(r"\b([ie])\.\s?([eg])\.?(?=[\s,:)]|$)")
 _LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
 # 'it'd been' is 'it had been' ('it'd had' and "I'd like" the rules read as said)
 _HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
+# 'the plane that's hovering' is 'that is' (a relative clause's, as the grammar says it)
+_THAT_IS = re.compile(r"\b(that|which|who)'s(?= (?:[a-z]+ing|still|parked|static|stationary|fast|slow|moving)\b)")
 
 
 # A fan's honorific on a vehicle's name ('Bus-senpai', 'bicycle-chan'), a kaomoji ('(ﾟoﾟ;)'), a script's beat
@@ -63,7 +65,7 @@ def tokenize(text: str) -> list[str]:
     text = _AINT.sub(lambda m: "never" if m.group(1) else "is not", text)
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _DROPPED_G.sub(r"\1g", text)
-    text = _HAD.sub(r"\1 had", _LEAD.sub("", text))
+    text = _THAT_IS.sub(r"\1 is", _HAD.sub(r"\1 had", _LEAD.sub("", text)))
     text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
     text = _MENTION.sub(" ", text)
     text = _GLOSS.sub(lambda m: " " + m.group(1) + m.group(2) + " " if m.group(1) + m.group(2) in ("ie", "eg")

@@ -639,6 +639,13 @@ IDIOMS = phrase_table({
                            ("right", "off", "the", "top"), ("off", "the", "top"),
                            *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape",
                                                                              "hour")))},
+    # British understatement: 'does it happen to bump into', 'manage to collide', 'terribly fast', 'at some stage'
+    **{(h, "to", v): (v,) for h in ("happen", "happens", "happened", "manage", "manages", "managed") for v in (
+        "bump", "hit", "collide", "crash", "touch", "run", "strike", "smash", "knock", "clip", "graze", "tap", "meet",
+        "be", "move", "go", "float", "hover", "have", "speed", "accelerate", "come", "get", "end")},
+    **{(i, v): (v,) for i in ("terribly", "awfully", "frightfully", "dreadfully") for v in (
+        "fast", "slow", "slowly", "quickly", "quick")},
+    ("at", "some", "stage"): ("at", "some", "point"),
     # a rider's, a runner's and a driver's words ('at a dead stop', 'at a gallop', 'jogging along', 'making better
     # speed than', 'at a gentler pace than', 'putting the hammer down', 'fetched up against')
     ("at", "a", "dead", "stop"): ("static",), ("at", "anchor"): ("static",),
