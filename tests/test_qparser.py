@@ -3477,3 +3477,31 @@ def test_british_indirectness_and_a_relative_clause_s_that_s():
     assert_refused(parser, {"Which of the two, the bus or the motorbike, was hit first?": "in turn"})
     first, = parser.parse_batch(["What colour is the vehicle the bus hits first?"])
     assert first[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]
+
+
+def test_the_video_said_to_stop_makes_a_present_collision_one_after_the_cut():
+    parser = QuestionParser.load()
+    cut, bit, paused = parser.parse_batch([
+        "The clip's been cut short. Is the fighter jet headed for a crash with the blue bus?",
+        "We only get the first bit of the video. Does the green motorbike bump into anything later?",
+        "When the paused video starts up again, does the yellow one make contact with anything?"])
+    # (each was read within the video)
+    assert cut[:3] == ["futureEvents", "Objects", "filter_attributes[fighter]"] and bit[0] == paused[0] == \
+        "futureEvents"
+    assert_refused(parser, {"Would the blue sedan have hit the truck if both of them had been standing still?":
+                            "several vehicles"})
+
+
+def test_a_comparison_in_the_passive_or_as_a_contest():
+    parser = QuestionParser.load()
+    outpaced, beaten, behind, beat, trailing = parser.parse_batch([
+        "Is the bus outpaced by the car at the start?",
+        "Is the red motorbike beaten for speed by the sedan at the start?",
+        "Is the brown tandem bike left behind by the red car at the moment of impact?",
+        "Does the cyan chopper beat the green pickup for speed at the very beginning?",
+        "At the start, is the pickup trailing the biplane for speed?"])
+    # the one outdone is the slower; the one asked about stays first (each was refused)
+    assert outpaced == ["Objects", "filter_attributes[bus]", "unique", "Objects", "filter_attributes[car]", "unique",
+                        "start", "slower_velocity"]
+    assert beaten[-1] == behind[-1] == trailing[-1] == "slower_velocity" and beat[-1] == "faster_velocity"
+    assert behind[1:3] == ["filter_attributes[brown]", "filter_attributes[tandem_bike]"]

@@ -32,13 +32,14 @@ from dynclevr.language.context import _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
-from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
-                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS, COMPARING, COMPARISONS,
-                                     CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS,
-                                     FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES,
-                                     MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NUMBERS, PARTNER_SAID,
-                                     QUERY_NOUNS, REST_WORDS, RESTING, REVERSERS, SPEED_CLASS_WORDS, START_WORDS,
-                                     STATIC_SAID, STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS, asks_impact, _head)
+from dynclevr.language.words import (STOPPED_SAID, ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR,
+                                     ATTRIBUTE_NOUNS, ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS,
+                                     COMPARING, COMPARISONS, CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES,
+                                     END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS,
+                                     IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS,
+                                     NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, REST_WORDS, RESTING, REVERSERS,
+                                     SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOP_CUES, UNMOVED, VIEWER,
+                                     YES_NO_OPENERS, asks_impact, _head)
 from dynclevr.questions.programs import OPS
 
 
@@ -869,7 +870,7 @@ def _future_said(words: list[str]) -> str:
                                                   words[k + 2] in FILM_WORDS)), "")
 
 
-def future_unread(words: list[str], program: list[str]) -> str:
+def future_unread(words: list[str], program: list[str], context: list[str] = ()) -> str:
     """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
     video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there); or
     the other way round, a reading after the video where the question asks before its end, or a counterfactual's
@@ -895,7 +896,8 @@ def future_unread(words: list[str], program: list[str]) -> str:
         return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
                 "it collides in the video")
     # 'can we get clarity on whether the pickup and the purple thing bump into each other?' read after the video
-    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES).intersection(words):
+    # (nor in the sentences read as its context: 'The clip's been cut short. Is the jet headed for a crash ...?')
+    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES).intersection([*words, *context]):
         return ("the question says nothing of the time after the video, but its nearest reading asks after it: ask "
                 "whether they collide in the video, or will after it ends")
     if "Events" not in program or "futureEvents" in program:
@@ -927,3 +929,46 @@ def anything_unasked(words: list[str], program: list[str]) -> str:
         return ("the question asks about two objects and anything else at once, which no question here asks: ask "
                 "about each object alone, or whether the two hit each other")
     return ""
+
+
+# The video said to stop before what is asked ('The clip's been cut short. Is the jet headed for a crash with the
+# bus?', 'The video ends before we find out: does ...?', 'We only get the first bit of the video.'): a collision asked
+# in the present is one after the cut
+CUT_SAID = (*STOPPED_SAID, ["stops", "short"], ["runs", "out"], ["ran", "out"], ["ends", "before"],
+            ["ended", "before"])
+FIRST_PART = {"bit", "part", "half", "stretch", "portion", "section", "chunk", "few"}
+PAST_ASKED = {"did", "was", "were", "had", "has"}
+
+
+def cut_said(said_first: list[str], words: list[str]) -> str:
+    """The words of `said_first` (the question as written) that say the video stops before what is asked, where the
+    question (`words`, as read) asks in the present or the future; '' where none do."""
+    if PAST_ASKED.intersection(words):
+        return ""
+    for k, w in enumerate(said_first):
+        if w not in FILM_WORDS:
+            continue
+        if k and said_first[k - 1] in ("paused", "stopped", "frozen", "truncated", "halted"):   # 'the paused video'
+            return f"{said_first[k - 1]} {w}"
+        after = said_first[k + 1:k + 6]
+        # (not a telegram's 'STOP' that ends the text: '... during the film STOP')
+        stop = next((" ".join(after[:j + len(c)]) for j in range(len(after)) for c in CUT_SAID
+                     if after[j:j + len(c)] == c and not set(after[:j]) & {",", ".", "?", ":", "-"} and
+                     set(said_first[k + 1 + j + len(c):]) - {"?", ".", "!"}), None)
+        if stop:
+            return f"{w} {stop}"
+        before = said_first[max(0, k - 6):k]
+        if "first" in before and FIRST_PART.intersection(before) and ("only" in said_first or "half" in before):
+            return " ".join(before[before.index("first"):]) + f" {w}"
+    return ""
+
+
+def both_imagined(words: list[str], program: list[str]) -> str:
+    """Why a counterfactual reading is not the question's ('' when it is): its condition changes two vehicles at once
+    ('if both of them had been standing still', 'had they both been parked'), which no question here does."""
+    if not any(t.startswith("Counterfactual") for t in program):
+        return ""
+    said = next((" ".join(words[k:k + 4]) for k, w in enumerate(words) if w in CONDITION_MARKERS and
+                 {"both", "each", "all"} & set(words[k + 1:k + 4])), None)
+    return "" if said is None else (f"the question changes several vehicles at once ('{said}'), which no question "
+                                    "here does: a counterfactual changes one")

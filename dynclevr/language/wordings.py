@@ -639,6 +639,25 @@ IDIOMS = phrase_table({
                            ("right", "off", "the", "top"), ("off", "the", "top"),
                            *(("at", "the", "top", "of", "the", f) for f in ("clip", "video", "footage", "tape",
                                                                              "hour")))},
+    # the time after the cut said as what is not seen ('beyond what we see', 'once the paused clip starts up again'),
+    # and a collision ahead ('headed for a crash with', 'on course to hit', 'wind up bumping')
+    **{p: ("after", "the", "video", "ends") for p in (
+        ("beyond", "what", "we", "see"), ("beyond", "what", "we", "get", "to", "see"),
+        ("beyond", "what", "we", "are", "shown"), ("beyond", "what", "we", "'", "re", "shown"),
+        ("beyond", "the", "end", "of", "what", "we", "'", "re", "shown"),
+        ("beyond", "the", "end", "of", "what", "we", "are", "shown"), ("in", "the", "part", "we", "do", "not", "see"),
+        ("in", "the", "half", "we", "do", "not", "see"))},
+    **{(v, "up", "again"): (c,) for v, c in (("starts", "continues"), ("start", "continue"), ("picks", "continues"),
+                                             ("picked", "continued"), ("started", "continued"))},
+    **{(h, "for", "a", c, "with"): ("going", "to", "collide", "with") for h in ("headed", "heading") for c in (
+        "crash", "collision", "smash")},
+    ("on", "course", "to"): ("going", "to"), ("wind", "up"): ("end", "up"), ("winds", "up"): ("ends", "up"),
+    # a comparison in the passive: the one outdone is the slower ('Is the bus outpaced by the car?', 'beaten for speed
+    # by', 'left behind by')
+    **{(w, *f, "by"): ("slower", "than") for w in (
+        "outpaced", "outrun", "outran", "overtaken", "outstripped", "beaten", "outsped", "outdone", "surpassed",
+        "bested", "outdistanced", "outraced") for f in ((), ("for", "speed"), ("in", "speed"), ("on", "speed"))},
+    ("left", "behind", "by"): ("slower", "than"),
     # British understatement: 'does it happen to bump into', 'manage to collide', 'terribly fast', 'at some stage'
     **{(h, "to", v): (v,) for h in ("happen", "happens", "happened", "manage", "manages", "managed") for v in (
         "bump", "hit", "collide", "crash", "touch", "run", "strike", "smash", "knock", "clip", "graze", "tap", "meet",
@@ -1450,3 +1469,26 @@ def inverted_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 # a verb phrase's first word that the inverted order puts first ('outpace the blue one does the red one')
 VERBS_FIRST = {"outpace", "outpaces", "outrun", "lag", "trail", "move", "go", "float", "hover", "accelerate",
                "speed", "run", "drive", "travel", "overtake", "beat", "stand", "sit", "stay", "remain"}
+
+
+# A comparison said as a contest ('does the chopper beat the pickup for speed', 'is the pickup trailing the biplane
+# for speed'): the verb, the other vehicle, then what it is contested in
+CONTESTS = {"beat": ("move", "faster"), "beats": ("moves", "faster"), "beating": ("moving", "faster"),
+            "outdo": ("move", "faster"), "outdoes": ("moves", "faster"), "trail": ("move", "slower"),
+            "trails": ("moves", "slower"), "trailing": ("moving", "slower")}
+
+
+def contest_as_compared(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'does the chopper beat the pickup for speed ...' -> 'does the chopper move faster than the pickup ...'. With
+    the words read so, or the words as they are and ()."""
+    for k, w in enumerate(words):
+        if w not in CONTESTS:
+            continue
+        named = next((m for m in mentions(words[k + 1:k + 7]) if m[0] <= 1), None)
+        if named is None:
+            continue
+        end = k + 1 + named[1] + (words[k + 1 + named[1]:k + 2 + named[1]] == ["one"])
+        if words[end:end + 1] in (["for"], ["in"], ["on"]) and words[end + 1:end + 2] in (["speed"], ["pace"]):
+            said = [*CONTESTS[w], "than", *words[k + 1:end]]
+            return [*words[:k], *said, *words[end + 2:]], ((" ".join(words[k:end + 2]), " ".join(said)),)
+    return words, ()
