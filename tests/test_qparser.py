@@ -1324,10 +1324,14 @@ def test_shipped_weights_parse_held_out_questions(heldout_questions):
                                             "Is the red sedan decelerating at the start?"])
     assert moving.program is None and "asks whether an object is moving" in moving.reason
     assert slowing.program is None and "slows down" in slowing.reason      # not WordNet's 'slow', a speed
-    # the passive says the other one is faster, the way round from the lexicon's 'outpace' -> 'move faster than'
-    outpaced, outruns = parser.analyse_batch(["Is the blue bus outpaced by the red sedan at the start?",
-                                              "Does the red sedan outrun the blue bus at the start?"])
-    assert outpaced.program is None and "passive" in outpaced.reason
+    # the passive says the other one is faster, the way round from the lexicon's 'outpace' -> 'move faster than':
+    # the one outdone is the slower (`wordings.IDIOMS`); another passive is refused
+    outpaced, outruns, passed = parser.analyse_batch(["Is the blue bus outpaced by the red sedan at the start?",
+                                                      "Does the red sedan outrun the blue bus at the start?",
+                                                      "Is the blue bus passed by the red sedan at the start?"])
+    assert outpaced.program == ("Objects filter_attributes[blue] filter_attributes[bus] unique Objects "
+                                "filter_attributes[red] filter_attributes[sedan] unique start slower_velocity").split()
+    assert passed.program is None and "passive" in passed.reason
     assert outruns.program == ("Objects filter_attributes[red] filter_attributes[sedan] unique Objects "
                                "filter_attributes[blue] filter_attributes[bus] unique start faster_velocity").split()
 
@@ -3505,3 +3509,16 @@ def test_a_comparison_in_the_passive_or_as_a_contest():
                         "start", "slower_velocity"]
     assert beaten[-1] == behind[-1] == trailing[-1] == "slower_velocity" and beat[-1] == "faster_velocity"
     assert behind[1:3] == ["filter_attributes[brown]", "filter_attributes[tandem_bike]"]
+
+
+def test_a_question_word_left_where_the_answer_goes():
+    parser = QuestionParser.load()
+    fast, partner, speed, up = parser.parse_batch([
+        "The red car is moving how fast at the start?",
+        "The blue sedan collided with a vehicle of what colour?",
+        "At the beginning, is the mountain bike putting on speed?",
+        "How quickly is the cyan scooter moving when it first turns up in the video?"])
+    assert fast[-2:] == ["start", "query_moving_velocity"] and partner[-1] == "query_attributes[color]"
+    assert speed[-1] == "is_accelerating" and up[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # asked 'by what', a reading of yes or no is none ('... gets hit afterwards by what?' was read as a pair's)
+    assert_refused(parser, {"The bus that the sedan hit gets hit afterwards by what?": "'what'"})

@@ -523,6 +523,12 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
     `form_unasked`'s."""
     head = _head(words)
     returns = OPS[operation(program[-1])].output
+    # a question word left where the answer goes ('... gets hit afterwards by what?'): no yes or no
+    # (not a tag: '... at the start or what?')
+    echo = words[-2] if words[-1:] == ["?"] and words[-2:-1] and words[-2] in ("what", "which", "who", "whom") and \
+        words[-3:-2] not in (["or"], ["o"], [","]) else None
+    if echo and returns is not str:
+        return (f"the question asks '{echo}', but its nearest reading asks yes or no: no question here reads it")
     if head[:1] and head[0] in YES_NO_OPENERS and returns is str and "or" not in head:
         return ("the question asks yes or no, but its nearest reading asks which (a speed, a direction, a colour or a "
                 "type): no question here asks it as yes or no")

@@ -658,6 +658,10 @@ IDIOMS = phrase_table({
         "outpaced", "outrun", "outran", "overtaken", "outstripped", "beaten", "outsped", "outdone", "surpassed",
         "bested", "outdistanced", "outraced") for f in ((), ("for", "speed"), ("in", "speed"), ("on", "speed"))},
     ("left", "behind", "by"): ("slower", "than"),
+    # putting on speed is speeding up; turning up is appearing ('when it first turns up in the video')
+    **{(p, "on", "speed"): (a,) for p, a in (("putting", "accelerating"), ("puts", "accelerates"),
+                                              ("put", "accelerate"))},
+    **{(t, "up", "in"): (a, "in") for t, a in (("turns", "appears"), ("turn", "appear"), ("turned", "appeared"))},
     # British understatement: 'does it happen to bump into', 'manage to collide', 'terribly fast', 'at some stage'
     **{(h, "to", v): (v,) for h in ("happen", "happens", "happened", "manage", "manages", "managed") for v in (
         "bump", "hit", "collide", "crash", "touch", "run", "strike", "smash", "knock", "clip", "graze", "tap", "meet",
