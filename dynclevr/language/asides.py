@@ -204,9 +204,10 @@ def _viewer_premise(words: list[str]) -> int | None:
         return None
     clause = set(words[len(opener):end])
     said = clause & (VIEWER_WORDS | FOOTAGE_WORDS)
-    # (not the video going on: 'if the video went on , would ...', 'if we kept watching , ...')
-    if not said or clause & ({"had", "were", "would"} | GOING_ON | MOTION_WORDS | SPEED_CLASS_WORDS | STATIC_SAID - {"not"}
-                             | AFLOAT_SAID | END_WORDS | STOP_CUES | START_WORDS) or \
+    # (a motion, a time, a condition or the video going on is no viewer's premise: 'if the video went on , ...')
+    told = {"had", "were", "would"} | GOING_ON | MOTION_WORDS | SPEED_CLASS_WORDS | STATIC_SAID - {"not"} | \
+        AFLOAT_SAID | END_WORDS | STOP_CUES | START_WORDS
+    if not said or clause & told or \
             asks_impact(list(clause)) and not clause & VIEWER_WORDS or \
             NAMING & clause and not (clause & IDENTIFYING and clause & VIEWER_WORDS):
         return None

@@ -55,10 +55,10 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, correc
                                       framing_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
                                       interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
                                       radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
-from dynclevr.language.checks import (both_imagined, cut_said, acceleration_unread, acceleration_unsaid,
-                                      answer_form_unmatched, anything_unasked, attribute_unsaid, clock_unasked,
-                                      collision_at_start, collision_unread, compared_unsaid, comparison_imagined,
-                                      comparison_unread, comparison_unsaid, condition_subject_first, condition_unsaid,
+from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
+                                      attribute_unsaid, both_imagined, clock_unasked, collision_at_start,
+                                      collision_unread, compared_unsaid, comparison_imagined, comparison_unread,
+                                      comparison_unsaid, condition_subject_first, condition_unsaid, cut_said,
                                       direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
                                       form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_unfiltered,
                                       motion_unread, named_attribute, operation, own_attribute_asked, property_unread,
@@ -87,14 +87,14 @@ from dynclevr.language.times import first_frames_as_said, inserted_time_last, mo
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
-from dynclevr.language.wordings import (alternatives_as_asked, contest_as_compared, inverted_as_asked,
-                                        attention_as_subject, attributes_offered_dropped, choices_as_which,
-                                        class_as_asked, cleft_as_asked, comparative_as_said, floating_plane_as_vehicle,
+from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
+                                        choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
+                                        contest_as_compared, drive_on_as_hit, floating_plane_as_vehicle,
                                         fronted_value_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
-                                        imperative_as_stated, negative_question_as_asked, noun_phrase_as_question,
-                                        request_after_setting, request_as_imperative, restated_dropped,
-                                        speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle,
-                                        verbless_comparison_asked, drive_on_as_hit)
+                                        imperative_as_stated, inverted_as_asked, negative_question_as_asked,
+                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
+                                        restated_dropped, speed_as_subject, tail_as_question, type_as_said,
+                                        type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -257,10 +257,7 @@ class QuestionParser:
         chosen = [_chosen(parses, time, o) for parses, time, o in zip(readings, times, own)]
         # a collision asked in the present after the video is said to stop is one after the cut (the stop's sentence
         # is read as context, and 'does the jet hit the bus?' then read within the video)
-        chosen = [replace(c, program=["futureEvents", *c.program[1:]], read_as=(*c.read_as, (cut, "after the video "
-                  "ends"))) if c.program and c.program[0] == "Events" and c.program[-1] == "exist" and
-                  (cut := cut_said(tokenize(t), said)) else c
-                  for c, t, said in zip(chosen, texts, said_words)]
+        chosen = [_cut_as_future(c, t, said) for c, t, said in zip(chosen, texts, said_words)]
         # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned');
         # a collision against the words as read, typos fixed ('colide'), where no word it does not know may be an
         # impact's misspelt (the decoder reads a collision in 'collied' from the rest of the question)
@@ -683,6 +680,17 @@ def clause_time(clause: list[str]) -> str | None:
         if cues.intersection(clause):
             return op
     return None
+
+
+def _cut_as_future(parse: Parse, text: str, said: list[str]) -> Parse:
+    """A collision asked in the present, read within the video, where the question says the video stops before it
+    (`checks.cut_said`): the same collision after the cut."""
+    program = parse.program
+    cut = cut_said(tokenize(text), said) if program and program[0] == "Events" and program[-1] == "exist" else ""
+    if not cut:
+        return parse
+    return replace(parse, program=["futureEvents", *program[1:]],
+                   read_as=(*parse.read_as, (cut, "after the video ends")))
 
 
 def _chosen(parses: list[Parse], time: str | None, named: bool = False) -> Parse:

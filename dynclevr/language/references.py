@@ -47,7 +47,8 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "hog": "cruiser", "step - through": "scooter", "decker": "double bus", "bendy": "articulated bus",
                   "estate": "wagon", "whip": "car",   # London's car
                   "chopper bike": "chopper", "cruiser bike": "cruiser", "city bike": "utility bike",
-                  "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck", "bakkie": "truck", "mpv": "minivan",
+                  "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
+                  "bakkie": "truck", "mpv": "minivan",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
                   # as older people name them (a category alone: synonyms.txt, wordings.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",

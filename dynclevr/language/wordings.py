@@ -1363,6 +1363,9 @@ def _subject_at_end(clause: list[str]) -> int | None:
     return k - 1 if k and clause[k - 1] in DETERMINERS else k
 
 
+# a verb phrase's first word that the inverted order puts first ('outpace the blue one does the red one')
+VERBS_FIRST = {"outpace", "outpaces", "outrun", "lag", "trail", "move", "go", "float", "hover", "accelerate",
+               "speed", "run", "drive", "travel", "overtake", "beat", "stand", "sit", "stay", "remain"}
 WH_NOUNS = {"way", "direction", "speed", "fast", "color", "kind", "type", "sort", "pace"}
 INVERTED_TAGS = {"hmm", "hm", "yes", "no", "eh", "huh", "mm"}
 TIME_CLAUSE_OPENERS = TIME_OPENERS | {"when", "after", "before", "once", "if"}
@@ -1376,7 +1379,8 @@ def _predicate_clause(lead: list[str]) -> tuple[list[str], list[str]]:
         if w in (",", "-", ":"):
             clauses.append(lead[start:k + 1])
             start = k + 1
-    clauses.append(lead[start:]) if lead[start:] else None
+    if lead[start:]:
+        clauses.append(lead[start:])
     k = next((k for k in reversed(range(len(clauses))) if clauses[k][:1] and
               clauses[k][0] not in TIME_CLAUSE_OPENERS), None)
     if k is None:
@@ -1399,46 +1403,40 @@ def _verb_moved(subject: list[str], predicate: list[str]) -> list[str]:
     return [*subject, *predicate]
 
 
-def inverted_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'faster than the bus at the start , the jet is ?' -> 'is the jet faster than the bus at the start ?';
-    'collide with the bike , did the suv ?' -> 'did the suv collide with the bike ?'; 'if slow it had been going at
-    the start , ...' -> 'if it had been going slow at the start , ...'. Clauses of time said first stay first. With
-    the words read so, or the words as they are and ()."""
-    out, read = list(words), []
-    for k in range(len(out) - 3):
-        if out[k] == "if" and (k == 0 or out[k - 1] in (",", ".", "-")) and out[k + 1] in FRONTABLE_VALUES:
-            had = next((j for j in range(k + 3, min(k + 10, len(out) - 1)) if out[j] == "had"), None)
-            if had is None or set(out[k + 2:had]) & {",", "would", "."}:
+def _condition_value_moved(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'if slow it had been going at the start' -> 'if it had been going slow at the start'."""
+    for k in range(len(words) - 3):
+        if words[k] == "if" and (k == 0 or words[k - 1] in (",", ".", "-")) and words[k + 1] in FRONTABLE_VALUES:
+            had = next((j for j in range(k + 3, min(k + 10, len(words) - 1)) if words[j] == "had"), None)
+            if had is None or set(words[k + 2:had]) & {",", "would", "."}:
                 continue
-            j = had + 2 + (out[had + 1] == "been" and out[had + 2].endswith("ing"))
-            value = out[k + 1]
-            out = [*out[:k + 1], *out[k + 2:j], value, *out[j:]]
-            read.append((f"if {value}", "if"))
-            break
-    # a question word, then the subject before its auxiliary: 'what way it was travelling when ...', 'toward which
-    # way the red jet was travelling', 'at what speed the bicycle was'
-    for k in range(len(out) - 3):
-        if out[k] in ("which", "what", "how") and (k == 0 or out[k - 1] in (",", "-", ":", "toward", "towards", "at",
-                                                                            "in")):
-            j = k + 1 + (out[k + 1] in WH_NOUNS)
-            s = 1 if out[j:j + 1] in (["it"], ["they"]) else next(
-                (m[1] for m in mentions(out[j:j + 6]) if m[0] == (out[j] in DETERMINERS)), None)
-            if out[j:j + 1] in (["it"], ["they"], ["the"], ["that"], ["this"]) and s and j + s < len(out) and \
-                    out[j + s] in ("was", "is", "were", "are") and j > k + 1:
-                start = k - (k > 0 and out[k - 1] in ("toward", "towards"))
-                said = [*out[k:j], out[j + s], *out[j:j + s]]
-                read.append((" ".join(out[start:j + s + 1]), " ".join(said)))
-                out = [*out[:start], *said, *out[j + s + 1:]]
-                break
-    if out[-1:] != ["?"]:
-        return (out, tuple(read)) if read else (words, ())
-    body = out[:-1]
-    if body[-2:-1] == [","] and body[-1] in INVERTED_TAGS:   # '..., did the suv , hmm ?'
-        body = body[:-2]
-    cut = max((k for k, w in enumerate(body) if w in (",", "-", ":")), default=-1)
-    last = body[cut + 1:]
-    lead = body[:cut + 1]
-    # the subject and its auxiliary last: '..., the gray jet is ?', 'moving the school bus was ?'
+            j = had + 2 + (words[had + 1] == "been" and words[had + 2].endswith("ing"))
+            return [*words[:k + 1], *words[k + 2:j], words[k + 1], *words[j:]], ((f"if {words[k + 1]}", "if"),)
+    return words, ()
+
+
+def _question_word_first(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A question word, then the subject before its auxiliary: 'what way it was travelling when ...', 'toward which
+    way the red jet was travelling', 'at what speed the bicycle was' -> '... was the bicycle'."""
+    for k in range(len(words) - 3):
+        if words[k] not in ("which", "what", "how") or k and words[k - 1] not in (",", "-", ":", "toward", "towards",
+                                                                                  "at", "in"):
+            continue
+        j = k + 1 + (words[k + 1] in WH_NOUNS)
+        s = 1 if words[j:j + 1] in (["it"], ["they"]) else next(
+            (m[1] for m in mentions(words[j:j + 6]) if m[0] == (words[j] in DETERMINERS)), None)
+        if words[j:j + 1] in (["it"], ["they"], ["the"], ["that"], ["this"]) and s and j + s < len(words) and \
+                words[j + s] in ("was", "is", "were", "are") and j > k + 1:
+            start = k - (k > 0 and words[k - 1] in ("toward", "towards"))
+            said = [*words[k:j], words[j + s], *words[j:j + s]]
+            return [*words[:start], *said, *words[j + s + 1:]], ((" ".join(words[start:j + s + 1]), " ".join(said)),)
+    return words, ()
+
+
+def _subject_last(lead: list[str], last: list[str]) -> tuple[list[str], list[str]] | None:
+    """The question's lead and its words put in order, where its last clause ends with the subject and its
+    auxiliary ('..., the gray jet is', 'moving the school bus was') or the auxiliary and the subject after a verb
+    phrase ('collide with the bike , did the suv', 'outpace the blue one does the red one'); else None."""
     if len(last) >= 2 and last[-1] in INVERTED_AUXILIARIES:
         s = _subject_at_end(last[:-1])
         # (not a comparison's ellipsis: 'is the biplane faster than the truck is ?')
@@ -1450,29 +1448,37 @@ def inverted_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
                 lead, more = _predicate_clause(lead)
                 predicate = [*predicate, *more]
             if predicate and predicate[0] not in QUESTION_OPENERS | ASKING:
-                said = [aux if aux not in PAST_MOTION else "was", *subject,
-                        *([PAST_MOTION[aux]] if aux in PAST_MOTION else []), *predicate]
-                if aux not in PAST_MOTION:
-                    said = [said[0], *_verb_moved(subject, predicate)]
-                read.append((" ".join(body), " ".join(said)))
-                return [*lead, *said, "?"], tuple(read)
-    # the auxiliary and the subject last after a verb phrase: 'collide with the bike , did the suv ?', 'outpace the
-    # blue one does the red one ?'
+                if aux in PAST_MOTION:   # '..., the blue minivan went ?'
+                    return lead, ["was", *subject, PAST_MOTION[aux], *predicate]
+                return lead, [aux, *_verb_moved(subject, predicate)]
     s = _subject_at_end(last)
     if s is not None and s >= 1 and last[s - 1] in AUXILIARIES | {"will", "would"}:
         aux, subject, predicate = last[s - 1], last[s:], last[:s - 1]
         if not predicate and lead:
             lead, predicate = _predicate_clause(lead)
         if predicate and (asks_impact(predicate[:1]) or predicate[0] in VERBS_FIRST):
-            said = [aux, *subject, *predicate]
-            read.append((" ".join(body), " ".join(said)))
-            return [*lead, *said, "?"], tuple(read)
-    return (out, tuple(read)) if read else (words, ())
+            return lead, [aux, *subject, *predicate]
+    return None
 
 
-# a verb phrase's first word that the inverted order puts first ('outpace the blue one does the red one')
-VERBS_FIRST = {"outpace", "outpaces", "outrun", "lag", "trail", "move", "go", "float", "hover", "accelerate",
-               "speed", "run", "drive", "travel", "overtake", "beat", "stand", "sit", "stay", "remain"}
+def inverted_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'faster than the bus at the start , the jet is ?' -> 'is the jet faster than the bus at the start ?';
+    'collide with the bike , did the suv ?' -> 'did the suv collide with the bike ?'; 'if slow it had been going at
+    the start , ...' -> 'if it had been going slow at the start , ...'. Clauses of time said first stay first. With
+    the words read so, or the words as they are and ()."""
+    out, moved = _condition_value_moved(words)
+    out, first = _question_word_first(out)
+    read = moved + first
+    if out[-1:] == ["?"]:
+        body = out[:-1]
+        if body[-2:-1] == [","] and body[-1] in INVERTED_TAGS:   # '..., did the suv , hmm ?'
+            body = body[:-2]
+        cut = max((k for k, w in enumerate(body) if w in (",", "-", ":")), default=-1)
+        ordered = _subject_last(body[:cut + 1], body[cut + 1:])
+        if ordered:
+            lead, said = ordered
+            return [*lead, *said, "?"], (*read, (" ".join(body), " ".join(said)))
+    return (out, read) if read else (words, ())
 
 
 # A comparison said as a contest ('does the chopper beat the pickup for speed', 'is the pickup trailing the biplane
