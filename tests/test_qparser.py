@@ -3520,5 +3520,9 @@ def test_a_question_word_left_where_the_answer_goes():
         "How quickly is the cyan scooter moving when it first turns up in the video?"])
     assert fast[-2:] == ["start", "query_moving_velocity"] and partner[-1] == "query_attributes[color]"
     assert speed[-1] == "is_accelerating" and up[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # a request to describe a property, said first, asks it; 'would that describe the pace' stays a yes or no
+    describe, slow = parser.parse_batch(["Describe the speed of the green school bus in the first few frames?",
+                                         "Slow - would that describe the pace of the cyan SUV in the first moments?"])
+    assert describe[-1] == "query_moving_velocity" and slow[-1] == "is_moving_velocity[slow]"
     # asked 'by what', a reading of yes or no is none ('... gets hit afterwards by what?' was read as a pair's)
     assert_refused(parser, {"The bus that the sedan hit gets hit afterwards by what?": "'what'"})

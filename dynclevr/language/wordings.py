@@ -1010,6 +1010,9 @@ SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "car
 APPEARING = ("appears", "appear", "appeared", "appearing")
 
 
+DESCRIBED = {"speed", "velocity", "direction", "heading", "color", "kind", "type", "motion", "movement"}
+
+
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
     read = ()
@@ -1019,6 +1022,10 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if words[:1] and words[0] in IMAGINING:
         out, more = phrases_as_said(words[1:], IDIOMS)
         return ["imagine", *out], (*read, (words[0], "imagine"), *more)
+    # a request to describe a property, said first, asks it ('Describe the velocity class of the purple object when
+    # the video begins?'; not 'would that describe the pace of ...')
+    if words[:2] == ["describe", "the"] and words[2:3] and words[2] in DESCRIBED:
+        read, words = (*read, ("describe", "what is")), ["what", "is", *words[1:]]
     out, more = phrases_as_said(words, IDIOMS)
     read += more
     # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past (or, a sentence
