@@ -3526,3 +3526,40 @@ def test_a_question_word_left_where_the_answer_goes():
     assert describe[-1] == "query_moving_velocity" and slow[-1] == "is_moving_velocity[slow]"
     # asked 'by what', a reading of yes or no is none ('... gets hit afterwards by what?' was read as a pair's)
     assert_refused(parser, {"The bus that the sedan hit gets hit afterwards by what?": "'what'"})
+
+
+def test_a_video_paused_or_cut_said_as_a_premise_and_a_collision_near_in_time():
+    parser = QuestionParser.load()
+    assuming, suppose, were, coming, about, rest = parser.parse_batch([
+        "Assuming the footage stops partway through, will the brown pickup and the gray bus collide afterwards?",
+        "Suppose the video is cut off midway; in that case, are the green sedan and the purple motorbike going to "
+        "hit each other later?",
+        "If the clip were paused partway through, would the blue station wagon go on to collide with anything?",
+        "Is a crash coming for the minivan?",
+        "Is the grey SUV about to crash into the purple bicycle?",
+        "In the rest of the video, do the cyan double-decker and the brown estate car collide?"])
+    # (refused as a premise or the video imagined otherwise; the last three read within the video)
+    assert {assuming[0], suppose[0], were[0], coming[0], about[0], rest[0]} == {"futureEvents"}
+    assert suppose[1:4] == ["Objects", "filter_attributes[green]", "filter_attributes[sedan]"]
+    # a video imagined longer, or stopped in the past perfect, is still no question here
+    assert_refused(parser, {"Would the red sedan have hit the blue bus if the video were longer?": "video itself",
+                            "If the clip had been stopped halfway, would the bus hit the car afterwards?":
+                                "video itself"})
+
+
+def test_what_a_vehicle_will_do_its_make_and_a_place_are_refused():
+    parser = QuestionParser.load()
+    assert_refused(parser, {"Will the purple chopper speed up?": "will do",
+                            "Is the purple chopper about to speed up?": "will do",
+                            "The brown motorbike hits another vehicle. What make is that other vehicle?": "'make'",
+                            "When the blue bus hit the car, was it faster than the yellow pickup near it?": "'near'"})
+    shade, shae, anyone, fixing, bump = parser.parse_batch([
+        "Which shade is the thing the grey SUV crashes into?",
+        "At the very beginning, what shae is the static one?",
+        "Does the cyan chopper touch anyone during the video?",
+        "What direction was that tandem bike fixin' to go at the very start?",
+        "Does the bus make contact with the car?"])
+    # 'shade' is a colour, but a slip one letter from it and from 'shape' is still 'shape'; what is hit is a vehicle
+    assert shade[-1] == "query_attributes[color]" and shae[-1] == "query_attributes[shape]"
+    assert anyone[-2:] == ["filter_collision", "exist"] and fixing[-1] == "query_moving_direction"
+    assert bump[0] == "Events" and bump[-1] == "exist"

@@ -712,6 +712,27 @@ def size_unread(words: list[str], program: list[str]) -> str:
             "directions, colours, types and collisions)") if said else ""
 
 
+ADDRESSED = {"you", "u", "ya", "y"}      # 'will you tell me ...': a request, not the future
+FORETOLD_VERBS = {"speed", "accelerate", "be", "move", "stop", "stay", "keep", "slow", "go", "get", "start", "float",
+                  "hover", "fly", "gain", "pick", "drive", "remain", "come", "land", "fall", "turn", "head"}
+
+
+def motion_foretold(words: list[str], program: list[str]) -> str:
+    """Why a reading of the video's own time is not the question's ('' when it is): it asks what a vehicle will do
+    ('Will the purple chopper speed up?', 'Is the bus going to stop?'), which no family asks but of collisions (the
+    grammar says the future only there)."""
+    if any(t in ("Events", "futureEvents") or t.startswith("Counterfactual") for t in program):
+        return ""
+    if START_WORDS.intersection(words):   # 'which way was it fixing to go at the very start?'
+        return ""
+    said = next((w for k, w in enumerate(words) if w == "will" and words[k + 1:k + 2]
+                 and words[k + 1] not in ADDRESSED), None) or next(
+        (" ".join(words[k:k + 3]) for k in range(len(words) - 2)
+         if words[k:k + 2] == ["going", "to"] and words[k + 2] in FORETOLD_VERBS), None)
+    return (f"the question asks what a vehicle will do ('{said}'), which no question here asks (they ask how it moves "
+            "in the video, and whether it will collide)") if said else ""
+
+
 def acceleration_unsaid(words: list[str], program: list[str]) -> str:
     """Why a reading of accelerating is not the question's ('' when it is): the question says nothing of speeding up
     ('which colour level corresponds to the vehicle whose initial speed is recorded as slow?' was read as the colour

@@ -60,10 +60,10 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       collision_unread, compared_unsaid, comparison_imagined, comparison_unread,
                                       comparison_unsaid, condition_subject_first, condition_unsaid, cut_said,
                                       direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
-                                      form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_unfiltered,
-                                      motion_unread, named_attribute, operation, own_attribute_asked, property_unread,
-                                      reversed_reading, size_unread, speed_unsaid, still_continuing, time_symbol_said,
-                                      time_unasked, uncompared, visibility_unread, what_happens)
+                                      form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
+                                      motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
+                                      property_unread, reversed_reading, size_unread, speed_unsaid, still_continuing,
+                                      time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        impact_said_first, retold_as_imagined, scenario_as_asked, settings_as_imagined,
@@ -281,6 +281,7 @@ class QuestionParser:
             or motion_unfiltered(said, c.program) or still_continuing(read, c.program)
             or property_unread(said, c.program) or visibility_unread(said, c.program)
             or acceleration_unread(said, c.program) or acceleration_unsaid(read, c.program)
+            or motion_foretold(read, c.program)
             or end_unread(said + read, c.program) or size_unread(said, c.program)) else c
             for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 

@@ -27,7 +27,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS
-from dynclevr.language.times import FILM_WORDS, _video_end
+from dynclevr.language.times import FILM_WORDS, _video_end, cut_premise
 from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, COMES_IN_WORDS,
                                      COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS, END_TIMES,
                                      ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES,
@@ -251,6 +251,11 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
                  and not (words_of_kind is STALLING and stood)), None)
     if kind:
         return kind
+    # 'what make is it?' asks its maker, as 'brand' does ('make contact', 'what makes it stop' are verbs)
+    if any(w == "make" and said[k - 1:k] and said[k - 1] in {"what", "which", "the", "its", "whose"}
+           and said[k + 1:k + 2] and said[k + 1] in {"is", "was", "of", "?", "and"} for k, w in enumerate(said)):
+        return ("the question asks about a vehicle's 'make' (its maker), which no question here asks (they ask how it "
+                "moves, its colour and its type)")
     other = next((k for k, w in enumerate(said) if w in OTHER_VEHICLES), None)
     if other is not None:
         start = other
@@ -302,7 +307,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         return (f"the question asks about the time {around} a collision, which no question here asks (they ask at "
                 "the collision itself)")
     place = next((" ".join(p) for k in range(len(said)) for p in PLACE_PHRASES if said[k:k + len(p)] == p
-                  and not (p in (["further"], ["farther"]) and said[k - 1:k] and said[k - 1] in GOING_ON)), None)
+                  and not (p in (["further"], ["farther"]) and said[k - 1:k] and said[k - 1] in GOING_ON)
+                  and not (p[0] in ("near", "close") and NEAR_TIMES.intersection(said[k + len(p):k + len(p) + 3]))
+                  and not (p == ["near"] and not (said[k - 1:k] and said[k - 1] in OBJECT_WORDS))), None)
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
                 "it is moving)")
@@ -316,10 +323,13 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
 
 # Where a vehicle is, said by its neighbour or its distance: never a question here, whatever the lexicon reads them as
 # ('behind' is its 'down')
+NEAR_TIMES = {"start", "beginning", "outset", "end", "cut", "moment", "instant", "time", "when"}
 PLACE_PHRASES = (["behind"], ["beside"], ["alongside"], ["next", "to"], ["in", "front", "of"], ["further"],
                  ["farther"], ["closer"], ["nearer"], ["nearest"], ["closest"], ["furthest"], ["farthest"],
                  # a learner's comparative of a place ('which one is more close to the camera?' was read as faster)
                  *(["more", w] for w in ("close", "near", "far", "distant")), ["close", "to"], ["near", "to"],
+                 # a vehicle told by its place ('faster than the yellow pickup near it': 'near' was WordNet's 'left')
+                 ["near"],
                  *(["parking", w] for w in ("spot", "space", "lot", "bay")),
                  # where a vehicle is found ('where located, left or right?', 'Where is parked the yellow bus?')
                  ["located"], ["location"], *(["where", *be, "parked"] for be in ((), ("is",), ("was",))))
@@ -572,11 +582,12 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
     sedan's alone) or the video changed ('if the video were longer' as the future). `words` as said, `read` with
     typos fixed ('when the video begisn' is the start)."""
     if any(w == "if" and words[k + 1] == "the" and words[k + 2] in FILM_WORDS and words[k + 3:k + 4] and
-           words[k + 3] in ("were", "was", "had") for k, w in enumerate(words[:-3])):   # not 'if the video went on'
+           words[k + 3] in ("were", "was", "had") and not (words[k + 3] != "had" and cut_premise(words[k + 2:k + 6]))
+           for k, w in enumerate(words[:-3])):   # not 'if the video went on', nor 'if the video were paused'
         return "the question imagines the video itself otherwise, which no question here does"
     start, end = _condition_clause(words)
     clause = words[start:end]
-    if not {"had", "were", "been"}.intersection(clause):   # 'do you know if X and Y ...'
+    if not {"had", "were", "been"}.intersection(clause) or cut_premise(clause) and "had" not in clause:   # 'do you know if X and Y ...'
         return ""
     other = next((" ".join(t) for k in range(len(clause)) for t in (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
                   if clause[k:k + len(t)] == t), None)
@@ -663,7 +674,8 @@ def quantified(words: list[str]) -> str:
 def premised(words: list[str]) -> str:
     """A premise stated first ('given that the bus is parked, ...'), or ''."""
     said = next((" ".join(p) for k in range(len(words)) for p in PREMISES if words[k:k + len(p)] == p
-                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
+                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])
+                 and not cut_premise(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
     if said is None:
         return ""
     return (f"the question states a premise ('{said}'), which no question here reads: ask the question alone, or as "

@@ -81,10 +81,22 @@ def first_frames_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 END_SAID = {"ends", "ended", "finishes", "finished", "stops", "stopped"}
 END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], ["after"], ["as"], ["since"],
                ["given", "that"], ["given"], ["now", "that"], ["with"], ["supposing"], ["supposing", "that"],
-               ["provided"], ["provided", "that"],
+               ["provided"], ["provided", "that"], ["if"], ["assuming"], ["assuming", "that"], ["suppose"],
+               ["suppose", "that"],
                *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")))
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
               "replay", "feed", "tape", "playback", "livestream"}
+# the verbs of a video's stop ('paused', 'cut', 'ends'), without the auxiliaries and particles said with them
+CUT_VERBS = {w for stop in STOPPED_SAID for w in stop if w.isalpha()} - {
+    "is", "was", "were", "gets", "got", "s", "has", "been", "in", "between", "off", "out", "short", "early", "abruptly"}
+
+
+def cut_premise(clause: list[str]) -> bool:
+    """Whether a premise's clause says the video stops ('assuming the footage stops partway through', 'if the video
+    were paused midway'): the predictive questions' own premise, not a change to what is seen."""
+    return any(w in FILM_WORDS and CUT_VERBS.intersection(clause[k + 1:k + 4]) for k, w in enumerate(clause))
+
+
 PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
             ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],

@@ -16,7 +16,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
-from dynclevr.language.times import FILM_WORDS
+from dynclevr.language.times import FILM_WORDS, cut_premise
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
                                      DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
                                      MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
@@ -545,6 +545,15 @@ IDIOMS = phrase_table({
     # Southern US English: 'right off' (at once: the start), 'fixin' to' (going to), 'y'all reckon' and 'do you
     # figure' before what is asked ('reckon' was read as 'imagine')
     ("right", "off"): _START, **{(fix, "to"): ("going", "to") for fix in ("fixing", "fixin")},
+    # a collision near in time ('Is the grey SUV about to crash into the bike?', 'Is a crash coming for the road
+    # bike?'), the rest of a video stopped part-way ('In the rest of the video, do ... collide?')
+    ("about", "to"): ("going", "to"), ("speedier",): ("faster",), ("shade",): ("color",),
+    **{(t, "up", *where): (a,) for t, a in (("turns", "appears"), ("turned", "appeared"), ("turn", "appear"),
+                                             ("turning", "appearing")) for where in ((), ("on", "screen"))},
+    **{(be, "a", crash, "coming", *up): ("will", "there", "be", "a", crash) for be in ("is", "'s")
+       for crash in ("crash", "collision", "smash", "bump", "smash-up", "pile-up", "impact") for up in ((), ("up",))},
+    **{(p, "the", "rest", "of", "the", f): ("after", "the", "video", "ends") for p in ("in", "for", "over", "during")
+       for f in ("video", "clip", "footage", "film", "recording")},
     **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
        for think in ("reckon", "figure", "suppose")},
     # a sceptic's 'Surely you can tell me ..., can't you?'
@@ -1010,6 +1019,7 @@ SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "car
 APPEARING = ("appears", "appear", "appeared", "appearing")
 
 
+PERSONS_HIT = {"anyone": "anything", "anybody": "anything", "someone": "something", "somebody": "something"}
 DESCRIBED = {"speed", "velocity", "direction", "heading", "color", "kind", "type", "motion", "movement"}
 
 
@@ -1028,6 +1038,11 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         read, words = (*read, ("describe", "what is")), ["what", "is", *words[1:]]
     out, more = phrases_as_said(words, IDIOMS)
     read += more
+    # what a vehicle hits said as a person ('does the chopper touch anyone?'): only vehicles are there to hit
+    for k, w in enumerate(out):
+        if w in PERSONS_HIT and k and (asks_impact(out[max(k - 2, 0):k]) or out[k - 1].startswith("touch")):
+            out[k] = PERSONS_HIT[w]
+            read += ((w, out[k]),)
     # 'imagine the bus was parked the whole time. would ...?': the condition said in the simple past (or, a sentence
     # of its own, in the present) is the grammar's 'had been' (it was read as whether the bus is parked at the
     # collision)
@@ -1035,7 +1050,7 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         end = next((k for k, w in enumerate(out) if w in (".", ",", ";", ":", "-", "?")), len(out))
         now = ("is", "are") if out[end:end + 1] in ([":"], ["."], [";"]) else ()
         k = next((k for k in range(1, end) if out[k] in ("was", "were", *now)), None)
-        if k is not None:
+        if k is not None and not cut_premise(out[1:end]):   # 'suppose the video is cut off partway; would ...'
             read += ((out[k], "had been"),)
             out[k:k + 1] = ["had", "been"]
     # the same condition inverted: 'had the plane stayed still , would it ...' (read as had it stayed in the air)

@@ -154,7 +154,7 @@ STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["froz
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
                 ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
                 ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
-                *([v, p] for v in ("is", "was", "gets", "got")
+                *([v, p] for v in ("is", "was", "were", "gets", "got")   # 'if the clip were paused'
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
