@@ -3563,3 +3563,15 @@ def test_what_a_vehicle_will_do_its_make_and_a_place_are_refused():
     assert shade[-1] == "query_attributes[color]" and shae[-1] == "query_attributes[shape]"
     assert anyone[-2:] == ["filter_collision", "exist"] and fixing[-1] == "query_moving_direction"
     assert bump[0] == "Events" and bump[-1] == "exist"
+
+
+def test_a_viewers_words_around_the_question():
+    parser = QuestionParser.load()
+    given, nudged = parser.parse_batch([
+        "Given what we see up until the clip is stopped, would you predict that the blue one will bump into something "
+        "later?",
+        "When the brown chopper nudged the blue city bus, was the chopper moving slower than the bus?"])
+    assert given[0] == "futureEvents" and nudged[-1] == "slower_velocity"
+    # 'all over the place' is no video's end ('over' read it after the video)
+    parse, = parser.analyse_batch(["The brown one seemed to be all over the place, did it ever collide with anything?"])
+    assert parse.program is None or parse.program[0] == "Events"

@@ -548,6 +548,9 @@ IDIOMS = phrase_table({
     # a collision near in time ('Is the grey SUV about to crash into the bike?', 'Is a crash coming for the road
     # bike?'), the rest of a video stopped part-way ('In the rest of the video, do ... collide?')
     ("about", "to"): ("going", "to"), ("speedier",): ("faster",), ("shade",): ("color",),
+    # a viewer's 'all over the place' (its 'over' was the video's end: a collision read after it), 'given what we see'
+    ("all", "over", "the", "place"): ("moving",),
+    **{("given", "what", who, *v): () for who in ("we", "you", "i") for v in (("see",), ("saw",), ("can", "see"))},
     **{(t, "up", *where): (a,) for t, a in (("turns", "appears"), ("turned", "appeared"), ("turn", "appear"),
                                              ("turning", "appearing")) for where in ((), ("on", "screen"))},
     **{(be, "a", crash, "coming", *up): ("will", "there", "be", "a", crash) for be in ("is", "'s")
