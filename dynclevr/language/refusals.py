@@ -587,7 +587,8 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
         return "the question imagines the video itself otherwise, which no question here does"
     start, end = _condition_clause(words)
     clause = words[start:end]
-    if not {"had", "were", "been"}.intersection(clause) or cut_premise(clause) and "had" not in clause:   # 'do you know if X and Y ...'
+    # ('do you know if X and Y ...'; 'if the clip were paused partway through, would ...' is the predictive premise)
+    if not {"had", "were", "been"}.intersection(clause) or cut_premise(clause) and "had" not in clause:
         return ""
     other = next((" ".join(t) for k in range(len(clause)) for t in (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
                   if clause[k:k + len(t)] == t), None)

@@ -545,20 +545,22 @@ IDIOMS = phrase_table({
     # Southern US English: 'right off' (at once: the start), 'fixin' to' (going to), 'y'all reckon' and 'do you
     # figure' before what is asked ('reckon' was read as 'imagine')
     ("right", "off"): _START, **{(fix, "to"): ("going", "to") for fix in ("fixing", "fixin")},
-    # a collision near in time ('Is the grey SUV about to crash into the bike?', 'Is a crash coming for the road
-    # bike?'), the rest of a video stopped part-way ('In the rest of the video, do ... collide?')
-    ("about", "to"): ("going", "to"), ("speedier",): ("faster",), ("shade",): ("color",),
+    **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
+       for think in ("reckon", "figure", "suppose")},
+    # 'speedier', a colour's 'shade' (as a synonym it took the slip 'shae' from 'shape')
+    ("speedier",): ("faster",), ("shade",): ("color",),
     # a viewer's 'all over the place' (its 'over' was the video's end: a collision read after it), 'given what we see'
     ("all", "over", "the", "place"): ("moving",),
     **{("given", "what", who, *v): () for who in ("we", "you", "i") for v in (("see",), ("saw",), ("can", "see"))},
     **{(t, "up", *where): (a,) for t, a in (("turns", "appears"), ("turned", "appeared"), ("turn", "appear"),
                                              ("turning", "appearing")) for where in ((), ("on", "screen"))},
+    # a collision near in time ('Is the grey SUV about to crash into the bike?', 'Is a crash coming for the road
+    # bike?'), the rest of a video stopped part-way ('In the rest of the video, do ... collide?')
+    ("about", "to"): ("going", "to"),
     **{(be, "a", crash, "coming", *up): ("will", "there", "be", "a", crash) for be in ("is", "'s")
        for crash in ("crash", "collision", "smash", "bump", "smash-up", "pile-up", "impact") for up in ((), ("up",))},
     **{(p, "the", "rest", "of", "the", f): ("after", "the", "video", "ends") for p in ("in", "for", "over", "during")
        for f in ("video", "clip", "footage", "film", "recording")},
-    **{(*who, think): () for who in (("y", "'", "all"), ("do", "you"), ("do", "y", "'", "all"), ("you",))
-       for think in ("reckon", "figure", "suppose")},
     # a sceptic's 'Surely you can tell me ..., can't you?'
     **{("surely", "you", can, "tell", "me"): ("tell", "me") for can in ("can", "could")},
     **{(",", can, "not", "you", "?"): ("?",) for can in ("can", "could")},
