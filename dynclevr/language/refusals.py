@@ -27,7 +27,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS
-from dynclevr.language.times import FILM_WORDS, _video_end, cut_premise
+from dynclevr.language.times import FILM_WORDS, _video_end
 from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, COMES_IN_WORDS,
                                      COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS, END_TIMES,
                                      ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES,
@@ -582,13 +582,11 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
     sedan's alone) or the video changed ('if the video were longer' as the future). `words` as said, `read` with
     typos fixed ('when the video begisn' is the start)."""
     if any(w == "if" and words[k + 1] == "the" and words[k + 2] in FILM_WORDS and words[k + 3:k + 4] and
-           words[k + 3] in ("were", "was", "had") and not (words[k + 3] != "had" and cut_premise(words[k + 2:k + 6]))
-           for k, w in enumerate(words[:-3])):   # not 'if the video went on', nor 'if the video were paused'
+           words[k + 3] in ("were", "was", "had") for k, w in enumerate(words[:-3])):   # not 'if the video went on'
         return "the question imagines the video itself otherwise, which no question here does"
     start, end = _condition_clause(words)
     clause = words[start:end]
-    # ('do you know if X and Y ...'; 'if the clip were paused partway through, would ...' is the predictive premise)
-    if not {"had", "were", "been"}.intersection(clause) or cut_premise(clause) and "had" not in clause:
+    if not {"had", "were", "been"}.intersection(clause):   # 'do you know if X and Y ...'
         return ""
     other = next((" ".join(t) for k in range(len(clause)) for t in (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
                   if clause[k:k + len(t)] == t), None)
@@ -675,8 +673,7 @@ def quantified(words: list[str]) -> str:
 def premised(words: list[str]) -> str:
     """A premise stated first ('given that the bus is parked, ...'), or ''."""
     said = next((" ".join(p) for k in range(len(words)) for p in PREMISES if words[k:k + len(p)] == p
-                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])
-                 and not cut_premise(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
+                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
     if said is None:
         return ""
     return (f"the question states a premise ('{said}'), which no question here reads: ask the question alone, or as "
