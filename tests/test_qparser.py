@@ -3575,3 +3575,73 @@ def test_a_viewers_words_around_the_question():
     # 'all over the place' is no video's end ('over' read it after the video)
     parse, = parser.analyse_batch(["The brown one seemed to be all over the place, did it ever collide with anything?"])
     assert parse.program is None or parse.program[0] == "Events"
+
+
+def test_a_motoring_presenter_s_and_an_airfield_s_and_a_biker_s_words():
+    parser = QuestionParser.load()
+    lights, carrying, harder, shunt, together, paint, deck, blocks = parser.parse_batch([
+        "Right as the lights go green, what pace is the red sedan carrying: parked up, crawling, or flat out?",
+        "What sort of speed is the cruiser carrying at the moment it makes contact with the red bus?",
+        "When the chopper and the green car make contact, is the chopper the one going harder?",
+        "Does the purple SUV get into a shunt with anybody over the whole clip?",
+        "Is there ever a coming-together between the green scooter and the grey one?",
+        "When the green pickup trades paint with the grey estate, how much pace has it got on: stationary, slow, or "
+        "quick?",
+        "At the start, is the cyan plane hovering rather than sat on the deck?",
+        "Had the cyan city bus come out of the blocks flat out, would it have hit the yellow estate?"])
+    assert lights[-2:] == ["start", "query_moving_velocity"] and carrying[-2:] == ["get_frame", "query_moving_velocity"]
+    assert harder[-1] == "faster_velocity" and "get_frame" in harder
+    assert shunt[:2] == ["Events", "Objects"] and shunt[-1] == "exist" and together[-1] == "exist"
+    assert paint[-1] == "query_moving_velocity" and "filter_collision" in paint
+    assert deck[-1] == "is_floating" and "Counterfactual_moving_fast" in blocks
+    taxi, traffic, doored, crawl = parser.parse_batch([
+        "Suppose the yellow SUV had started out at a slow taxi: would it have collided with the blue airliner?",
+        "What colour was the traffic the gray station wagon collided with?",
+        "Was the red pushbike flat out fast when it got doored by the grey cage?",
+        "Suppose the yellow double-decker had set off at a crawl: would it have clobbered the red one?"])
+    assert "Counterfactual_moving_slow" in taxi and "Counterfactual_moving_slow" in crawl
+    assert traffic[-1] == "query_attributes[color]" and "filter_attributes[car]" in doored
+    # 'more than one' counts (it was read as whether the cruiser hits anything)
+    assert_refused(parser, {"Does the yellow cruiser get into contact with more than one other vehicle during the "
+                            "recording?": "more than one"})
+
+
+def test_a_rambling_viewer_s_context_and_a_contact_in_the_passive():
+    parser = QuestionParser.load()
+    turned, its, kept, feed, passive = parser.parse_batch([
+        # the vehicle a sentence turns to after 'but' is what 'it' means (it was read as the double-decker)
+        "I was mostly keeping an eye on the red double-decker, but then this grey fighter jet pops in from the edge. "
+        "How fast is it moving when it first comes into view?",
+        # 'which vehicle has its engine on': 'its' is the vehicle asked for, not one of the context's
+        "At first I assumed everything was cruising. Then I rewatched it on my laptop and it looked different. Which "
+        "type of vehicle has its engine on and is accelerating at the start?",
+        # once the context says the video stops, 'if it kept going' is the video (it was read as the red fighter)
+        "The video cuts off partway, and I saw a red fighter and a cyan sedan before it stopped. If it kept going, "
+        "would the green car and the purple bicycle collide?",
+        "The feed freezes here: will the cyan estate and the red bicycle have a coming-together after this?",
+        # the contact's maker named last is the counterfactual's vehicle (it was read as the bus)
+        "Determine whether contact with the green bus would have been made by the scooter had rapid motion been "
+        "exhibited by it from the beginning."])
+    assert turned[1:3] == ["filter_attributes[gray]", "filter_attributes[fighter]"]
+    assert its == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert kept[0] == "futureEvents" and "filter_attributes[fighter]" not in kept and feed[0] == "futureEvents"
+    assert passive[:3] == ["Objects", "filter_attributes[scooter]", "unique"] and "Counterfactual_moving_fast" in passive
+    # a counterfactual of speeding up needs speeding up said ('absence of any movement' was read so)
+    parse, = parser.analyse_batch(["In the hypothetical absence of any movement on the part of the aeroplane from the "
+                                   "start, would contact with the bicycle have resulted?"])
+    assert parse.program is None or "Counterfactual_accelerating" not in parse.program
+
+
+def test_a_colour_after_its_vehicle_spanish_between_english_words_and_a_course():
+    parser = QuestionParser.load()
+    than, collide, course, hanging = parser.parse_batch([
+        "At the start, the green chopper is more fast than the car red?",
+        "The video is cut in the middle. After, the red school bus and the bicycle green are going to chocar?",
+        "What course was the scooter on when it struck the green pickup?",
+        "At the outset, is the fighter jet hanging in the air without dropping?"])
+    assert than[-1] == "faster_velocity" and "filter_attributes[red]" in than
+    assert collide[0] == "futureEvents" and collide[-5:-3] == ["filter_attributes[green]", "filter_attributes[bicycle]"]
+    # (a course was read as a speed; what does not fall was read as the fall asked)
+    assert course[-1] == "query_moving_direction" and hanging[-1] == "is_floating"
+    # a colour after its vehicle, asked with a copula, asks the colour: no family's
+    assert_refused(parser, ["Is the bus red?"])

@@ -1165,14 +1165,15 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if gloss and (FLOATING_WORDS & set(out[:k]) if gloss in GROUND_GLOSSES else "not" in out[:k - 1]):
             read.append((out[k - 1] + " " + " ".join(gloss), "nothing, said again"))
             out[k - 1:k + len(gloss) + (out[k - 1] == "(")] = []
-    # the ground a floating vehicle is not on, said as the other choice ('floating rather than sitting on the ground')
+    # the ground a floating vehicle is not on, said as the other choice ('floating rather than sitting on the ground',
+    # a flier's 'rather than sat on the deck')
     for k in reversed(range(1, len(out) - 3)):
         other = next((o for o in (["rather", "than"], ["instead", "of"]) if out[k:k + 2] == o), None)
         j = k + 2 + (out[k + 2:k + 3] != [] and out[k + 2] in RESTING)
         fall = other and out[k + 2:k + 3] in ([w] for w in ("falling", "dropping", "descending", "sinking", "fall",
                                                               "drop", "descend", "sink"))
-        if other and (out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"]) or fall) and \
-                FLOATING_WORDS & set(out[:k]):
+        if other and (out[j:j + 2] == ["on", "the"] and out[j + 2:j + 3] in (["ground"], ["floor"], ["deck"])
+                      or fall) and FLOATING_WORDS & set(out[:k]):
             end = k + 3 if fall else j + 3 + (out[k - 1] == "," and out[j + 3:j + 4] == [","])
             read.append((" ".join(out[k:end]), "nothing, said again"))
             out[k - (out[k - 1] == ","):end] = []

@@ -737,10 +737,11 @@ def acceleration_unsaid(words: list[str], program: list[str]) -> str:
     """Why a reading of accelerating is not the question's ('' when it is): the question says nothing of speeding up
     ('which colour level corresponds to the vehicle whose initial speed is recorded as slow?' was read as the colour
     of what accelerates)."""
-    if not {"is_accelerating", "filter_accelerating"} & set(map(operation, program)) or \
+    if not {"is_accelerating", "filter_accelerating", "Counterfactual_accelerating"} & set(map(operation, program)) or \
             any(w.startswith("accelerat") for w in words) or SPEEDING_UP & set(words) or \
             any(a == c and a.endswith("er") and b == "and" for a, b, c in zip(words, words[1:], words[2:])) or \
-            any(words[k:k + 3] == ["speed", "going", "up"] for k in range(len(words))) or \
+            any(words[k:k + 3] in (["speed", "going", "up"], ["speed", "-", "up"]) or words[k:k + 2] == ["speed", "up"]
+                for k in range(len(words))) or \
             any(words[k:k + len(a)] == list(a) for k in range(len(words)) for a in ACCELERATION_SAID):
         return ""
     return ("the question says nothing of speeding up, but its nearest reading asks about it: ask whether the vehicle "

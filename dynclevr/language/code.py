@@ -13,8 +13,8 @@ import re
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
 
-_CODE = re.compile(r"[a-z][A-Z]|[A-Za-z0-9]_[A-Za-z0-9]|==|->|=>|[a-z]\(|\bSELECT\b|\bt\s*=\s*\w|^\s*(//|#)|"
-                   r"[a-z]{2}\.[a-z_]{2,}")
+_CODE = re.compile(r"[a-z][A-Z]|[A-Za-z0-9]_[A-Za-z0-9]|==|->|=>|\u2192|\u21d2|[a-z]\(|\bSELECT\b|\bt\s*=\s*\w|"
+                   r"^\s*(//|#)|[a-z]{2}\.[a-z_]{2,}")
 _COLOURS = "|".join(COLOR_NAMES)
 NAME_WORDS = OBJECT_WORDS | {name.split()[0] for name in EVERYDAY_NAMES}   # a vehicle's name starts so
 SPEED_NAMES = ("speed", "velocity", "vel", "v")
@@ -151,7 +151,7 @@ def code_as_said(text: str) -> tuple[str, tuple[tuple[str, str], ...]]:
     # (a text longer than any question is left to the parser's own bound on words: these patterns are not linear)
     if not isinstance(text, str) or len(text) > MAX_CHARS or not _CODE.search(text):
         return text, ()
-    said = re.sub(r"\s+", " ", text)
+    said = re.sub(r"\s+", " ", text).replace("\u2192", "->").replace("\u21d2", "=>")   # a typeset arrow
     said = re.sub(r"^\s*(?://+|#+)\s*", "", said)                                  # a comment's mark before it
     said = re.sub(r"(?<=[?.!])\s*(?://|#).*$|\s+(?://|#)\s*[a-z ]*$", "", said)    # ... and a comment after it
     said = re.sub(r"(?:->|=>)\s*(?:bool|boolean)\b\s*\??", "?", said)

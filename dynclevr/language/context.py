@@ -13,13 +13,13 @@ import re
 from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
-from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_end
+from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_continued, _video_end
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
-                                     COPULAS, DETERMINERS, END_TIMES, FILLERS, GENERIC, HEADING_KEPT, IMAGINED_SAID,
-                                     IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS,
-                                     NAMING, NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS,
-                                     SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED,
-                                     UNNAMED, asks_impact, _at)
+                                     COPULAS, DETERMINERS, END_TIMES, FILLERS, GENERIC, GENERIC_NOUNS, HEADING_KEPT,
+                                     IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS,
+                                     MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS,
+                                     SENTENCE_ENDS, SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS,
+                                     TIME_OPENERS, UNMOVED, UNNAMED, asks_impact, _at)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -479,6 +479,13 @@ def check_ins_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return (out, tuple(read)) if read else (words, ())
 
 
+def _turned_to(sentence: list[str], runs: list) -> list:
+    """A sentence's mentions, those after its last 'but' first: the vehicle it turns to ('I was watching the red bus,
+    but then this grey jet pops in.' -- 'How fast is it ...?' asks about the jet)."""
+    turn = max((k for k, w in enumerate(sentence) if w == "but"), default=None)
+    return runs if turn is None else [r for r in runs if r[0] > turn] + [r for r in runs if r[0] <= turn]
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
@@ -526,7 +533,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     # a sentence that says the video stopped ('video stops partway through . does the sedan hit ...?'): the question
     # asks after its end
     stopped = next((c for c in context if (e := _video_end(c)) and (e[0] == 0 or c[e[0] - 1] == ":")), None)
-    ended = _video_end(asked, stopped or [])   # its 'it' the video the context names ('After it stops, will ...?')
+    # its 'it' the video the context names ('After it stops, will ...?', 'If it kept going, would ...?')
+    ended = _video_end(asked, stopped or []) or (_video_continued(asked, stopped) if stopped else None)
     if stopped and asks_impact(question) and ended and not _video_end(asked):
         asked = [*asked[:ended[0]], "after", "the", "video", "ends", *asked[ended[1]:]]
     elif stopped and asks_impact(question) and not (_video_end(question) or _at_cut(question)):
@@ -542,7 +550,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     # the most recent sentence's first, past sentences that go on about it ('A white airliner floats. It drifts toward
     # the bus. Did it ...?': the airliner)
     latest = [r for s, runs in zip(reversed(context), reversed(said)) if _opening(s)[:1] not in (["it"], ["they"])
-              for _, _, r in runs if r in fullest] + [r for runs in reversed(said) for _, _, r in runs if r in fullest]
+              for _, _, r in _turned_to(s, runs) if r in fullest] + \
+        [r for runs in reversed(said) for _, _, r in runs if r in fullest]
     unread = {next((f for f in fullest if _fits(r, f)), r) for s, runs in zip(context, said) for a, b, r in runs
               if _unknown_beside(s, a, b, r, known)}
     used, read = set(), []
@@ -577,7 +586,10 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     named = mentions(out)
     pronoun = next((k for k, w in enumerate(out) if w in ("it", "its") and out[k + 1:k + 2] and
                     out[k + 1] not in IT_FORWARD), None)
-    pronoun = pronoun if pronoun is not None and not any(start < pronoun for start, _, _ in named) else None
+    # (not a vehicle's 'its' bound to the vehicle the question asks for: 'which vehicle has its engine on')
+    pronoun = pronoun if pronoun is not None and not any(start < pronoun for start, _, _ in named) and not (
+        out[pronoun] == "its" and {"which", "what"} & set(out[:pronoun]) and GENERIC_NOUNS & set(out[:pronoun])) \
+        else None
     plural = _at(out, PLURAL_PRONOUNS)
     plural = plural if plural and len({r for _, _, r in named}) < 2 else None
     # 'what colour is that?', 'that vehicle', 'is that suspect?'

@@ -89,12 +89,12 @@ from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoine
                                      slips, sound_index, stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
-                                        contest_as_compared, drive_on_as_hit, floating_plane_as_vehicle,
-                                        fronted_value_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
-                                        imperative_as_stated, inverted_as_asked, negative_question_as_asked,
-                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
-                                        restated_dropped, speed_as_subject, tail_as_question, type_as_said,
-                                        type_of_category_as_vehicle, verbless_comparison_asked)
+                                        contact_made_as_active, contest_as_compared, drive_on_as_hit,
+                                        floating_plane_as_vehicle, fronted_value_as_asked, heading_as_direction,
+                                        height_as_aloft, idioms_as_said, imperative_as_stated, inverted_as_asked,
+                                        negative_question_as_asked, noun_phrase_as_question, request_after_setting,
+                                        request_as_imperative, restated_dropped, speed_as_subject, tail_as_question,
+                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -382,7 +382,8 @@ class QuestionParser:
         opened += inverted
         words, idioms = idioms_as_said(words)
         words, contest = contest_as_compared(words)
-        idioms += contest
+        words, active = contact_made_as_active(words)
+        idioms += contest + active
         words, digressed = digressions_dropped(words)
         idioms += digressed
         words, described = description_as_said(words)
@@ -462,7 +463,9 @@ class QuestionParser:
                 read_as, said
         counted = next((" ".join(said[k:k + n]) for k, a in enumerate(said) for n in (2, 3)
                         if (a.isdigit() or a in NUMBERS) and said[k + n - 1:k + n] and said[k + n - 1] in PLURALS
-                        and (n == 2 or said[k + 1] in ("other", "more", "different", "separate"))), None)
+                        and (n == 2 or said[k + 1] in ("other", "more", "different", "separate"))), None) or \
+            next((" ".join(said[k:k + 3]) for k in range(len(said) - 2) if said[k] in ("more", "fewer", "less")
+                  and said[k + 1] == "than" and (said[k + 2].isdigit() or said[k + 2] in NUMBERS | {"one", "once"})), None)
         if counted:
             return [], f"the question counts ('{counted}'), which no question here does", read_as, said
         higher = next((a for a in said if a in HEIGHT_COMPARISONS and not MOTION_NOUNS.intersection(words)), None)

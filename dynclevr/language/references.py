@@ -50,6 +50,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "city bicycle": "utility bike", "commuter bike": "utility bike", "ute": "truck",
                   "bakkie": "truck", "mpv": "minivan",
                   "push bike": "bicycle", "cycle": "bicycle", "pedal bike": "bicycle", "motor cycle": "motorbike",
+                  "push - bike": "bicycle", "cage": "car", "tin box": "car", "chelsea tractor": "suv",
                   # as older people name them (a category alone: synonyms.txt, wordings.IDIOMS)
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus", "city omnibus": "regular bus", "bendy omnibus": "articulated bus",
@@ -314,7 +315,14 @@ COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured',
 # where a comma or a verb follows ('is the bus red?' asks a colour)
 AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", "moves", "moved", "moving", "goes",
                 "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it", "appears", "appeared",
-                "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first"}
+                "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first", "are", "were",
+                "more", "less", "faster", "slower", "when", "collide"}
+# ... or a time, where no copula before it asks the colour ('when it hits the bus purple in the moment that ...'; not
+# 'is the bus red in the video?'), or the question's end after a comparison's or a collision's object ('faster than
+# the car red?'; not 'is the car that gets hit by the bus red?')
+AFTER_COLOUR_UNASKED = {"in", "at", "during"}
+COPULAS_BEFORE = {"is", "was", "are", "were", "be", "been", "'s", "s"}
+OBJECT_BEFORE = {"than", "with", "into", "hit", "hits", "against", "to", "of"}
 
 
 def _noun_at(words: list[str], i: int) -> int:
@@ -333,8 +341,10 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     out, read, i = [], [], 0
     while i < len(words):
         n = _noun_at(words, i) if not out or out[-1] not in COLOR_NAMES else 0
-        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and words[i + n + 1:i + n + 2] and \
-                words[i + n + 1] in AFTER_COLOUR and out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"]):
+        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and words[i + n + 1:i + n + 2] and (
+                words[i + n + 1] in AFTER_COLOUR or words[i + n + 1] in AFTER_COLOUR_UNASKED and out[-2:-1]
+                and out[-2] not in COPULAS_BEFORE or words[i + n + 1] in ("?", ".") and out[-2:-1]
+                and out[-2] in OBJECT_BEFORE) and out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"]):
             out += [words[i + n], *words[i:i + n]]
             read.append((" ".join(words[i:i + n + 1]), " ".join([words[i + n], *words[i:i + n]])))
             i += n + 1

@@ -549,6 +549,13 @@ SWITCH_PHRASES = phrase_table([
     (("you", "mei", "you"), ("did",)), (("shi", "bu", "shi"), ("is",)), (("la", "video"), ("the", "video")),
     (("o", "video"), ("the", "video")), (("apres",), ("afterwards",)), (("depois",), ("afterwards",)),
     *(((w,), ()) for w in ("genre", "tipo", "ne", "halt", "ma", "le", "ya3ni", "wallah", "yalla", "khalas", "oder")),
+    # Spanish ('cuando the bus chocar with the car', 'el', 'la', 'o sea', 'desde el inicio')
+    *(((w,), ("collide",)) for w in ("chocar", "chocan", "chocaron", "choco", "chocado")),
+    (("choca",), ("collides",)), (("chocaria",), ("would", "collide")), (("el",), ("the",)), (("la",), ("the",)),
+    (("o", "sea"), ()), (("cuando",), ("when",)),
+    *(((*p, w), ("from", "the", "start")) for p in (("desde", "el"), ("desde", "la")) for w in (
+        "inicio", "principio", "comienzo")),
+    *(((*p, w), ("at", "the", "start")) for p in (("al",), ("en", "el")) for w in ("inicio", "principio", "comienzo")),
     *(((w,), ("when",)) for w in ("quand", "quando", "wenn")), (("ruguo",), ("if",)), (("zhuang",), ("hit",)),
     *(((w,), ("or",)) for w in ("ou", "haishi")), *(((w,), ("is",)) for w in ("ist", "est")),
     *(((w,), ("was",)) for w in ("tava", "era", "etait", "estava", "war")),
@@ -565,7 +572,9 @@ SWITCH_PHRASES = phrase_table([
 SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
                   "est", "quand", "quando", "wenn", "ist", "tava", "etait", "estava", "haishi", "ruguo", "zhuang",
                   "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual",
-                  "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio"}
+                  "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio",
+                  "cuando", "chocar", "chocan", "chocaron", "choco", "chocado", "choca", "chocaria", "inicio",
+                  "principio"}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

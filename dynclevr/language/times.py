@@ -100,6 +100,7 @@ def cut_premise(clause: list[str]) -> bool:
 PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
             ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
+            ["here"], ["right", "there"], ["right", "here"],
             ["part", "of", "the", "way", "through"], ["part", "of", "the", "way"],
             ["early"], ["in", "the", "middle"])
 END_PREDICATES = (["is", "over"], ["is", "done"], ["is", "finished"], ["is", "complete"], ["has", "ended"],
@@ -154,13 +155,13 @@ def _video_continued(words: list[str], before: list[str] = ()) -> tuple[int, int
 
 
 # where a simulation's or an engineer's video stops ('in the predicted rollout after the cutoff', 'past the stop point')
-CUT_POINTS = tuple([*roll, p, "the", *c] for roll in ((), ("in", "the", "predicted", "rollout"),
-                                                     ("in", "the", "rollout"), ("predicted", "rollout"))
-                   for p in ("after", "past", "beyond") for c in (("cutoff",), ("cut", "-", "off"), ("cut", "off"),
-                                                                   ("stop", "point"), ("stopping", "point"),
-                                                                   ("cut", "point"), ("cut",), ("truncation",),
-                                                                   ("truncation", "point"), ("cutoff", "point"),
-                                                                   ("cut", "-", "off", "point"), ("freeze",)))
+CUT_POINTS = tuple([*roll, p, "the", *c, *of] for roll in ((), ("in", "the", "predicted", "rollout"),
+                                                          ("in", "the", "rollout"), ("predicted", "rollout"))
+                   for of in ((), *(("of", "the", f) for f in ("video", "clip", "footage")))
+                   for p in ("after", "past", "beyond", "following")
+                   for c in (("cutoff",), ("cut", "-", "off"), ("cut", "off"), ("stop", "point"), ("stopping", "point"),
+                             ("cut", "point"), ("cut",), ("truncation",), ("truncation", "point"), ("cutoff", "point"),
+                             ("cut", "-", "off", "point"), ("freeze",)))
 
 
 def _at_cut(words: list[str]) -> tuple[int, int] | None:

@@ -509,7 +509,8 @@ IDIOMS = phrase_table({
     ("this", "here"): ("this",), ("kicking", "off"): ("starting",),
     # learners' 'stands on place', 'arrives in view first time', 'to which side is it driving'
     **{(v, p, "place"): (v, "still") for v in ("stand", "stands", "standing", "stood", "stay", "stays", "staying",
-                                                 "stayed") for p in ("on", "in", "at")},
+                                                 "stayed", "hold", "holds", "holding", "held")
+       for p in ("on", "in", "at")},
     **{(v, "first", "time"): (v, "for", "the", "first", "time") for v in (
         "view", "sight", "enters", "enter", "entered", "appears", "appear", "appeared", "arrives", "arrived")},
     ("to", "which", "side"): ("in", "which", "direction"),
@@ -1018,9 +1019,88 @@ IDIOMS = phrase_table({
        for after in ("with", "?", ".")},
     **{p: ("accelerating",) for p in (("on", "the", "gas"), ("with", "its", "foot", "on", "the", "gas"),
                                       ("pedal", "to", "the", "metal"), ("with", "the", "pedal", "to", "the", "metal"))},
+    # a motoring presenter's: the race's start ('as the lights go green', 'at the drop of the flag', 'straight out of
+    # the blocks'), pace ('how much pace has it got on', 'down on pace against', 'going harder than'), the throttle,
+    # a collision as a 'coming-together' or 'trading paint', a parked car 'on the grid', the ground as 'the deck'
+    **{(*right, when, "the", "lights", go, "green"): _START for right in ((), ("right",)) for when in ("as", "when")
+       for go in ("go", "went", "turn", "turned")},
+    **{p: _START for p in (("at", "the", "drop", "of", "the", "flag"), ("as", "the", "flag", "drops"),
+                           ("when", "the", "flag", "drops"), ("as", "the", "flag", "dropped"),
+                           ("when", "the", "flag", "dropped"), ("when", "the", "flag", "falls"),
+                           *(("straight", "out", "of", "the", g) for g in ("blocks", "gate", "gates")))},
+    ("how", "much", "pace"): ("how", "fast"), ("got", "on"): ("got",),
+    **{(down, "on", "pace", than): (compared, "than") for down, compared in (("down", "slower"), ("up", "faster"))
+       for than in ("against", "to", "on", "compared", "relative")},
+    **{(go, hard): (moving, fast) for go, moving in (("going", "going"), ("goes", "goes"), ("went", "went"),
+                                                    ("go", "go"), ("gone", "gone"))
+       for hard, fast in (("hard", "fast"), ("harder", "faster"))},
+    **{("the", "slowcoach", compared, to): ("slower", "than") for compared in ("compared", "relative")
+       for to in ("with", "to")},
+    **{(*how, "on", "the", "throttle"): ("accelerating",) for how in (
+        (), ("stamping",), ("stamped",), ("hard",), ("its", "foot"), ("with", "its", "foot"), ("getting",),
+        ("foot", "down"))},
+    **{(d, "coming", *hyphen, "together"): (d, "collision") for d in ("a", "the", "its", "their", "that", "any", "no")
+       for hyphen in ((), ("-",))},
+    **{(trade, "paint", "with"): (collide, "with") for trade, collide in (
+        ("trades", "collides"), ("traded", "collided"), ("trade", "collide"), ("trading", "colliding"))},
+    # nothing yet happening is the start ('slower than the grey one before anything happens?', chat's 'b4 anything?')
+    **{("before", "anything", *happens): (*_START, *end) for happens, end in (
+        (("happens",), ()), (("happened",), ()), (("kicks", "off"), ()), (("kicked", "off"), ()), (("?",), ("?",)))},
+    # an airfield's: ground speed, holding, a slow taxi, the throttle forward, wheels chocked or off the ground, the
+    # feed's loss (its end), traffic (what there is to hit), coming off the start
+    ("ground", "speed"): ("speed",), ("holding", "static"): ("static",),
+    **{(*at, "a", "slow", "taxi"): ("slow",) for at in ((), ("at",))}, ("throttle", "forward"): ("accelerating",),
+    ("with", "its", "wheels", "chocked"): (), ("with", "its", "wheels", "off", "the", "ground"): ("in", "the", "air"),
+    **{("loss", "of", f): ("the", "video", "ends") for f in ("feed", "signal", "picture")},
+    ("any", "traffic"): ("anything",), ("the", "traffic"): ("the", "vehicle"),
+    **{(come, "off", "the", "start"): (start,) for come, start in (("come", "started"), ("came", "started"),
+                                                                  ("comes", "starts"))},
+    # a biker's: taken out (hit), set off at a crawl (started slow), its foot down (the throttle open)
+    # ('taken out of the scene' is removed)
+    **{(take, "out", *of): (hit, *of) if not of else (take, "out", *of) for take, hit in (
+        ("taken", "hit"), ("took", "hit"), ("take", "hit"), ("takes", "hits"), ("taking", "hitting"))
+       for of in ((), ("of",))},
+    **{(set_, "off"): (start,) for set_, start in (("set", "started"), ("sets", "starts"), ("setting", "starting"))},
+    **{(start, "out"): (start,) for start in ("started", "starts", "start", "starting")},
+    ("at", "a", "crawl"): ("slow",), ("had", "its", "foot", "down"): ("been", "accelerating"),
+    ("its", "foot", "down"): ("accelerating",),
+    ("slow", "taxi"): ("slow",),
+    **{(t, "up"): (a,) for t, a in (("throttling", "accelerating"), ("throttles", "accelerates"),
+                                    ("throttled", "accelerated"), ("throttle", "accelerate"))},
+    # a case file's 'the subject car', 'at kick-off'; a technical writer's nominalised time, rate and class
+    ("the", "subject"): ("the",), ("at", "kick", "-", "off"): _START, ("at", "kickoff"): _START,
+    **{(under, "the", premise, "that"): ("suppose",) for under in ("under", "on")
+       for premise in ("supposition", "hypothesis", "assumption")},
+    **{("at", "a", lower, rate): (slower,) for lower, slower in (("reduced", "slower"), ("lower", "slower"),
+                                                                 ("higher", "faster"), ("greater", "faster"))
+       for rate in ("rate", "speed", "pace")},
+    **{(upon, "its", *first, entry, *into): ("when", "it", "first", "comes", "into", "view")
+       for upon in ("upon", "on", "at") for first in ((), ("initial",), ("first",)) for entry in ("entry", "entrance")
+       for into in ((), ("into", "view"), ("into", "the", "frame"), ("into", "the", "field", "of", "view"),
+                    ("into", "the", "scene"), ("into", "the", "shot"))},
+    ("classification", "applicable", "to"): ("class", "of"), ("classification", "of"): ("class", "of"),
+    # what floats says so again ('hanging in the air without dropping'; the fall was read as what is asked)
+    **{("without", fall, *down): () for fall in ("dropping", "falling", "sinking", "descending")
+       for down in ((), ("down",))},
+    # a course is a heading ('What course was the scooter on when it struck the pickup?' was read as its speed)
+    **{(which, "course"): (which, "direction") for which in ("what", "which")},
+    ("on", "the", "grid"): (), ("parked", "up"): ("parked",), ("on", "the", "deck"): ("on", "the", "ground"),
+    **{(come, "out", "of", "the", g): (start,) for come, start in (("come", "started"), ("came", "started"),
+                                                                  ("comes", "starts"), ("coming", "starting"))
+       for g in ("blocks", "gate", "gates")},
+    # ... the broadcast and its cameras: the video ('we've paused the tape: ...', 'if we'd kept rolling the cameras')
+    **{("the", b): ("the", "video") for b in ("broadcast", "telecast")},
+    **{(who, *have, paused, "the", film): ("the", film, "is", "paused") for who in ("we", "i", "they", "you")
+       for have in ((), ("'", "ve"), ("have",), ("'", "d"), ("had",))
+       for paused in ("paused", "stopped", "frozen", "halted")
+       for film in ("video", "clip", "tape", "footage", "feed", "film", "recording")},
+    **{("if", who, *had, "kept", rolling, *cameras): ("if", "the", "video", "had", "kept", "going")
+       for who in ("we", "they", "you") for had in (("'", "d"), ("had",)) for rolling in ("rolling", "filming")
+       for cameras in ((), ("the", "cameras"), ("the", "camera"), ("the", "tape"))},
 }.items())
 COMING = ("comes", "come", "came", "coming")
 SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
+CARRIED_UNTIL = {"at", "when", "as", "right", "just", "on", "upon", "in", "during", "once"}   # a time after it
 APPEARING = ("appears", "appear", "appeared", "appearing")
 
 
@@ -1065,10 +1145,11 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if k is not None:
             read += ((f"{out[k]} {out[k + 1]}", "been static"),)
             out[k:k + 2] = ["been", "static"]
-    # 'what speed was the suv carrying' is the speed it moves at (refused as what a vehicle carries)
+    # 'what speed was the suv carrying (when it hit the bus)' is the speed it moves at (refused as what a vehicle
+    # carries)
     for k in range(1, len(out)):
-        if out[k] in SPEED_CARRIED and "speed" in out[:k] and out[k + 1:k + 2] in ([], ["?"], ["-"], [","], ["."],
-                                                                                    [":"]):
+        if out[k] in SPEED_CARRIED and {"speed", "pace"}.intersection(out[:k]) and out[k + 1:k + 2] in (
+                [], ["?"], ["-"], [","], ["."], [":"], *([w] for w in CARRIED_UNTIL)):
             read += ((out[k], SPEED_CARRIED[out[k]]),)
             out[k] = SPEED_CARRIED[out[k]]
     # 'when it comes into view for the first time' is the grammar's 'when it first comes into view' (it was read as
@@ -1528,4 +1609,31 @@ def contest_as_compared(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         if words[end:end + 1] in (["for"], ["in"], ["on"]) and words[end + 1:end + 2] in (["speed"], ["pace"]):
             said = [*CONTESTS[w], "than", *words[k + 1:end]]
             return [*words[:k], *said, *words[end + 2:]], ((" ".join(words[k:end + 2]), " ".join(said)),)
+    return words, ()
+
+
+# a contact in the passive, its maker named last ('whether contact with the bus would have been made by the scooter
+# had ...'; the decoder read the contact's object as its subject): the maker first, as the grammar says it
+CONTACT_MADE = {("would", "have", "been", "made", "by"): ("would", "have", "made"), ("was", "made", "by"): ("made",),
+                ("is", "made", "by"): ("makes",), ("will", "be", "made", "by"): ("will", "make"),
+                ("has", "been", "made", "by"): ("has", "made"), ("had", "been", "made", "by"): ("had", "made")}
+
+
+def contact_made_as_active(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'contact with the bus would have been made by the scooter' -> 'the scooter would have made contact with the
+    bus'. With the words read so, or the words as they are and ()."""
+    named = mentions(words)
+    for k in range(len(words) - 1):
+        if words[k:k + 2] != ["contact", "with"]:
+            continue
+        struck = next((end for start, end, _ in named if start in (k + 2, k + 3)), None)
+        made = struck and next((p for p in CONTACT_MADE if tuple(words[struck:struck + len(p)]) == p), None)
+        if not made:
+            continue
+        after = struck + len(made)
+        maker = next((end for start, end, _ in named if start in (after, after + 1)), None)
+        if maker is None:
+            continue
+        active = words[after:maker] + list(CONTACT_MADE[made]) + words[k:struck]
+        return words[:k] + active + words[maker:], ((" ".join(words[k:maker]), " ".join(active)),)
     return words, ()

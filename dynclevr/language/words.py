@@ -149,6 +149,7 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
                      **{("away", "from", *v): "back" for v in VIEWER}}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"],
+                ["drops"], ["dropped"], ["drops", "out"], ["dropped", "out"],   # a feed's
                 *([e, early] for e in ("ends", "ended", "finishes", "finished") for early in ("early", "abruptly")),
                 ["cut", "off"],
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
@@ -295,7 +296,8 @@ GENERIC_NOUNS = {"thing", "object", "vehicle", "one"}
 
 COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view"}
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
-                "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch")
+                "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch",
+                "shunt")
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
