@@ -3645,3 +3645,40 @@ def test_a_colour_after_its_vehicle_spanish_between_english_words_and_a_course()
     assert course[-1] == "query_moving_direction" and hanging[-1] == "is_floating"
     # a colour after its vehicle, asked with a copula, asks the colour: no family's
     assert_refused(parser, ["Is the bus red?"])
+
+
+def test_a_machine_translation_s_words_and_a_remembered_question():
+    parser = QuestionParser.load()
+    topic, remember, case = parser.analyse_batch([
+        "Blue SUV as for, in the beginning it is stopped state, is it right?",
+        "Do you remember what colour the one moving slowly at the beginning was?",
+        "In case brown scooter start time was slow speed, brown scooter and blue SUV collision occur?"])
+    assert topic.program[-1] == "is_static"
+    assert remember.program == ["Objects", "start", "filter_moving_velocity[slow]", "unique", "query_attributes[color]"]
+    # 'in case' is a condition (it was read as the scooter's speed at the collision)
+    assert case.program is None or "Counterfactual_moving_slow" in case.program
+    moment, form = parser.analyse_batch([
+        # a clause between commas that names the other vehicle and a collision is the question's time, no aside
+        "The brown station wagon, with red scooter bumping moment, is slowly moving one?",
+        # 'yes or no' asks yes or no (it was read as which speed)
+        "Yellow color chopper motorcycle, the start time, fast running is yes or no?"])
+    assert moment.program is None or "get_frame" in moment.program
+    assert form.program is None or form.program[-1] == "is_moving_velocity[fast]"
+
+
+def test_a_condition_in_the_simple_past_or_named_as_a_state_or_a_start():
+    parser = QuestionParser.load()
+    stayed, never, hovering, start, halts = parser.parse_batch([
+        "If the green wagon stayed still, would it hit the brown bus?",
+        "Would the cruiser hit the blue sedan if it never moved?",
+        "Would a hovering airliner have hit the red road bike?",
+        "Would a fast start make the scooter crash into the green car?",
+        "Given that the video halts partway, will the grey pickup and the purple school bus collide thereafter?"])
+    assert "Counterfactual_static" in stayed and "Counterfactual_static" in never
+    assert "Counterfactual_floating" in hovering and hovering[1] == "filter_attributes[airliner]"
+    assert "Counterfactual_moving_fast" in start and start[1] == "filter_attributes[scooter]"
+    assert halts[0] == "futureEvents"
+    # a video's stop said in a condition stays the predictive questions' premise, not a condition on a vehicle
+    paused, = parser.parse_batch(["If the clip were paused here, would the bus and the car collide?"])
+    assert paused[0] == "futureEvents"
+    assert_refused(parser, {"Who collides with the cyan minivan after the yellow bus does?": "order"})

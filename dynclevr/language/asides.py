@@ -1148,8 +1148,10 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
         # (nor where speeds are offered after it: '..., the velocity of the suv is static, slow or fast?')
         rest = set(out[close + 1:]) if close else set()
-        # (nor a clause where the vehicle itself collides: 'the thing it crashes into', 'with anything it collides')
-        own_impact = asks_impact(out[k:close]) and {"it", "they"} & set(out[k:close]) if close else False
+        # (nor a clause where the vehicle itself collides: 'the thing it crashes into', 'with anything it collides',
+        # a translator's 'the brown station wagon , with red scooter bumping moment , is slowly moving one ?')
+        own_impact = asks_impact(out[k:close]) and ({"it", "they"} & set(out[k:close]) or not RELATIVES & set(
+            out[k:close])) if close else False
         if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
                 and not own_impact:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
@@ -1185,6 +1187,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return out, tuple(read)
 
 
+RELATIVES = {"which", "that", "who", "whom", "whose", "where"}   # a clause that describes ('..., which later hits ...')
 GROUND_GLOSSES = tuple((*n, t, s) for n in (("not", "touching"), ("not", "on")) for t in ("the", "any")
                        for s in ("floor", "ground")) + (("off", "the", "ground"), ("off", "the", "floor"))
 STRESSED_NOTS = (("not", "one", "bit"), ("not", "a", "bit"), ("not", "even", "a", "little"), ("not", "an", "inch"),

@@ -565,7 +565,7 @@ def answer_form_unmatched(read_as: tuple[tuple[str, str], ...], program: list[st
     @ start = not moving? (y/n)'), and its nearest reading asks which."""
     # (or a yes-or-no tag: a learner's 'fast he is going or not?'; or an instruction: '... = fast? yes or no.')
     yes_or_no = any(why == "nothing, an answer's form" or said.strip(" ,?") in ("or not", "or no", "or nah") and
-                    why == "?" or why.startswith("nothing") and {"yes", "no"} <= set(said.split())
+                    why == "?" or (why.startswith("nothing") or why == "?") and {"yes", "no"} <= set(said.split())
                     for said, why in read_as)
     if yes_or_no and OPS[operation(program[-1])].output is str:
         return ("the question asks yes or no (its answer's form), but its nearest reading asks which (a speed, a "

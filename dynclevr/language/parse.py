@@ -89,12 +89,13 @@ from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoine
                                      slips, sound_index, stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
                                         choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
-                                        contact_made_as_active, contest_as_compared, drive_on_as_hit,
-                                        floating_plane_as_vehicle, fronted_value_as_asked, heading_as_direction,
-                                        height_as_aloft, idioms_as_said, imperative_as_stated, inverted_as_asked,
-                                        negative_question_as_asked, noun_phrase_as_question, request_after_setting,
-                                        request_as_imperative, restated_dropped, speed_as_subject, tail_as_question,
-                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
+                                        condition_named_as_said, contact_made_as_active, contest_as_compared,
+                                        drive_on_as_hit, floating_plane_as_vehicle, fronted_value_as_asked,
+                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        inverted_as_asked, negative_question_as_asked, noun_phrase_as_question,
+                                        request_after_setting, request_as_imperative, restated_dropped,
+                                        speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle,
+                                        verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -383,7 +384,8 @@ class QuestionParser:
         words, idioms = idioms_as_said(words)
         words, contest = contest_as_compared(words)
         words, active = contact_made_as_active(words)
-        idioms += contest + active
+        words, named_condition = condition_named_as_said(words)
+        idioms += contest + active + named_condition
         words, digressed = digressions_dropped(words)
         idioms += digressed
         words, described = description_as_said(words)

@@ -699,7 +699,8 @@ def ordered(words: list[str]) -> str:
               and words[k + 1] in DETERMINERS for j in (3, 2, 1) if words[k + 1 + j:k + 2 + j] and
               words[k + 1 + j] in OBJECT_WORDS - set(COLOR_NAMES) and all(
                   w in OBJECT_WORDS for w in words[k + 2:k + 1 + j])
-              and words[k + 2 + j:k + 3 + j] in ([], ["?"], ["."], [","])), None)   # not 'after the bus ends'
+              and words[k + 2 + j:k + 3 + j] in ([], ["?"], ["."], [","], ["does"], ["did"], ["do"], ["has"])),
+             None)   # not 'after the bus ends'; 'who hits the van after the bus does?'
     if said is None:
         return ""
     return (f"the question asks about an order of collisions or vehicles ('{said}'), which no question here asks: "

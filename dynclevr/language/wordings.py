@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
@@ -147,7 +148,7 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"|describe(?: for me| to me)?(?= (?:which|what|how|whether))"
                      # an assistant's verb of the answer ('could you identify what kind of vehicle ...')
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
-                     r"|do you (?:happen to )?know"
+                     r"|do you (?:happen to )?(?:know|(?:remember|recall)(?= (?:which|what|how|whether|if)))"
                      r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
                      r"(?:like to |love to )?know"
                      r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
@@ -1082,6 +1083,12 @@ IDIOMS = phrase_table({
     # what floats says so again ('hanging in the air without dropping'; the fall was read as what is asked)
     **{("without", fall, *down): () for fall in ("dropping", "falling", "sinking", "descending")
        for down in ((), ("down",))},
+    # a machine translator's: 'in case' of a condition, the start as a time ('at beginning time', 'the start time'),
+    # a topic marker ('Blue SUV as for, ...'), a tag ('..., is it so?')
+    ("in", "case"): ("if",),
+    **{(*at, first, "time"): _START for at in ((), ("at",), ("at", "the"), ("the",), ("in",), ("in", "the"))
+       for first in ("beginning", "start", "starting")},
+    ("as", "for", ","): (",",), **{(",", "is", "it", so, "?"): ("?",) for so in ("so", "right", "true", "correct")},
     # a course is a heading ('What course was the scooter on when it struck the pickup?' was read as its speed)
     **{(which, "course"): (which, "direction") for which in ("what", "which")},
     ("on", "the", "grid"): (), ("parked", "up"): ("parked",), ("on", "the", "deck"): ("on", "the", "ground"),
@@ -1121,6 +1128,12 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     # the video begins?'; not 'would that describe the pace of ...')
     if words[:2] == ["describe", "the"] and words[2:3] and words[2] in DESCRIBED:
         read, words = (*read, ("describe", "what is")), ["what", "is", *words[1:]]
+    # a condition in the simple past before or after 'would' ('If the green wagon stayed still, would it hit the
+    # bus?', 'Would the cruiser hit the sedan if it never moved?'; the decoder read no condition): the grammar's past
+    # perfect, as a context's condition is said (`context._condition_said`); not a video's stop ('if the clip were
+    # paused')
+    words, perfect = _condition_perfect(words)
+    read += perfect
     out, more = phrases_as_said(words, IDIOMS)
     read += more
     # what a vehicle hits said as a person ('does the chopper touch anyone?'): only vehicles are there to hit
@@ -1170,6 +1183,29 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     for k in reversed(speeding):
         out[k + 1:k + 1] = ["along"]
     return out, read + (("speeding", "speeding along"),) * bool(speeding)
+
+
+def _condition_perfect(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'if the green wagon stayed still , would ...' -> 'if the green wagon had stayed still , would ...' (and 'if it
+    never moved' -> 'if it had never moved', 'if the bus was fast' -> 'if the bus had been fast'), where 'would'
+    asks of it; with the words read so."""
+    if "would" not in words or "if" not in words:
+        return words, ()
+    k = words.index("if")
+    end = next((j for j in range(k + 1, len(words)) if words[j] in (",", "?", ".", "would", "then")), len(words))
+    clause, named = words[k + 1:end], mentions(words[k + 1:end])
+    subject = named[0][1] if named and named[0][0] <= 1 else 1 if clause[:1] == ["it"] else None
+    if subject is None or "had" in clause or cut_premise(clause):
+        return words, ()
+    j = k + 1 + subject
+    never = words[j:j + 1] == ["never"]
+    verb = words[j + never] if j + never < len(words) else None
+    if verb in ("was", "were") and not never and words[j + 1:j + 2] and words[j + 1] in STATES_SAID:
+        return words[:j] + ["had", "been"] + words[j + 1:], ((verb, "had been"),)
+    if verb in PARTICIPLES and verb not in ("is", "was"):
+        said = ["had", *["never"] * never, PARTICIPLES[verb]]
+        return words[:j] + said + words[j + 1 + never:], ((" ".join(words[j:j + 1 + never]), " ".join(said)),)
+    return words, ()
 
 
 def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1547,8 +1583,9 @@ def _subject_last(lead: list[str], last: list[str]) -> tuple[list[str], list[str
     phrase ('collide with the bike , did the suv', 'outpace the blue one does the red one'); else None."""
     if len(last) >= 2 and last[-1] in INVERTED_AUXILIARIES:
         s = _subject_at_end(last[:-1])
-        # (not a comparison's ellipsis: 'is the biplane faster than the truck is ?')
-        if s is not None and not (s == 0 and not lead) and last[s - 1:s] != ["than"] and \
+        # (not a comparison's ellipsis: 'is the biplane faster than the truck is ?', nor an order's: 'who hits the
+        # van after the bus does ?')
+        if s is not None and not (s == 0 and not lead) and last[s - 1:s] not in (["than"], ["after"], ["before"]) and \
                 not set(last[:s]) & (AUXILIARIES | {"will", "would", "can", "could", "has", "have", "had"}):
             subject, predicate, aux = last[s:-1], last[:s], last[-1]
             if not predicate or len(predicate) == 1 and _is_verb(predicate[0]):
@@ -1637,3 +1674,35 @@ def contact_made_as_active(words: list[str]) -> tuple[list[str], tuple[tuple[str
         active = words[after:maker] + list(CONTACT_MADE[made]) + words[k:struck]
         return words[:k] + active + words[maker:], ((" ".join(words[k:maker]), " ".join(active)),)
     return words, ()
+
+
+# a condition said as the vehicle's state or start ('Would a hovering airliner have hit the red road bike?', 'Would a
+# fast start make the scooter crash into the green car?'): the grammar's 'if ... had been ..., would ...'
+STATE_NAMED = {"hovering", "floating", "static", "stationary", "parked", "motionless", "accelerating", "speeding",
+               "fast", "slow"}
+START_MADE = (("make",), ("have", "made"), ("cause",), ("have", "caused"), ("lead",), ("have", "led"))
+
+
+def condition_named_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'would a hovering airliner have hit the bike ?' -> 'would the airliner have hit the bike if it had been
+    hovering ?'; 'would a fast start make the scooter crash into the car ?' -> 'if the scooter had started fast ,
+    would it crash into the car ?'. With the words read so, or the words as they are and ()."""
+    if words[:2] not in (["would", "a"], ["would", "an"]) or words[2:3] == [] or words[2] not in STATE_NAMED:
+        return words, ()
+    state, named = words[2], mentions(words)
+    if words[3:4] == ["start"]:
+        made = next((m for m in START_MADE if tuple(words[4:4 + len(m)]) == m), None)
+        subject = made and next(((a, b) for a, b, _ in named if a in (4 + len(made), 5 + len(made))), None)
+        if not subject:
+            return words, ()
+        b = subject[1]
+        said = ["if", *words[4 + len(made):b], "had", "started", state, ",", "would", "it"]
+        rest = words[b:]
+        rest = rest[1:] if rest[:1] == ["to"] else rest   # 'lead the bus to hit ...'
+        return said + rest, ((" ".join(words[:b]), " ".join(said)),)
+    subject = next(((a, b) for a, b, _ in named if a == 3), None)
+    if subject is None or words[subject[1]:subject[1] + 1] != ["have"]:
+        return words, ()
+    end = len(words) - (words[-1:] in (["?"], ["."]))
+    out = ["would", "the", *words[3:end], "if", "it", "had", "been", state, *words[end:]]
+    return out, ((" ".join(words[:subject[1]]), " ".join(["would", "the", *words[3:subject[1]]])),)

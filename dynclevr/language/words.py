@@ -149,7 +149,7 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
                      **{("away", "from", *v): "back" for v in VIEWER}}
 # a video stopped part-way, as a predictive question says it ('given that the video is halted partway through')
 STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"],
-                ["drops"], ["dropped"], ["drops", "out"], ["dropped", "out"],   # a feed's
+                ["drops"], ["dropped"], ["drops", "out"], ["dropped", "out"], ["halts"],   # a feed's
                 *([e, early] for e in ("ends", "ended", "finishes", "finished") for early in ("early", "abruptly")),
                 ["cut", "off"],
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
