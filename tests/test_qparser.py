@@ -3682,3 +3682,27 @@ def test_a_condition_in_the_simple_past_or_named_as_a_state_or_a_start():
     paused, = parser.parse_batch(["If the clip were paused here, would the bus and the car collide?"])
     assert paused[0] == "futureEvents"
     assert_refused(parser, {"Who collides with the cyan minivan after the yellow bus does?": "order"})
+
+
+def test_a_collision_in_the_passive_is_the_striker_s():
+    parser = QuestionParser.load()
+    speed, fast, ever, caused, imagined = parser.parse_batch([
+        "By the time the red car is hit by the purple motorbike, at what speed is the motorbike travelling?",
+        "Is the brown bus run into by the cyan SUV while the SUV is moving fast?",
+        "Is the blue private jet ever hit by the red SUV?",
+        "Would a collision with the blue pickup have been caused by the school bus if it had been started fast?",
+        "Would the yellow airliner have been collided with by the gray one, had the gray one been held stationary from "
+        "the beginning?"])
+    # each was asked of, or imagined of, the vehicle struck
+    assert speed[:3] == ["Objects", "filter_attributes[purple]", "filter_attributes[motorbike]"]
+    assert speed[-1] == "query_moving_velocity" and fast[1:3] == ["filter_attributes[cyan]", "filter_attributes[suv]"]
+    # (whether two collide asks of both: said in the passive, its order stays as said)
+    assert ever[:4] == ["Events", "Objects", "filter_attributes[blue]", "filter_attributes[jet]"] and ever[-1] == "exist"
+    assert caused[1] == "filter_attributes[school_bus]" and "Counterfactual_moving_fast" in caused
+    assert imagined[1] == "filter_attributes[gray]" and "Counterfactual_static" in imagined
+    # 'am I wrong that ...' is answered the other way round from what it states: refused, not read as 'is it true'
+    assert_refused(parser, ["Am I wrong that the yellow one was going faster than the blue double-decker at the "
+                            "moment they crashed?",
+                            "The yellow bus and the gray car were the first pair to collide, weren't they?"])
+    found, = parser.parse_batch(["Find out if the brown SUV bumps into anything during the video."])
+    assert found[-1] == "exist" and "filter_attributes[suv]" in found

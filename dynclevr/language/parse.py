@@ -94,8 +94,8 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
                                         inverted_as_asked, negative_question_as_asked, noun_phrase_as_question,
                                         request_after_setting, request_as_imperative, restated_dropped,
-                                        speed_as_subject, tail_as_question, type_as_said, type_of_category_as_vehicle,
-                                        verbless_comparison_asked)
+                                        speed_as_subject, struck_as_active, tail_as_question, type_as_said,
+                                        type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -385,7 +385,8 @@ class QuestionParser:
         words, contest = contest_as_compared(words)
         words, active = contact_made_as_active(words)
         words, named_condition = condition_named_as_said(words)
-        idioms += contest + active + named_condition
+        words, struck = struck_as_active(words)
+        idioms += contest + active + named_condition + struck
         words, digressed = digressions_dropped(words)
         idioms += digressed
         words, described = description_as_said(words)
@@ -467,7 +468,8 @@ class QuestionParser:
                         if (a.isdigit() or a in NUMBERS) and said[k + n - 1:k + n] and said[k + n - 1] in PLURALS
                         and (n == 2 or said[k + 1] in ("other", "more", "different", "separate"))), None) or \
             next((" ".join(said[k:k + 3]) for k in range(len(said) - 2) if said[k] in ("more", "fewer", "less")
-                  and said[k + 1] == "than" and (said[k + 2].isdigit() or said[k + 2] in NUMBERS | {"one", "once"})), None)
+                  and said[k + 1] == "than" and (said[k + 2].isdigit() or said[k + 2] in NUMBERS | {"one", "once"})),
+                 None)
         if counted:
             return [], f"the question counts ('{counted}'), which no question here does", read_as, said
         higher = next((a for a in said if a in HEIGHT_COMPARISONS and not MOTION_NOUNS.intersection(words)), None)

@@ -700,7 +700,10 @@ def ordered(words: list[str]) -> str:
               words[k + 1 + j] in OBJECT_WORDS - set(COLOR_NAMES) and all(
                   w in OBJECT_WORDS for w in words[k + 2:k + 1 + j])
               and words[k + 2 + j:k + 3 + j] in ([], ["?"], ["."], [","], ["does"], ["did"], ["do"], ["has"])),
-             None)   # not 'after the bus ends'; 'who hits the van after the bus does?'
+             None) or \
+        next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] in ("first", "second", "last")
+              and (words[k + 1] == "pair" or words[k + 1] == "to" and words[k + 2].startswith(IMPACT_STEMS))), None)
+    # (not 'after the bus ends'; 'who hits the van after the bus does?'; 'were they the first pair to collide?')
     if said is None:
         return ""
     return (f"the question asks about an order of collisions or vehicles ('{said}'), which no question here asks: "

@@ -149,6 +149,7 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      # an assistant's verb of the answer ('could you identify what kind of vehicle ...')
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
                      r"|do you (?:happen to )?(?:know|(?:remember|recall)(?= (?:which|what|how|whether|if)))"
+                     r"|(?:please )?find out(?= (?:whether|if|which|what|how))"
                      r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
                      r"(?:like to |love to )?know"
                      r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
@@ -1649,21 +1650,25 @@ def contest_as_compared(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return words, ()
 
 
-# a contact in the passive, its maker named last ('whether contact with the bus would have been made by the scooter
-# had ...'; the decoder read the contact's object as its subject): the maker first, as the grammar says it
-CONTACT_MADE = {("would", "have", "been", "made", "by"): ("would", "have", "made"), ("was", "made", "by"): ("made",),
-                ("is", "made", "by"): ("makes",), ("will", "be", "made", "by"): ("will", "make"),
-                ("has", "been", "made", "by"): ("has", "made"), ("had", "been", "made", "by"): ("had", "made")}
+# a contact or a collision in the passive, its maker named last ('whether contact with the bus would have been made
+# by the scooter had ...', 'Would a collision with the blue pickup have been caused by the school bus if ...?'; the
+# decoder read the contact's object as its subject): the maker first, as the grammar says it
+CONTACT_NOUNS = (("contact", "with"), ("a", "collision", "with"), ("collision", "with"), ("a", "crash", "with"))
+CONTACT_MADE = {(*aux, made, "by"): active for made in ("made", "caused") for aux, active in (
+    (("would", "have", "been"), ("would", "have", "hit")), (("have", "been"), ("have", "hit")), (("was",), ("hit",)),
+    (("is",), ("hits",)), (("will", "be"), ("will", "hit")), (("has", "been"), ("has", "hit")),
+    (("had", "been"), ("had", "hit")))}
 
 
 def contact_made_as_active(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'contact with the bus would have been made by the scooter' -> 'the scooter would have made contact with the
-    bus'. With the words read so, or the words as they are and ()."""
+    """'contact with the bus would have been made by the scooter' -> 'the scooter would have hit the bus'. With the
+    words read so, or the words as they are and ()."""
     named = mentions(words)
     for k in range(len(words) - 1):
-        if words[k:k + 2] != ["contact", "with"]:
+        noun = next((n for n in CONTACT_NOUNS if tuple(words[k:k + len(n)]) == n), None)
+        if not noun:
             continue
-        struck = next((end for start, end, _ in named if start in (k + 2, k + 3)), None)
+        struck = next((end for start, end, _ in named if start in (k + len(noun), k + len(noun) + 1)), None)
         made = struck and next((p for p in CONTACT_MADE if tuple(words[struck:struck + len(p)]) == p), None)
         if not made:
             continue
@@ -1671,7 +1676,7 @@ def contact_made_as_active(words: list[str]) -> tuple[list[str], tuple[tuple[str
         maker = next((end for start, end, _ in named if start in (after, after + 1)), None)
         if maker is None:
             continue
-        active = words[after:maker] + list(CONTACT_MADE[made]) + words[k:struck]
+        active = words[after:maker] + list(CONTACT_MADE[made]) + words[k + len(noun):struck]
         return words[:k] + active + words[maker:], ((" ".join(words[k:maker]), " ".join(active)),)
     return words, ()
 
@@ -1706,3 +1711,58 @@ def condition_named_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[st
     end = len(words) - (words[-1:] in (["?"], ["."]))
     out = ["would", "the", *words[3:end], "if", "it", "had", "been", state, *words[end:]]
     return out, ((" ".join(words[:subject[1]]), " ".join(["would", "the", *words[3:subject[1]]])),)
+
+
+# a collision in the passive between two named vehicles ('By the time the red car is hit by the purple motorbike, at
+# what speed is the motorbike travelling?', 'Is the blue jet ever hit by the red SUV?', 'Would the airliner have been
+# collided with by the gray one, had ...?'): the striker first, as the grammar says it (the decoder asked of the one
+# struck, and imagined it otherwise)
+STRUCK = (("hit",), ("struck",), ("rammed",), ("bumped",), ("clipped",), ("smashed",), ("knocked",),
+          *((v, p) for v in ("run", "bumped", "crashed", "smashed", "slammed", "rammed", "driven", "ploughed")
+            for p in ("into",)), ("collided", "with"), ("crashed", "with"))
+BE_SAID = {"is": "hits", "'s": "hits", "gets": "hits", "get": "hit", "was": "hit", "got": "hit", "be": "hit",
+           "been": "hit"}
+ORDER_ASKED = {"if", "had", "would", "suppose", "imagine", "speed", "fast", "slow", "faster", "slower", "quicker",
+               "direction", "way", "heading", "moving", "going", "travelling", "traveling", "static", "stationary",
+               "velocity", "pace", "colour", "color", "kind", "type"}
+CHAIN_KEPT = {"will", "would", "have", "has", "had", "ever", "first", "actually", "really", "then", "later", "also",
+              "eventually", "finally", "ultimately", "still", "not", "never"}
+
+
+def _phrase_start(words: list[str], start: int) -> int:
+    return start - (start > 0 and words[start - 1] in ("the", "a", "an", "this", "that"))
+
+
+def struck_as_active(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the red car is hit by the purple motorbike' -> 'the purple motorbike hits the red car'; 'is the jet ever hit by
+    the suv ?' -> 'does the suv ever hit the jet ?'; 'would the airliner have been collided with by the gray one' ->
+    'would the gray one have hit the airliner'. Only where the order says whom the question asks of: a whether two
+    collide ('was the scooter hit by the truck ?') asks of both. With the words read so, or the words as they are and
+    ()."""
+    if not ORDER_ASKED & set(words):
+        return words, ()
+    named = mentions(words)
+    for b, w in enumerate(words):
+        if w != "by":
+            continue
+        verb = next((v for v in STRUCK if tuple(words[b - len(v):b]) == v), None)
+        striker = verb and next(((s, e) for s, e, _ in named if s in (b + 1, b + 2)), None)
+        struck = striker and next(((s, e) for s, e, _ in reversed(named) if e <= b - len(verb)), None)
+        if not struck:
+            continue
+        chain = words[struck[1]:b - len(verb)]
+        if not set(chain) <= set(BE_SAID) | CHAIN_KEPT:
+            continue
+        x0, y0 = _phrase_start(words, struck[0]), _phrase_start(words, striker[0])
+        x, y = words[x0:struck[1]], words[y0:striker[1]]
+        be = [c for c in chain if c in BE_SAID]
+        kept = [c for c in chain if c not in BE_SAID]
+        if len(be) == 1:   # 'the car is hit by the bike', 'would the jet have been hit by the bus'
+            said = y + kept + ["hit" if kept and kept[-1] in ("will", "would", "have", "has", "had") or
+                               be[0] in ("be", "been") else BE_SAID[be[0]]] + x
+            return words[:x0] + said + words[striker[1]:], ((" ".join(words[x0:striker[1]]), " ".join(said)),)
+        if not be and x0 and words[x0 - 1] in ("is", "was"):   # 'is the jet ever hit by the suv ?'
+            said = ["does" if words[x0 - 1] == "is" else "did", *y, *kept, "hit", *x]
+            return words[:x0 - 1] + said + words[striker[1]:], ((" ".join(words[x0 - 1:striker[1]]),
+                                                                  " ".join(said)),)
+    return words, ()
