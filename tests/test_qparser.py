@@ -3630,6 +3630,10 @@ def test_a_rambling_viewer_s_context_and_a_contact_in_the_passive():
     parse, = parser.analyse_batch(["In the hypothetical absence of any movement on the part of the aeroplane from the "
                                    "start, would contact with the bicycle have resulted?"])
     assert parse.program is None or "Counterfactual_accelerating" not in parse.program
+    # ... where a slip of one ('ganing') says it, it is read
+    slipped, = parser.parse_batch(["If the cyan vehicle had been ganing speed from the start, would it bump into the "
+                                   "red car?"])
+    assert "Counterfactual_accelerating" in slipped
 
 
 def test_a_colour_after_its_vehicle_spanish_between_english_words_and_a_course():

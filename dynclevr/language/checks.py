@@ -28,6 +28,8 @@ start (`end_unread`); a size (`size_unread`)."""
 
 from __future__ import annotations
 
+from difflib import SequenceMatcher
+
 from dynclevr.language.context import _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
 from dynclevr.language.refusals import _asked
@@ -742,10 +744,18 @@ def acceleration_unsaid(words: list[str], program: list[str]) -> str:
             any(a == c and a.endswith("er") and b == "and" for a, b, c in zip(words, words[1:], words[2:])) or \
             any(words[k:k + 3] in (["speed", "going", "up"], ["speed", "-", "up"]) or words[k:k + 2] == ["speed", "up"]
                 for k in range(len(words))) or \
-            any(words[k:k + len(a)] == list(a) for k in range(len(words)) for a in ACCELERATION_SAID):
+            any(words[k:k + len(a)] == list(a) for k in range(len(words)) for a in ACCELERATION_SAID) or \
+            any(_slip_of_speeding_up(w) for w in words):
         return ""
     return ("the question says nothing of speeding up, but its nearest reading asks about it: ask whether the vehicle "
             "is accelerating")
+
+
+def _slip_of_speeding_up(word: str) -> bool:
+    """Whether a word may be a long word of speeding up slipped ('ganing', 'acelerating'), which the decoder reads."""
+    return len(word) >= 5 and word not in SPEEDING_UP and any(
+        SequenceMatcher(None, word, s).ratio() >= 0.85 for s in SPEEDING_UP | {"accelerating", "accelerate"}
+        if len(s) >= 6)
 
 
 LATER_WORDS = {"later", "subsequently", "afterwards", "afterward", "eventually"}
