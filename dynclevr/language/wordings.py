@@ -1718,8 +1718,8 @@ def condition_named_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[st
 # collided with by the gray one, had ...?'): the striker first, as the grammar says it (the decoder asked of the one
 # struck, and imagined it otherwise)
 STRUCK = (("hit",), ("struck",), ("rammed",), ("bumped",), ("clipped",), ("smashed",), ("knocked",),
-          *((v, p) for v in ("run", "bumped", "crashed", "smashed", "slammed", "rammed", "driven", "ploughed")
-            for p in ("into",)), ("collided", "with"), ("crashed", "with"))
+          *((v, "into") for v in ("run", "bumped", "crashed", "smashed", "slammed", "rammed", "driven", "ploughed")),
+          ("collided", "with"), ("crashed", "with"))
 BE_SAID = {"is": "hits", "'s": "hits", "gets": "hits", "get": "hit", "was": "hit", "got": "hit", "be": "hit",
            "been": "hit"}
 ORDER_ASKED = {"if", "had", "would", "suppose", "imagine", "speed", "fast", "slow", "faster", "slower", "quicker",
@@ -1730,6 +1730,7 @@ CHAIN_KEPT = {"will", "would", "have", "has", "had", "ever", "first", "actually"
 
 
 def _phrase_start(words: list[str], start: int) -> int:
+    """Where a mention's noun phrase starts: at its article or demonstrative, if it has one."""
     return start - (start > 0 and words[start - 1] in ("the", "a", "an", "this", "that"))
 
 
