@@ -1190,7 +1190,9 @@ def _condition_perfect(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     """'if the green wagon stayed still , would ...' -> 'if the green wagon had stayed still , would ...' (and 'if it
     never moved' -> 'if it had never moved', 'if the bus was fast' -> 'if the bus had been fast'), where 'would'
     asks of it; with the words read so."""
-    if "would" not in words or "if" not in words:
+    # ('would' of the question's own vehicle: not 'what would happen if ...', which no family asks)
+    if "if" not in words or not any(a == "would" and (b in ("it", "they", "there", "the", "a", "an", "this", "that")
+                                                      or b in OBJECT_WORDS) for a, b in zip(words, words[1:])):
         return words, ()
     k = words.index("if")
     end = next((j for j in range(k + 1, len(words)) if words[j] in (",", "?", ".", "would", "then")), len(words))
