@@ -3710,3 +3710,20 @@ def test_a_collision_in_the_passive_is_the_striker_s():
                             "The yellow bus and the gray car were the first pair to collide, weren't they?"])
     found, = parser.parse_batch(["Find out if the brown SUV bumps into anything during the video."])
     assert found[-1] == "exist" and "filter_attributes[suv]" in found
+
+
+def test_a_heading_a_fronted_whether_and_the_following_offered():
+    parser = QuestionParser.load()
+    heading, on_what, fronted, following = parser.parse_batch([
+        "What heading is the cyan SUV on when the tape begins?",
+        "On what heading was the bus when it hit the red car?",
+        "Whether the blue city bike is accelerating at the beginning is what I want to find out; is it?",
+        "Which of the following is moving fast when the video begins: a car, a bus, a motorbike, a bicycle, or an "
+        "aeroplane?"])
+    # a heading asked as a noun is the direction it moves ('on' was no verb the grammar knows)
+    assert heading[-2:] == ["start", "query_moving_direction"] and "filter_attributes[suv]" in heading
+    assert on_what[-1] == "query_moving_direction" and "get_frame" in on_what
+    # the clause said before its request asks what 'is it?' alone could not (it was read without 'accelerating')
+    assert fronted[-1] == "is_accelerating" and "filter_attributes[utility_bike]" in fronted
+    # the kinds offered ask the kind
+    assert following == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]

@@ -91,11 +91,11 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
                                         condition_named_as_said, contact_made_as_active, contest_as_compared,
                                         drive_on_as_hit, floating_plane_as_vehicle, fronted_value_as_asked,
-                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
-                                        inverted_as_asked, negative_question_as_asked, noun_phrase_as_question,
-                                        request_after_setting, request_as_imperative, restated_dropped,
-                                        speed_as_subject, struck_as_active, tail_as_question, type_as_said,
-                                        type_of_category_as_vehicle, verbless_comparison_asked)
+                                        fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
+                                        imperative_as_stated, inverted_as_asked, negative_question_as_asked,
+                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
+                                        restated_dropped, speed_as_subject, struck_as_active, tail_as_question,
+                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -365,6 +365,8 @@ class QuestionParser:
         words, restated = restated_dropped(words)
         words = request_after_setting(words)
         words, checked = check_ins_stated(words)
+        words, fronted_request = fronted_whether_as_asked(words)
+        checked += fronted_request
         words, context = context_as_question(words, self.known)
         context = checked + context
         context = prompted + kind + restated + context

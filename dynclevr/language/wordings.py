@@ -236,6 +236,21 @@ def request_after_setting(words: list[str]) -> list[str]:
     return words
 
 
+# the request said last, its clause first ('Whether the bus is fast at the start is what I want to find out; is it?')
+FRONTED_WHETHER = re.compile(r"^(?:whether|if) (.+?) is (?:what|something|all) (?:i|we) (?:want|' d like|would like"
+                             r"|need|wanna|' m trying|am trying)(?: to)? (?:know|find out|learn|check|figure out)"
+                             r"(?: [;,:-] (?:is it|does it|was it|did it|is that so|yes or no))? [.?!]$")
+
+
+def fronted_whether_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'whether the bus is fast at the start is what i want to find out ; is it ?' -> 'tell me whether the bus is
+    fast at the start .' (before the context's rules, which read the clause as what 'is it ?' asks of). With the
+    words read so, or the words as they are and ()."""
+    if m := FRONTED_WHETHER.match(" ".join(words)):
+        return ["tell", "me", "whether", *m.group(1).split(), "."], ((" ".join(words), "tell me whether ..."),)
+    return words, ()
+
+
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question that opens with a request for it, the request read as the grammar's 'tell me': 'can you tell me
     the speed of the red car at the start ?' -> 'tell me the speed of ...'; with the words read so (`Parse.read_as`),
@@ -452,8 +467,19 @@ def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     """'heading' as a noun ('the heading of the red car', 'its heading', 'the car's heading'): its direction. The
     grammar says 'heading' only as a verb, of motion ('is the red car heading left'), and reads the noun so too
     ('what is the heading of' was read as the speed). 'how is it heading?' asks which way (it was read as its
-    speed)."""
+    speed). 'what heading is it on (at the start) ?', 'on what heading is it ...?' ask which way it moves."""
     h = len(words) - len(_head(words))
+    h += words[h:h + 3] in (["on", "what", "heading"], ["on", "which", "heading"])
+    on = next((k for k in range(h + 3, len(words) - 1) if words[k] == "on" and words[k + 1] in ("at", "when", "?",
+                                                                                            "as", "while")), None)
+    if words[h:h + 2] in (["what", "heading"], ["which", "heading"]) and words[h + 2:h + 3] in (["is"], ["was"]) and \
+            (on is not None or words[h - 1:h] == ["on"]):
+        out = [*words[:h - (words[h - 1:h] == ["on"])], words[h], "direction", *words[h + 2:]]
+        if on is not None:
+            out[on - (words[h - 1:h] == ["on"])] = "moving"
+        else:
+            out.insert(out.index("at") if "at" in out else len(out) - 1, "moving")
+        return out, ((" ".join(words), " ".join(out)),)
     if words[h:h + 1] == ["how"] and words[h + 1:h + 2] and words[h + 1] in AUXILIARIES and \
             {"heading", "headed"} & set(words):
         return [*words[:h], "which", "way", *words[h + 1:]], (("how", "which way"),)
@@ -1401,9 +1427,11 @@ def choices_as_which(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         if words[k:k + 1] in (["that"], ["which"]) and words[k + 1:k + 2] in (["is"], ["was"]):
             out = which(kind, words[k + 1:])
             return out, ((" ".join(words), " ".join(out)),)
-    # 'which (one / vehicle) is ... : A , B or C ?'
+    # 'which (one / vehicle / of the following / of these) is ... : A , B or C ?'
     if words[:1] == ["which"] and words[-1:] == ["?"]:
         j = 1 + (words[1:2] in (["one"], ["vehicle"]))
+        j += 2 * (words[1:3] in (["of", "you"], ["of", "these"], ["of", "those"])) \
+            + 3 * (words[1:4] in (["of", "the", "next"], ["of", "the", "following"]))
         for k in (k for k, w in enumerate(words) if w in (":", ",", "-") and k > j):
             offered = _offered_names(words, k + 1)
             if offered and offered[1] == len(words) - 1 and words[j:j + 1] in (["is"], ["was"]):
