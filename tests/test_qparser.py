@@ -3727,3 +3727,24 @@ def test_a_heading_a_fronted_whether_and_the_following_offered():
     assert fronted[-1] == "is_accelerating" and "filter_attributes[utility_bike]" in fronted
     # the kinds offered ask the kind
     assert following == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+
+
+def test_a_remark_after_the_question_and_a_voice_assistant_s_homophone():
+    parser = QuestionParser.load()
+    lost, partner, imagined, steady, corrected = parser.parse_batch([
+        "At the start, what colour is the vehicle that's moving slowly? There's a lot going on so I lost track.",
+        "What kind of vehicle did the blue biplane hit? It was pretty low to the ground.",
+        "say the city bus was parked the whole time wood it still crash into the brown thing",
+        "Suppose the bicycle had been steadily gaining pace from the opening moment, would it hit the yellow bus?",
+        "Is the car fast at the start? I mean the red one."])
+    # a remark on the viewer or the scene says nothing of what is asked
+    assert lost == ["Objects", "start", "filter_moving_velocity[slow]", "unique", "query_attributes[color]"]
+    assert partner[-1] == "query_attributes[shape]" and "filter_attributes[biplane]" in partner
+    # 'wood it' is 'would it': the condition's counterfactual, not whether the bus was static at the collision
+    assert "Counterfactual_static" in imagined and imagined[-1] == "exist"
+    assert "Counterfactual_accelerating" in steady
+    # a sentence that names the vehicle meant is no remark: it corrects the question
+    assert corrected[1:3] == ["filter_attributes[red]", "filter_attributes[car]"]
+    # a sentence that says what is asked is no remark, nor is a speed that stays the same speeding up
+    assert_refused(parser, ["Is the red car fast at the start? I'm asking about when it hits the bus.",
+                            "Does the red car keep a steady speed at the start?"])

@@ -740,6 +740,23 @@ def _elaborates(core: list[str], question: list[str]) -> bool:
     return bool(core) and set(core) <= ELABORATING and bool(said) and said <= _speeds_said(question)
 
 
+# a remark after the question, about the viewer or the scene ('I lost track.', 'There's a lot going on.', 'It was
+# pretty low to the ground.'): read as nothing where it says nothing of what is asked or meant
+REMARK_OPENERS = {"i", "we", "there", "it", "that", "this", "they", "my", "our", "honestly", "lol", "haha"}
+RESTATING = {"mean", "meant", "asking", "ask", "asked", "question", "talking", "referring", "want", "wanted", "need",
+             "wonder", "wondering", "curious", "care", "d", "would", "wanna", "instead", "rather", "one"}
+
+
+def _remark(said: list[str]) -> bool:
+    """Whether a sentence said after the question is a remark on it: a statement of the viewer's or of the scene,
+    naming no one vehicle (a correction names one: 'It's the blue one, not the red.')."""
+    words = [w for w in said if w not in (".", "!")]
+    corrected = any(w == "not" and nxt in {"the", "a", "an", "that", "this", *COLOR_NAMES}
+                    for w, nxt in zip(words, words[1:]))   # '..., not the red'
+    return bool(words) and said[-1] != "?" and words[0] in REMARK_OPENERS and not RESTATING & set(words) \
+        and not corrected and not _one_vehicle(words)
+
+
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question with what is said after it read into it, and what was said after it read as nothing; the words
     as they are and () where nothing is said after it, it asks again, or what it says cannot be read so (a vehicle
@@ -759,6 +776,9 @@ def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[t
         said = words[a:b]
         if said[-1] == "?":
             return words, again
+        if _remark(said):
+            read.append((" ".join(said), "nothing, a remark"))
+            continue
         k, e = 0, len(said)
         while k < e and said[k] in AFTER_OPENERS:
             k += 1

@@ -822,6 +822,7 @@ def slowing_down(words: list[str]) -> bool:
 
 
 STEADY = {"constant", "steady", "steadily", "unchanged", "unchanging", "same", "uniform", "uniformly"}
+SPEEDING_UP = {"speeding", "accelerating", "gaining", "picking", "increasing", "building"}
 
 
 def reversed_as_said(words: list[str]) -> str:
@@ -833,7 +834,8 @@ def reversed_as_said(words: list[str]) -> str:
     if any(w.startswith("decelerat") for w in words) or slowing_down(words):
         return ("the question asks whether an object slows down, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")
-    if STEADY.intersection(words):
+    # (not 'steadily speeding up', a speed that changes steadily)
+    if any(w in STEADY and after not in SPEEDING_UP for w, after in zip(words, words[1:] + [""])):
         return ("the question asks whether an object keeps its speed, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")
     passive = [w for k, w in enumerate(words) if w in OUTDONE and "by" in words[k + 1:k + 4]]

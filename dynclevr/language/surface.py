@@ -208,7 +208,8 @@ def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
                 # ('at the moment of their collision' is theirs)
                 "there" if w == "their" and after not in NAMING | GENERIC | QUERY_NOUNS and not after.endswith("s")
                 and not asks_impact([after])
-                else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"} else None)
+                else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"}
+                else "would" if w == "wood" and after in DETERMINERS | {"it", "they", "that", "this"} else None)
         if said:
             read.append((w, said))
             out[k] = said

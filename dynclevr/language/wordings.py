@@ -1110,6 +1110,17 @@ IDIOMS = phrase_table({
     # what floats says so again ('hanging in the air without dropping'; the fall was read as what is asked)
     **{("without", fall, *down): () for fall in ("dropping", "falling", "sinking", "descending")
        for down in ((), ("down",))},
+    **{(*comma, "neither", rise, "nor", fall): () for comma in ((), (",",))
+       for rise in ("rising", "climbing", "ascending") for fall in ("sinking", "falling", "dropping", "descending")},
+    # held up in the air ('What sort of aircraft is suspended in the air ...?' was read as yes or no)
+    **{(hang, *there): (floating,) for hang, floating in (("suspended", "floating"), ("hanging", "floating"),
+                                                          ("hangs", "floats"))
+       for there in (("in", "the", "air"), ("in", "midair"), ("in", "mid", "-", "air"), ("in", "the", "sky"))},
+    # a machine translator's verbs of a noun ('is doing acceleration', 'is taking part' in a collision)
+    **{(do, "acceleration"): (accelerating,) for do, accelerating in (
+        ("doing", "accelerating"), ("making", "accelerating"), ("does", "accelerates"), ("makes", "accelerates"),
+        ("do", "accelerate"), ("make", "accelerate"), ("did", "accelerated"), ("made", "accelerated"))},
+    **{(be, "taking", "part"): (be, "involved") for be in ("is", "was", "are", "were")},
     # a machine translator's: 'in case' of a condition, the start as a time ('at beginning time', 'the start time'),
     # a topic marker ('Blue SUV as for, ...'), a tag ('..., is it so?')
     ("in", "case"): ("if",),
