@@ -3748,3 +3748,28 @@ def test_a_remark_after_the_question_and_a_voice_assistant_s_homophone():
     # a sentence that says what is asked is no remark, nor is a speed that stays the same speeding up
     assert_refused(parser, ["Is the red car fast at the start? I'm asking about when it hits the bus.",
                             "Does the red car keep a steady speed at the start?"])
+
+
+def test_a_translation_s_colour_after_its_vehicle_without_an_article_and_a_terse_note_s_times():
+    parser = QuestionParser.load()
+    pair, airliner, partner, terse, starting, opposed = parser.parse_batch([
+        "Minivan yellow and sedan cyan, they hit each other or not?",
+        "At the moment the plane airliner grey crash into the fighter jet red, the airliner is going fast or not?",
+        "Scooter brown, at the time it bump the car cyan, it move toward which side?",
+        "Cyan sedan static from start: hits purple bus?",
+        "Red sedan's starting speed?",
+        "Is the green motorbike moving slowly at the start, as opposed to standing still or going fast?"])
+    # a colour after its vehicle with no article names it, as before it; a category before a sub-type is the sub-type
+    assert pair[:4] == ["Events", "Objects", "filter_attributes[yellow]", "filter_attributes[minivan]"]
+    assert "filter_attributes[cyan]" in pair and pair[-1] == "exist"
+    assert airliner[1:3] == ["filter_attributes[gray]", "filter_attributes[airliner]"]
+    assert "filter_attributes[fighter]" in airliner and airliner[-1] == "is_moving_velocity[fast]"
+    assert partner[1:3] == ["filter_attributes[brown]", "filter_attributes[scooter]"] and "filter_attributes[cyan]" in \
+        partner and partner[-1] == "query_moving_direction"
+    # 'from start' is the condition's 'from the start'; a starting speed is the speed at the start
+    assert "Counterfactual_static" in terse and terse[-1] == "exist"
+    assert starting[-2:] == ["start", "query_moving_velocity"]
+    # the speeds a yes-or-no question is asked against say what 'yes' means: not which speed is asked
+    assert opposed[-1] == "is_moving_velocity[slow]"
+    # a speed said of the start is not the speed at a collision; a colour after a copula is asked
+    assert_refused(parser, ["Green pickup starting slow: hits red motorbike?", "Is bus red at the start?"])

@@ -858,7 +858,8 @@ def radio_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 # bracket is an unknown word).
 LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
                "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
-               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus", "query", "check", "hypothetical"}
+               "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus", "query", "check", "hypothetical",
+               "from", "newbie", "noob", "novice", "beginner", "rookie", "newcomer"}   # 'Quick one from a newbie:'
 # ('Here's an easy one:': 'easy' is slow; 'Hi, quick check - is ...': a greeting before it, 'quick' is fast)
 ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
 

@@ -355,6 +355,18 @@ def time_symbol_said(words: list[str]) -> str:
             "words ('at the start', 'when the red car hits the bus', 'after the video ends')")
 
 
+def start_speed_at_collision(words: list[str], program: list[str]) -> str:
+    """Why a reading of a speed at a collision is not the question's ('' when it is): the speed is said of the start
+    ('Green pickup starting slow: hits red motorbike?', a premise or a condition, was read as slow at the
+    collision)."""
+    if "get_frame" not in program or not any(op.startswith(("is_moving_velocity", "is_static")) for op in program):
+        return ""
+    said = next((f"{a} {b}" for a, b in zip(words, words[1:]) if a in ("start", "starting", "started") and
+                 (b in SPEED_CLASS_WORDS or b in STATIC_SAID)), None)
+    return (f"the question says a speed at the start ('{said}'), but its nearest reading asks it at a collision: ask "
+            "'if X had been ... from the start, would it hit Y?' or how fast X is when it hits Y") if said else ""
+
+
 def clock_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
     within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'), or

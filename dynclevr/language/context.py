@@ -742,9 +742,9 @@ def _elaborates(core: list[str], question: list[str]) -> bool:
 
 # a remark after the question, about the viewer or the scene ('I lost track.', 'There's a lot going on.', 'It was
 # pretty low to the ground.'): read as nothing where it says nothing of what is asked or meant
-REMARK_OPENERS = {"i", "we", "there", "it", "that", "this", "they", "my", "our", "honestly", "lol", "haha"}
+REMARK_OPENERS = {"i", "we", "there", "it", "that", "this", "they", "my", "our", "honestly", "lol", "haha", "been"}
 RESTATING = {"mean", "meant", "asking", "ask", "asked", "question", "talking", "referring", "want", "wanted", "need",
-             "wonder", "wondering", "curious", "care", "d", "would", "wanna", "instead", "rather", "one"}
+             "wonder", "wondering", "curious", "care", "d", "would", "wanna", "instead", "rather"}
 
 
 def _remark(said: list[str]) -> bool:

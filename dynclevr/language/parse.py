@@ -62,8 +62,9 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
                                       form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
                                       motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
-                                      property_unread, reversed_reading, size_unread, speed_unsaid, still_continuing,
-                                      time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
+                                      property_unread, reversed_reading, size_unread, speed_unsaid,
+                                      start_speed_at_collision, still_continuing, time_symbol_said, time_unasked,
+                                      uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        impact_said_first, retold_as_imagined, scenario_as_asked, settings_as_imagined,
@@ -93,9 +94,10 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         drive_on_as_hit, floating_plane_as_vehicle, fronted_value_as_asked,
                                         fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
                                         imperative_as_stated, inverted_as_asked, negative_question_as_asked,
-                                        noun_phrase_as_question, request_after_setting, request_as_imperative,
-                                        restated_dropped, speed_as_subject, struck_as_active, tail_as_question,
-                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
+                                        noun_phrase_as_question, opposed_dropped, request_after_setting,
+                                        request_as_imperative, restated_dropped, speed_as_subject, struck_as_active,
+                                        tail_as_question, type_as_said, type_of_category_as_vehicle,
+                                        verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -266,6 +268,7 @@ class QuestionParser:
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
             or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
+            or start_speed_at_collision(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
@@ -421,8 +424,9 @@ class QuestionParser:
         words, tail = tail_as_question(words)
         words, choices = attributes_offered_dropped(words)
         words, which = choices_as_which(words)
+        words, opposed = opposed_dropped(words)
         words, offered = alternatives_as_asked(words)
-        offered = choices + which + offered
+        offered = choices + which + opposed + offered
         request = (shorthand + named + corrected + context + after + owned + labelled + inserted + opened + idioms
                    + described + typed + afloat + end + framing + attended + request + stated + negative + asked + aloft
                    + heading + subject + first + more + tail + offered)

@@ -301,6 +301,7 @@ def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 # a spotter's name that is an adjective elsewhere ('the grey heavy' is an airliner; 'the heavy bus', 'the heavy one'
 # are not)
 NOUN_NAMES = {"heavy": "airliner"}
+CATEGORY_SUBTYPES = {c: {v for v, (c2, *_) in SUBTYPES.items() if c2 == c} for c, *_ in SUBTYPES.values()}
 NAMES_AFTER = OBJECT_WORDS | {"vehicle", "one", "thing", "object", "-", "traffic", "load", "truck", "lorry", "bike"}
 
 
@@ -322,7 +323,8 @@ AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", 
 # the car red?'; not 'is the car that gets hit by the bus red?')
 AFTER_COLOUR_UNASKED = {"in", "at", "during"}
 COPULAS_BEFORE = {"is", "was", "are", "were", "be", "been", "'s", "s"}
-OBJECT_BEFORE = {"than", "with", "into", "hit", "hits", "against", "to", "of"}
+OBJECT_BEFORE = {"than", "with", "into", "hit", "hits", "against", "to", "of", "bump", "bumps", "bumped", "crash",
+                 "strike", "strikes", "struck"}
 
 
 def _noun_at(words: list[str], i: int) -> int:
@@ -333,21 +335,56 @@ def _noun_at(words: list[str], i: int) -> int:
     return k - i
 
 
+# ... and with no article, as a translation from a language without them puts it ('When sedan brown and pickup purple
+# bump each other, ...', 'Minivan yellow and sedan cyan, they hit each other?'): at the start, after a comma, 'and' or
+# a preposition, before a comma, a verb or 'and' (never after a copula: 'is bus red?' asks a colour)
+NO_ARTICLE_BEFORE = {",", "and", "with", "than", "into", "to", "when", "if", "suppose", "of", "for", "between", ":",
+                     "hit", "hits", "crash", "bump", "case", "do", "does", "did", "will", "would", "can", "could",
+                     "has", "have", "had"}
+NO_ARTICLE_AFTER = {"and", "or", "one", "bump", "bumps", "bumped", "crash", "run", "runs", "go", "stay", "stays",
+                    "hover", "hovers", "float", "floats", "turn", "become", "becomes", "still", "just", "they", "have",
+                    "at", "in", "start", "move", "with", "only", "already", "not", "from", "accelerating", "yes",
+                    "right", "stand", "speed", "collide"}
+
+
+def _category_before_type_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the plane airliner', 'the car sedan': a category said before a sub-type of it (a translation's classifier)
+    names the sub-type."""
+    out, read, i = [], [], 0
+    while i < len(words):
+        cat, sub = _value_at(words, i), None
+        if cat and cat[0] in CATEGORY_SUBTYPES:
+            sub = _value_at(words, i + cat[1])
+        if sub and sub[0] in CATEGORY_SUBTYPES[cat[0]]:
+            read.append((" ".join(words[i:i + cat[1] + sub[1]]), " ".join(words[i + cat[1]:i + cat[1] + sub[1]])))
+            i += cat[1]
+            continue
+        out.append(words[i])
+        i += 1
+    return out, tuple(read)
+
+
 def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """['the', 'bus', 'that', 'is', 'yellow'] -> (['the', 'yellow', 'bus'], (('bus that is yellow', 'yellow
     bus'),)): a colour after its vehicle, where the vehicle has no colour before it; the apposition's closing comma
     or bracket goes with it ('the scooter, the blue one, ...'). A colour joined to its vehicle by 'coloured' or
     'painted' loses the word. With the words read so, or the words as they are and ()."""
+    words, named = _category_before_type_dropped(words)
     out, read, i = [], [], 0
     while i < len(words):
         n = _noun_at(words, i) if not out or out[-1] not in COLOR_NAMES else 0
-        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and words[i + n + 1:i + n + 2] and (
-                words[i + n + 1] in AFTER_COLOUR or words[i + n + 1] in AFTER_COLOUR_UNASKED and out[-2:-1]
-                and out[-2] not in COPULAS_BEFORE or words[i + n + 1] in ("?", ".") and out[-2:-1]
-                and out[-2] in OBJECT_BEFORE) and out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"]):
+        after = words[i + n + 1] if n and i + n + 1 < len(words) else ""
+        determined = out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"])
+        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and after and (determined and (
+                after in AFTER_COLOUR or after in AFTER_COLOUR_UNASKED and out[-2:-1] and out[-2] not in
+                COPULAS_BEFORE or after in NO_ARTICLE_AFTER and (not out[-2:-1] or out[-2] not in COPULAS_BEFORE) or after in ("?", ".") and out[-2:-1]
+                and out[-2] in OBJECT_BEFORE) or not determined and (not out or out[-1] in NO_ARTICLE_BEFORE)
+                and (after in AFTER_COLOUR | NO_ARTICLE_AFTER or after in ("?", ".") and out[-1:]
+                     and out[-1] in OBJECT_BEFORE)):
+            one = after == "one" and i + n + 2 < len(words) and words[i + n + 2] in (",", "?", "at", "in")
             out += [words[i + n], *words[i:i + n]]
-            read.append((" ".join(words[i:i + n + 1]), " ".join([words[i + n], *words[i:i + n]])))
-            i += n + 1
+            read.append((" ".join(words[i:i + n + 1 + one]), " ".join([words[i + n], *words[i:i + n]])))
+            i += n + 1 + one
             continue
         clause = next((c for c in COLOUR_CLAUSES if n and tuple(words[i + n:i + n + len(c)]) == c), None)
         if clause:
@@ -377,7 +414,7 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
                 continue
         out.append(words[i])
         i += 1
-    return out, tuple(read)
+    return out, named + tuple(read)
 
 
 # A vehicle named by its attributes in clauses, as a database is queried ('the vehicle that is a sedan and is red',

@@ -1121,6 +1121,16 @@ IDIOMS = phrase_table({
         ("doing", "accelerating"), ("making", "accelerating"), ("does", "accelerates"), ("makes", "accelerates"),
         ("do", "accelerate"), ("make", "accelerate"), ("did", "accelerated"), ("made", "accelerated"))},
     **{(be, "taking", "part"): (be, "involved") for be in ("is", "was", "are", "were")},
+    # a terse note's times: 'static from start' (the condition's 'from the start'), the whole video, the cut, a
+    # speed at the start asked alone ('Red sedan's starting speed?' read as speeding up; not a condition's: 'if its
+    # starting speed had been slow')
+    ("from", "start"): ("from", "the", "start"),
+    **{(*f, s, "to", *t, e): ("during", "the", "video") for f in (("from",), ()) for s, e in (
+        ("start", "finish"), ("beginning", "end"), ("start", "end")) for t in ((), ("the",))
+       if f or s != "start" or e != "end"},
+    **{("the", "point", *where, "it", stops): ("the", "cut") for where in (("where",), ("at", "which"), ("when",))
+       for stops in ("stops", "ends", "cuts", "stopped", "ended", "pauses", "paused")},
+    **{(first, "speed", "?"): ("speed", "at", "the", "start", "?") for first in ("starting", "initial")},
     # a machine translator's: 'in case' of a condition, the start as a time ('at beginning time', 'the start time'),
     # a topic marker ('Blue SUV as for, ...'), a tag ('..., is it so?')
     ("in", "case"): ("if",),
@@ -1448,6 +1458,24 @@ def choices_as_which(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
             if offered and offered[1] == len(words) - 1 and words[j:j + 1] in (["is"], ["was"]):
                 out = which(offered[0], words[j:k] + ["?"])
                 return out, ((" ".join(words), " ".join(out)),)
+    return words, ()
+
+
+OPPOSED = (["as", "opposed", "to"], ["rather", "than"], ["instead", "of"], ["and", "not"])
+OPPOSED_SPEEDS = {"static", "slow", "fast", "still", "standing", "going", "moving", "being", "parked", "stopped", "or",
+                  ",", "either", "quickly", "slowly", "quick", "not", "at", "all", "stationary", "motionless", "speeding"}
+
+
+def opposed_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is it slow , as opposed to standing still or going fast ?' -> 'is it slow ?': the speeds it is asked against
+    say again what a yes or no means (read as which speed is asked). With the words read so, or the words as they
+    are and ()."""
+    for k in range(1, len(words) - 2):
+        said = next((o for o in OPPOSED if words[k:k + len(o)] == o), None)
+        rest = words[k + len(said):-1] if said else []
+        if rest and words[-1] == "?" and set(rest) <= OPPOSED_SPEEDS and SPEED_CLASS_WORDS & set(words[:k]):
+            j = k - (words[k - 1] == ",")
+            return [*words[:j], "?"], ((" ".join(words[j:-1]), "nothing, the speeds it is asked against"),)
     return words, ()
 
 
