@@ -377,7 +377,8 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         determined = out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"])
         if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and after and (determined and (
                 after in AFTER_COLOUR or after in AFTER_COLOUR_UNASKED and out[-2:-1] and out[-2] not in
-                COPULAS_BEFORE or after in NO_ARTICLE_AFTER and (not out[-2:-1] or out[-2] not in COPULAS_BEFORE) or after in ("?", ".") and out[-2:-1]
+                COPULAS_BEFORE or after in NO_ARTICLE_AFTER and (not out[-2:-1] or out[-2] not in COPULAS_BEFORE)
+                or after in ("?", ".") and out[-2:-1]
                 and out[-2] in OBJECT_BEFORE) or not determined and (not out or out[-1] in NO_ARTICLE_BEFORE)
                 and (after in AFTER_COLOUR | NO_ARTICLE_AFTER or after in ("?", ".") and out[-1:]
                      and out[-1] in OBJECT_BEFORE)):

@@ -1463,7 +1463,8 @@ def choices_as_which(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
 
 OPPOSED = (["as", "opposed", "to"], ["rather", "than"], ["instead", "of"], ["and", "not"])
 OPPOSED_SPEEDS = {"static", "slow", "fast", "still", "standing", "going", "moving", "being", "parked", "stopped", "or",
-                  ",", "either", "quickly", "slowly", "quick", "not", "at", "all", "stationary", "motionless", "speeding"}
+                  ",", "either", "quickly", "slowly", "quick", "not", "at", "all", "stationary", "motionless",
+                  "speeding"}
 
 
 def opposed_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
