@@ -347,6 +347,19 @@ NO_ARTICLE_AFTER = {"and", "or", "one", "bump", "bumps", "bumped", "crash", "run
                     "right", "stand", "speed", "collide"}
 
 
+def _colour_follows(before: list[str], after: str) -> bool:
+    """Whether a colour said straight after a vehicle is its own, not asked of it: `before`, the words before the
+    vehicle; `after`, the word after the colour."""
+    if before[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"]):
+        ahead = before[-2] if len(before) > 1 else ""
+        return after in AFTER_COLOUR or after in AFTER_COLOUR_UNASKED and ahead not in COPULAS_BEFORE | {""} \
+            or after in NO_ARTICLE_AFTER and ahead not in COPULAS_BEFORE \
+            or after in ("?", ".") and ahead in OBJECT_BEFORE
+    last = before[-1] if before else ""
+    return (not before or last in NO_ARTICLE_BEFORE) and (
+        after in AFTER_COLOUR | NO_ARTICLE_AFTER or after in ("?", ".") and last in OBJECT_BEFORE)
+
+
 def _category_before_type_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'the plane airliner', 'the car sedan': a category said before a sub-type of it (a translation's classifier)
     names the sub-type."""
@@ -374,14 +387,7 @@ def description_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     while i < len(words):
         n = _noun_at(words, i) if not out or out[-1] not in COLOR_NAMES else 0
         after = words[i + n + 1] if n and i + n + 1 < len(words) else ""
-        determined = out[-1:] in (["the"], ["a"], ["an"], ["that"], ["this"])
-        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and after and (determined and (
-                after in AFTER_COLOUR or after in AFTER_COLOUR_UNASKED and out[-2:-1] and out[-2] not in
-                COPULAS_BEFORE or after in NO_ARTICLE_AFTER and (not out[-2:-1] or out[-2] not in COPULAS_BEFORE)
-                or after in ("?", ".") and out[-2:-1]
-                and out[-2] in OBJECT_BEFORE) or not determined and (not out or out[-1] in NO_ARTICLE_BEFORE)
-                and (after in AFTER_COLOUR | NO_ARTICLE_AFTER or after in ("?", ".") and out[-1:]
-                     and out[-1] in OBJECT_BEFORE)):
+        if n and words[i + n:i + n + 1] and words[i + n] in COLOR_NAMES and after and _colour_follows(out, after):
             one = after == "one" and i + n + 2 < len(words) and words[i + n + 2] in (",", "?", "at", "in")
             out += [words[i + n], *words[i:i + n]]
             read.append((" ".join(words[i:i + n + 1 + one]), " ".join([words[i + n], *words[i:i + n]])))
