@@ -3773,3 +3773,24 @@ def test_a_translation_s_colour_after_its_vehicle_without_an_article_and_a_terse
     assert opposed[-1] == "is_moving_velocity[slow]"
     # a speed said of the start is not the speed at a collision; a colour after a copula is asked
     assert_refused(parser, ["Green pickup starting slow: hits red motorbike?", "Is bus red at the start?"])
+
+
+def test_a_learner_s_statement_asked_a_note_s_pair_and_a_preamble_that_says_the_end():
+    parser = QuestionParser.load()
+    offered, pair, ahead, slower, less = parser.parse_batch([
+        "The school bus is moving fast or slow or not moving when the video start?",
+        "suppose bus never moved from t0: bus/motorbike collide?",
+        "Looking ahead past the end of the footage shown, does the cyan city bus collide with something?",
+        "The private jet was slow than the gray bus when they bumped?",
+        "Is the red chopper going less fast than the green airliner when the two collide?"])
+    # speeds offered in a statement asked ask which one (it was read as whether it is fast)
+    assert offered[-2:] == ["start", "query_moving_velocity"]
+    assert "Counterfactual_static" in pair and "filter_attributes[motorbike]" in pair
+    # the preamble said when: after the video (it was dropped as framing, and the question read within the video)
+    assert ahead[0] == "futureEvents"
+    assert slower[-1] == "slower_velocity" and less[-1] == "slower_velocity"
+    # a state said straight after 'if' imagines it: not read as the speed at the collision; a slash pair with more
+    # asked than whether they collide stays unread
+    assert_refused(parser, ["Tandem bike at beginning if moving slow, with purple car can collide, is it?",
+                            "red sedan/blue bus crash - which one hit first?",
+                            "3rd vehicle involved in red car / blue bus crash?"])

@@ -1218,6 +1218,10 @@ def _coloured_before(words: list[str], k: int) -> bool:
 FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going", "seeing", "observing", "viewing",
            "based"}
 TIME_SAID = {"moment", "instant", "when", "while", "during"}   # a preamble saying when stays
+# ... and one saying the video's end or after it, where the question does not ('Looking ahead past the end of the
+# footage, does the bus collide with something?' was read within the video)
+AFTER_SAID = {"end", "ends", "ending", "after", "past", "beyond", "ahead", "later", "afterwards", "future", "next",
+              "stop", "stops", "stopped", "cut", "cutoff"}
 POLITE = {"trouble", "mind", "possible", "bother"}
 
 
@@ -1241,7 +1245,8 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     framed = (words[0] in FRAMING or hedge or words[k + 1:k + 2] == ["but"]) and \
         not OBJECT_WORDS.intersection(words[:k])
     if not framed or (CONDITION_WORDS.intersection(words[:k]) and not hedge) or asks_impact(words[:k]) or \
-            TIME_SAID.intersection(words[:k]):
+            TIME_SAID.intersection(words[:k]) or \
+            AFTER_SAID.intersection(words[:k]) and not FUTURE_CUES.intersection(main):
         return words, ()
     # the video's stop said of the preamble's video ('based on the video , which is stopped before the end , is ...')
     stop = main.index(",") if main[:1] == ["which"] and words[k - 1] in FILM_WORDS and "," in main else None

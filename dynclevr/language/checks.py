@@ -485,7 +485,10 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
     said = told or next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
         next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
-             None)   # 'the engine is on from the very start. Would the SUV hit the bike?'
+             None) or next(   # 'the engine is on from the very start. Would the SUV hit the bike?'
+        # a state said straight after 'if' ('Tandem bike at beginning if moving slow, with purple car can collide?')
+        (f"if {' '.join(words[k + 1:k + 3])}" for k, w in enumerate(words) if w == "if" and
+         (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS).intersection(words[k + 1:k + 3])), None)
     if said is None:
         return ""
     return (f"the question imagines otherwise ('{said}'), but its nearest reading asks what happens in the video: "

@@ -617,6 +617,10 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
                 (out[k + 1].isalpha() or out[k + 1:k + 2] == ["."] and out[k] == "vs"):   # 'bus x purple car'
             read.append((out[k], "and"))
             out[k:k + 1 + (out[k + 1] == ".")] = ["and"]
+        elif out[k] == "/" and 0 < k < len(out) - 1 and out[k - 1] in NAMING and out[k - 1] not in COLOR_NAMES and \
+                _pair_collides(out, k):   # two vehicles said as a pair: 'red bus/blue car collide?'
+            out[k] = "and"
+            read.append(("/", "and"))
         elif out[k] == "/" and 0 < k < len(out) - 1 and {out[k - 1], out[k + 1]} <= SLASHED:
             last = not (out[k + 2:k + 3] == ["/"])
             out[k] = "or" if last else ","
@@ -653,6 +657,19 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     if not read:
         return words, ()
     return out, tuple(dict.fromkeys(read))
+
+
+def _pair_collides(words: list[str], k: int) -> bool:
+    """Whether the vehicles said around a slash at words[k] are a pair whose collision the note asks, and nothing
+    more ('red bus/blue car collide?', '...: bus/motorbike collide?'; not 'red sedan/blue bus crash - which one hit
+    first?', '3rd vehicle involved in red car / blue bus crash?')."""
+    i, j = k - 1, k + 1
+    while i > 0 and words[i - 1] in NAMING:
+        i -= 1
+    while j < len(words) and words[j] in NAMING:
+        j += 1
+    return j > k + 1 and words[i - 1:i] in ([], [":"], [","], ["-"]) and asks_impact(words[j:j + 1]) and \
+        words[j + 1:] in ([], ["?"], ["."])
 
 
 # the words a note offers split by slashes ('static/slow/fast', 'left/right')

@@ -1121,6 +1121,17 @@ IDIOMS = phrase_table({
         ("doing", "accelerating"), ("making", "accelerating"), ("does", "accelerates"), ("makes", "accelerates"),
         ("do", "accelerate"), ("make", "accelerate"), ("did", "accelerated"), ("made", "accelerated"))},
     **{(be, "taking", "part"): (be, "involved") for be in ("is", "was", "are", "were")},
+    **{(have, "collision"): (collide,) for have, collide in (("have", "collide"), ("has", "collides"),
+                                                            ("had", "collided"), ("having", "colliding"))},
+    # a learner's comparisons and speeding up ('slow than the gray bus', 'more and more fast', 'get more speed')
+    **{(slow, "than"): (slower, "than") for slow, slower in (("slow", "slower"), ("fast", "faster"),
+                                                            ("quick", "quicker"))},
+    **{(less, slow, "than"): (less, slow, "than") for less in ("less", "more") for slow in ("slow", "fast", "quick")},
+    ("more", "and", "more", "fast"): ("faster", "and", "faster"),
+    **{(get, "more", "speed"): (gain, "speed") for get, gain in (("get", "gain"), ("gets", "gains"),
+                                                                ("getting", "gaining"), ("got", "gained"))},
+    **{(get, "more", "speed", "than"): (get, "more", "speed", "than") for get in ("get", "gets", "getting", "got")},
+    ("without", "fall"): (),
     # a terse note's times: 'static from start' (the condition's 'from the start'), the whole video, the cut, a
     # speed at the start asked alone ('Red sedan's starting speed?' read as speeding up; not a condition's: 'if its
     # starting speed had been slow')
@@ -1487,9 +1498,10 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     as the speed). Two choices at least, of speeds one slow or fast. With the words read so, or the words as they
     are and ()."""
     # asked as yes or no: an auxiliary first, or before its subject after the vehicle or a clause said first ('the
-    # red car at the start , is it fast or slow')
+    # red car at the start , is it fast or slow'), or a statement asked ('the school bus is moving fast or slow ?')
     asking = [m for m, w in enumerate(words) if w in AUXILIARIES and (m == 0 or words[m + 1:m + 2] and (
-        words[m + 1] in SUBJECT_STARTS or words[m + 1] in OBJECT_WORDS))]
+        words[m + 1] in SUBJECT_STARTS or words[m + 1] in OBJECT_WORDS) or words[-1:] == ["?"]
+        and words[m - 1] in OBJECT_WORDS and words[m - 1] not in COLOR_NAMES)]
     if not asking:
         return words, ()
     for i in range(asking[0] + 1, len(words)):
