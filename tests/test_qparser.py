@@ -3794,3 +3794,21 @@ def test_a_learner_s_statement_asked_a_note_s_pair_and_a_preamble_that_says_the_
     assert_refused(parser, ["Tandem bike at beginning if moving slow, with purple car can collide, is it?",
                             "red sedan/blue bus crash - which one hit first?",
                             "3rd vehicle involved in red car / blue bus crash?"])
+
+
+def test_a_translation_s_coming_to_a_collision_and_courtesy_an_order_of_arrival_and_a_partner_s_partner():
+    parser = QuestionParser.load()
+    come, possible, clips, engine = parser.parse_batch([
+        "Does it come to a collision between the green sedan and the purple school bus?",
+        "Would it be possible to know whether the dirt bike crashes into something at all?",
+        "The minivan clips something; what kind of vehicle is it?",
+        "Does the red city bike start off speeding up, engine running?"])
+    # 'does it come to' is whether there is one in the video ('come' had read as the future)
+    assert come[0] == "Events" and come[-1] == "exist"
+    assert possible == ["Events", "Objects", "filter_attributes[dirtbike]", "unique", "filter_collision", "exist"]
+    assert clips[-1] == "query_attributes[shape]" and "get_all_col_partners" in clips
+    assert engine[-1] == "is_accelerating"
+    # an order of arrival ('last' was WordNet's 'lasting', standing) and a partner's partner are no family's
+    assert_refused(parser, {"what kind of vehicle comes in last?": "order",
+                            "The collision partner vehicle of the collision partner of the green SUV, which kind is "
+                            "it?": "another described vehicle"})

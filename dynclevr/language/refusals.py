@@ -702,20 +702,26 @@ def ordered(words: list[str]) -> str:
               and words[k + 2 + j:k + 3 + j] in ([], ["?"], ["."], [","], ["does"], ["did"], ["do"], ["has"])),
              None) or \
         next((" ".join(words[k:k + 3]) for k in range(len(words) - 2) if words[k] in ("first", "second", "last")
-              and (words[k + 1] == "pair" or words[k + 1] == "to" and words[k + 2].startswith(IMPACT_STEMS))), None)
-    # (not 'after the bus ends'; 'who hits the van after the bus does?'; 'were they the first pair to collide?')
+              and (words[k + 1] == "pair" or words[k + 1] == "to" and words[k + 2].startswith(IMPACT_STEMS))), None) \
+        or next((f"{a} {b}" for a, b in zip(words, words[1:]) if b == "last" and a in ARRIVING), None)
+    # (not 'after the bus ends'; 'who hits the van after the bus does?'; 'were they the first pair to collide?';
+    # 'what kind of vehicle comes in last?', whose 'last' WordNet reads as 'lasting', standing)
     if said is None:
         return ""
     return (f"the question asks about an order of collisions or vehicles ('{said}'), which no question here asks: "
             "ask whether they collide")
 
 
+ARRIVING = {"in", "comes", "came", "come", "coming", "enters", "entered", "arrives", "arrived", "appears", "appeared",
+            "up"}
+
+
 def chained(words: list[str]) -> str:
-    """A vehicle described through another described vehicle ('the vehicle hit by the vehicle that hits the bus'),
-    or ''."""
+    """A vehicle described through another described vehicle ('the vehicle hit by the vehicle that hits the bus',
+    'the collision partner of the collision partner of the SUV'), or ''."""
     relatives = [k for k, w in enumerate(words[:-1]) if w in GENERIC_NOUNS and (
         words[k + 1] in RELATIVES or words[k + 1] in PASSIVES and words[k + 2:k + 3] == ["by"])]
-    if len(relatives) < 2:
+    if len(relatives) < 2 and sum(w in ("partner", "partners") for w in words) < 2:
         return ""
     return ("the question describes a vehicle through another described vehicle, which no question here reads: ask "
             "about the one in between first")

@@ -144,12 +144,15 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"(?:(?:can|could|would|will) you (?:please |kindly )?"
-                     r"(?:tell me|let me know|advise(?: me)?"
+                     r"(?:tell me|tell(?= (?:the|whether|if|which|what|how) )|let me know|advise(?: me)?"
                      r"|describe(?: for me| to me)?(?= (?:which|what|how|whether))"
                      # an assistant's verb of the answer ('could you identify what kind of vehicle ...')
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
                      r"|do you (?:happen to )?(?:know|(?:remember|recall)(?= (?:which|what|how|whether|if)))"
                      r"|(?:please )?find out(?= (?:whether|if|which|what|how))"
+                     # a translation's courtesy ('Would it be possible to know whether ...')
+                     r"|(?:would|could|is) it be possible to (?:know|learn|find out|ask)"
+                     r"(?= (?:whether|if|which|what|how|in))"
                      r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
                      r"(?:like to |love to )?know"
                      r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
@@ -1121,6 +1124,19 @@ IDIOMS = phrase_table({
         ("doing", "accelerating"), ("making", "accelerating"), ("does", "accelerates"), ("makes", "accelerates"),
         ("do", "accelerate"), ("make", "accelerate"), ("did", "accelerated"), ("made", "accelerated"))},
     **{(be, "taking", "part"): (be, "involved") for be in ("is", "was", "are", "were")},
+    # a German or Polish translation's 'does it come to a collision' (is there one; 'come' was read as the future)
+    **{(do, "it", "come", "to", *a, "collision"): said for do, said in (
+        ("does", ("is", "there", "a", "collision")), ("did", ("was", "there", "a", "collision")),
+        ("will", ("will", "there", "be", "a", "collision")), ("would", ("would", "there", "be", "a", "collision")))
+       for a in ((), ("a",))},
+    # an engine said again after speeding up asked ('... start off speeding up, engine running?'); 'clips' something
+    **{(",", "engine", on): (",", "engine", "on") for on in ("running", "engaged")},
+    **{(start, "off", ing): (start, ing) for start in ("start", "starts", "started", "starting")
+       for ing in ("speeding", "accelerating", "moving", "going", "driving", "floating", "hovering")},
+    **{(clips, the): (hits, the) for clips, hits in (("clips", "hits"), ("clipped", "hit"))
+       for the in ("the", "a", "an", "something", "anything", "into")},
+    **{("after", "this", "part", "where", "it", stopped): ("after", "the", "cut") for stopped in (
+        "stopped", "stops", "ends", "ended")},
     **{(have, "collision"): (collide,) for have, collide in (("have", "collide"), ("has", "collides"),
                                                             ("had", "collided"), ("having", "colliding"))},
     # a learner's comparisons and speeding up ('slow than the gray bus', 'more and more fast', 'get more speed')
