@@ -3812,3 +3812,21 @@ def test_a_translation_s_coming_to_a_collision_and_courtesy_an_order_of_arrival_
     assert_refused(parser, {"what kind of vehicle comes in last?": "order",
                             "The collision partner vehicle of the collision partner of the green SUV, which kind is "
                             "it?": "another described vehicle"})
+
+
+def test_translations_from_arabic_and_romance_languages_and_a_tester_s_abbreviation():
+    parser = QuestionParser.load()
+    arabic, articulated, same, coll = parser.parse_batch([
+        "When the SUV the green hit the bus the grey, with what speed was it moving?",
+        "How rapid is the bus articulated when it enters in collision with the road bike cyan?",
+        "If the sedan red had stayed stopped since the start, would the same collide with the bus yellow?",
+        "blue double-decker faster than red pickup at their coll? y/n"])
+    # 'the SUV the green' is the green SUV (Arabic's article on the adjective)
+    assert arabic[1:3] == ["filter_attributes[green]", "filter_attributes[suv]"] and arabic[-1] == \
+        "query_moving_velocity" and "filter_attributes[gray]" in arabic
+    # a sub-type's word after its category names the sub-type (it was read as any bus)
+    assert articulated[1] == "filter_attributes[articulated_bus]" and "get_frame" in articulated
+    assert "Counterfactual_static" in same and same[1:3] == ["filter_attributes[red]", "filter_attributes[sedan]"]
+    # 'coll' is a collision (an unknown word, the comparison was read at the start)
+    assert "get_frame" in coll and coll[-1] == "faster_velocity"
+    assert_refused(parser, ["Is the motorbike yellow more rapid than the scooter in the final of the video?"])

@@ -55,7 +55,8 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "articulated omnibus": "articulated bus", "double decker omnibus": "double bus",
                   "school omnibus": "school bus", "city omnibus": "regular bus", "bendy omnibus": "articulated bus",
                   "town bike": "utility bike", "town bicycle": "utility bike", "scrambler": "dirtbike",
-                  "pickup lorry": "truck",
+                  "pickup lorry": "truck", "urban bus": "regular bus", "off - road motorcycle": "dirtbike",
+                  "off - road motorbike": "dirtbike",
                   **{f"{t.split('_')[0]} {noun}": t.replace("_", " ") for noun in ("bicycle", "cycle")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a
@@ -317,7 +318,8 @@ COLOUR_WORDS = ("coloured", "colored", "painted", "color")   # 'green-coloured',
 AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", "moves", "moved", "moving", "goes",
                 "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it", "appears", "appeared",
                 "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first", "are", "were",
-                "more", "less", "faster", "slower", "when", "collide"}
+                "more", "less", "faster", "slower", "when", "collide", "floating", "hovering", "speeding", "accelerating",
+                "flying", "standing", "travelling", "traveling", "driving"}
 # ... or a time, where no copula before it asks the colour ('when it hits the bus purple in the moment that ...'; not
 # 'is the bus red in the video?'), or the question's end after a comparison's or a collision's object ('faster than
 # the car red?'; not 'is the car that gets hit by the bus red?')
@@ -362,15 +364,32 @@ def _colour_follows(before: list[str], after: str) -> bool:
 
 def _category_before_type_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'the plane airliner', 'the car sedan': a category said before a sub-type of it (a translation's classifier)
-    names the sub-type."""
+    names the sub-type; 'the bus articulated', 'the bike mountain': a sub-type's word after its category (a
+    Romance language's order) names it too; 'the sedan the red' (Arabic's article on the adjective) is the red
+    sedan."""
     out, read, i = [], [], 0
     while i < len(words):
         cat, sub = _value_at(words, i), None
         if cat and cat[0] in CATEGORY_SUBTYPES:
             sub = _value_at(words, i + cat[1])
+            turned = _value_at([*words[i + cat[1]:i + cat[1] + 1], *words[i:i + cat[1]]], 0)
+            if not sub and turned and turned[0] in CATEGORY_SUBTYPES[cat[0]] and turned[1] == cat[1] + 1:
+                said = [words[i + cat[1]], *words[i:i + cat[1]]]
+                read.append((" ".join(words[i:i + cat[1] + 1]), " ".join(said)))
+                out += said
+                i += cat[1] + 1
+                continue
         if sub and sub[0] in CATEGORY_SUBTYPES[cat[0]]:
             read.append((" ".join(words[i:i + cat[1] + sub[1]]), " ".join(words[i + cat[1]:i + cat[1] + sub[1]])))
             i += cat[1]
+            continue
+        n = _noun_at(words, i) if out[-1:] == ["the"] else 0
+        if n and words[i + n:i + n + 1] == ["the"] and words[i + n + 1:i + n + 2] and \
+                words[i + n + 1] in COLOR_NAMES and not _noun_at(words, i + n + 2) and \
+                words[i + n + 2:i + n + 3] not in (["one"], ["thing"], ["vehicle"], ["object"]):
+            read.append((" ".join(words[i:i + n + 2]), " ".join([words[i + n + 1], *words[i:i + n]])))
+            out += [words[i + n + 1], *words[i:i + n]]
+            i += n + 2
             continue
         out.append(words[i])
         i += 1

@@ -1124,6 +1124,25 @@ IDIOMS = phrase_table({
         ("doing", "accelerating"), ("making", "accelerating"), ("does", "accelerates"), ("makes", "accelerates"),
         ("do", "accelerate"), ("make", "accelerate"), ("did", "accelerated"), ("made", "accelerated"))},
     **{(be, "taking", "part"): (be, "involved") for be in ("is", "was", "are", "were")},
+    # a Romance language's translation: 'the same' for it, a reflexive collision ('crashes itself with'), 'enters in
+    # collision', 'in the final of the video' (its end, which was read as the start), 'in which sense' (direction),
+    # 'with bigger speed than'
+    **{("the", "same", verb): ("it", verb) for verb in (
+        "collide", "collides", "collided", "crash", "crashes", "crashed", "hit", "hits", "enters", "entered",
+        "comes", "came", "bumps", "bumped", "strikes", "struck", "is", "was", "would", "will", "moves", "goes")},
+    **{(crash, "itself", prep): (crash, "into") for crash in ("crash", "crashes", "crashed", "crashing", "hit", "hits")
+       for prep in ("with", "against", "into", "on")},
+    **{(enter, "in", "collision", "with"): (collide, "with") for enter, collide in (
+        ("enter", "collide"), ("enters", "collides"), ("entered", "collided"), ("entering", "colliding"))},
+    **{(enter, "in", "the", scene, *first): (*first, come, "into", "view") for enter, come in (
+        ("enter", "come"), ("enters", "comes"), ("entered", "came"), ("entering", "coming"))
+       for scene in ("scene", "view", "image", "frame") for first in ((), ("first",))},
+    **{("in", "the", "final", "of"): ("at", "the", "end", "of")},
+    **{("in", which, "sense"): ("in", which, "direction") for which in ("which", "what")},
+    **{("with", big, "speed", "than"): (faster, "than") for big, faster in (
+        ("bigger", "faster"), ("greater", "faster"), ("higher", "faster"), ("more", "faster"), ("lower", "slower"),
+        ("smaller", "slower"), ("less", "slower"))},
+    **{(move, "itself"): (move,) for move in ("moves", "moved", "move", "moving")},
     # a German or Polish translation's 'does it come to a collision' (is there one; 'come' was read as the future)
     **{(do, "it", "come", "to", *a, "collision"): said for do, said in (
         ("does", ("is", "there", "a", "collision")), ("did", ("was", "there", "a", "collision")),
@@ -1131,8 +1150,9 @@ IDIOMS = phrase_table({
        for a in ((), ("a",))},
     # an engine said again after speeding up asked ('... start off speeding up, engine running?'); 'clips' something
     **{(",", "engine", on): (",", "engine", "on") for on in ("running", "engaged")},
+    # (not 'started off moving slowly': 'started moving' is when a motion begins)
     **{(start, "off", ing): (start, ing) for start in ("start", "starts", "started", "starting")
-       for ing in ("speeding", "accelerating", "moving", "going", "driving", "floating", "hovering")},
+       for ing in ("speeding", "accelerating")},
     **{(clips, the): (hits, the) for clips, hits in (("clips", "hits"), ("clipped", "hit"))
        for the in ("the", "a", "an", "something", "anything", "into")},
     **{("after", "this", "part", "where", "it", stopped): ("after", "the", "cut") for stopped in (
