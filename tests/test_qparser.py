@@ -3830,3 +3830,17 @@ def test_translations_from_arabic_and_romance_languages_and_a_tester_s_abbreviat
     # 'coll' is a collision (an unknown word, the comparison was read at the start)
     assert "get_frame" in coll and coll[-1] == "faster_velocity"
     assert_refused(parser, ["Is the motorbike yellow more rapid than the scooter in the final of the video?"])
+
+
+def test_a_translation_s_postpositions_and_hyphens_and_a_height_asked_in_place():
+    parser = QuestionParser.load()
+    start, hyphen = parser.parse_batch([
+        "The red sedan, the start at, how fast it is going it seems — static, slow or fast, is it?",
+        "The speeding-up-at-start vehicle, the engine-on one, which colour it has?"])
+    # a clause between commas that says a time is no aside (it was dropped, and the speed read at coming into view)
+    assert start[-2:] == ["start", "query_moving_velocity"] and "filter_attributes[sedan]" in start
+    assert hyphen == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert_refused(parser, {"The grey sedan, the video end at, how fast it is moving, is it?": "end",
+                            "Is it so that the purple motorbike, the video middle in, faster than the cyan car is?":
+                                "middle",
+                            "The airplane is floating at which height from the ground?": "height"})

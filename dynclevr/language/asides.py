@@ -1153,8 +1153,11 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         # a translator's 'the brown station wagon , with red scooter bumping moment , is slowly moving one ?')
         own_impact = asks_impact(out[k:close]) and ({"it", "they"} & set(out[k:close]) or not RELATIVES & set(
             out[k:close])) if close else False
+        # (nor a time said with a postposition, as a translator leaves it: ', the start at ,', ', the video end at ,')
+        timed = bool(out[close - 1] in ("at", "in", "on", "during") and (START_WORDS | END_WORDS | {"middle"}) &
+                     set(out[k:close])) if close else False
         if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
-                and not own_impact:
+                and not own_impact and not timed:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []
             continue

@@ -120,6 +120,10 @@ def _asked(words: list[str]) -> tuple[str | None, str]:
         # 'at what height', 'in which frame', 'at exactly what second', 'at what approx. height'
         rest = head[exactly + 1 + (head[exactly + 1:exactly + 2] in ROUGHLY):]
         asked = rest[0] if rest else head[exactly + 1]
+    # ... or asked in place, after a statement ('the plane is floating at which height from the ground?')
+    asked = asked or next((c for a, b, c in zip(words, words[1:], words[2:]) if a in ("at", "in", "on", "from")
+                           and b in ("which", "what") and c in HEIGHT_NOUNS | {"distance", "position", "location"}),
+                          None)
 
     what = f"the '{asked}'" if asked else ""
     if head[:1] == ["how"] and head[1:2] and (head[2:3] and head[2] in AUXILIARIES or head[1] in SPATIAL):

@@ -1143,6 +1143,14 @@ IDIOMS = phrase_table({
         ("bigger", "faster"), ("greater", "faster"), ("higher", "faster"), ("more", "faster"), ("lower", "slower"),
         ("smaller", "slower"), ("less", "slower"))},
     **{(move, "itself"): (move,) for move in ("moves", "moved", "move", "moving")},
+    # a Turkish or Hungarian translation's postpositions ('the start at', 'the video end at', 'the video middle in':
+    # the end and the middle were read as the start or as coming into view), and a compound's hyphens
+    # ('speeding-up-at-start', whose 'speeding' alone was read as fast)
+    **{("the", start, "at"): ("at", "the", start) for start in ("start", "beginning", "outset")},
+    **{("the", video, "end", "at"): ("at", "the", "end", "of", "the", video) for video in ("video", "clip")},
+    **{("the", video, "middle", "in"): ("in", "the", "middle", "of", "the", video) for video in ("video", "clip")},
+    **{(speed, "-", way): (speed, way) for speed, way in (("speeding", "up"), ("speed", "up"), ("speeds", "up"),
+                                                          ("slowing", "down"), ("slow", "down"))},
     # a German or Polish translation's 'does it come to a collision' (is there one; 'come' was read as the future)
     **{(do, "it", "come", "to", *a, "collision"): said for do, said in (
         ("does", ("is", "there", "a", "collision")), ("did", ("was", "there", "a", "collision")),
@@ -1159,6 +1167,9 @@ IDIOMS = phrase_table({
         "stopped", "stops", "ends", "ended")},
     **{(have, "collision"): (collide,) for have, collide in (("have", "collide"), ("has", "collides"),
                                                             ("had", "collided"), ("having", "colliding"))},
+    **{(do, "collision", "with"): (collide, "with") for do, collide in (("does", "collides"), ("do", "collide"))},
+    **{("following", "the", "stop", "of", "the", video): ("after", "the", video, "stops")
+       for video in ("video", "clip", "footage")},
     # a learner's comparisons and speeding up ('slow than the gray bus', 'more and more fast', 'get more speed')
     **{(slow, "than"): (slower, "than") for slow, slower in (("slow", "slower"), ("fast", "faster"),
                                                             ("quick", "quicker"))},
