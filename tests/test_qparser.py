@@ -3844,3 +3844,18 @@ def test_a_translation_s_postpositions_and_hyphens_and_a_height_asked_in_place()
                             "Is it so that the purple motorbike, the video middle in, faster than the cyan car is?":
                                 "middle",
                             "The airplane is floating at which height from the ground?": "height"})
+
+
+def test_a_state_from_the_start_said_without_if_and_what_a_question_points_back_at():
+    parser = QuestionParser.load()
+    speed, dirt = parser.parse_batch(["The scooter was going with which speed at the time it hit the car grey?",
+                                      "At the start, is the dirt motorbike increasing its speed?"])
+    assert speed[-1] == "query_moving_velocity" and "get_frame" in speed   # (it was read as the direction)
+    assert dirt == ["Objects", "filter_attributes[dirtbike]", "unique", "start", "is_accelerating"]
+    # a condition said without 'if' was read as what happens in the video or after it; a question that points back
+    # with 'that' was read with its vehicles turned round; an unknown word after 'the' was let go with its vehicle
+    assert_refused(parser, {
+        "double decker not moving from beginning will it still collide blue crew sir": "imagines",
+        "private jet hover from beginning do it still hit purple bass": "imagines",
+        "Faster than the motorbike, at the moment of their collision, is that what the blue bicycle is?": "that what",
+        "Collide with the green mountain bike: would the red motorbike do that, had it started out slowly?": "do that"})

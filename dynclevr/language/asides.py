@@ -1222,9 +1222,9 @@ FRAMING = {"thinking", "looking", "watching", "considering", "judging", "going",
            "based"}
 TIME_SAID = {"moment", "instant", "when", "while", "during"}   # a preamble saying when stays
 # ... and one saying the video's end or after it, where the question does not ('Looking ahead past the end of the
-# footage, does the bus collide with something?' was read within the video)
-AFTER_SAID = {"end", "ends", "ending", "after", "past", "beyond", "ahead", "later", "afterwards", "future", "next",
-              "stop", "stops", "stopped", "cut", "cutoff"}
+# footage, does the bus collide with something?' was read within the video; a stop said there is read from the words
+# as said: 'Going forward from where the video stops short, does ...')
+AFTER_SAID = {"end", "ends", "ending", "after", "past", "beyond", "ahead", "later", "afterwards", "future", "next"}
 POLITE = {"trouble", "mind", "possible", "bother"}
 
 

@@ -34,14 +34,14 @@ from dynclevr.language.context import _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
-from dynclevr.language.words import (STOPPED_SAID, ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR,
-                                     ATTRIBUTE_NOUNS, ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS,
-                                     COMPARING, COMPARISONS, CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES,
-                                     END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS,
-                                     IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS,
-                                     NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, REST_WORDS, RESTING, REVERSERS,
-                                     SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOP_CUES, UNMOVED, VIEWER,
-                                     YES_NO_OPENERS, asks_impact, _head)
+from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
+                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS, COMPARING, COMPARISONS,
+                                     CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS,
+                                     FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES,
+                                     MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS, NAMING, NEGATIONS, NUMBERS,
+                                     PARTNER_SAID, QUERY_NOUNS, RESTING, REST_WORDS, REVERSERS, SPEED_CLASS_WORDS,
+                                     START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS,
+                                     _head, asks_impact)
 from dynclevr.questions.programs import OPS
 
 
@@ -355,6 +355,22 @@ def time_symbol_said(words: list[str]) -> str:
             "words ('at the start', 'when the red car hits the bus', 'after the video ends')")
 
 
+def pointed_back(words: list[str], program: list[str]) -> str:
+    """Why a reading is not the question's ('' when it is): the question says what it asks first and points back at
+    it with 'that' ('Slowly, right as the video begins, is that how the motorbike is moving?', read as which speed;
+    'Faster than the motorbike, ..., is that what the blue bicycle is?' and 'Collide with the green mountain bike:
+    would the red motorbike do that, ...?', read with the vehicles turned round)."""
+    # (as yes or no, 'Hovering in the air at the start: is that what the green plane is doing?' reads right; read
+    # as which, or as a comparison, it may not; 'did that purple SUV ...' points at a vehicle)
+    turned = program[-1:] and (program[-1].startswith("query") or program[-1] in ("faster_velocity", "slower_velocity"))
+    said = next((" ".join(words[k:k + 3]) for k in range(1, len(words) - 2) if words[k] in ("is", "was") and
+                 words[k + 1] == "that" and words[k + 2] in ("how", "what")), None) if turned else None
+    said = said or next((f"{a} {b}" for a, b, c in zip(words, words[1:], words[2:] + [""]) if a in ("do", "does", "did")
+                         and b in ("that", "so") and c not in NAMING), None)
+    return (f"the question points back at what it said first ('{said}'): ask it in one clause, without 'that'"
+            ) if program and said else ""
+
+
 def start_speed_at_collision(words: list[str], program: list[str]) -> str:
     """Why a reading of a speed at a collision is not the question's ('' when it is): the speed is said of the start
     ('Green pickup starting slow: hits red motorbike?', a premise or a condition, was read as slow at the
@@ -467,6 +483,15 @@ IMAGINING_SAID = {"imagine", "imagining", "suppose", "supposing", "pretend", "hy
                   *REWRITING}
 
 
+def _state_from_start(words: list[str]) -> str | None:
+    """A state held from the start said of a vehicle, as a condition without 'if' ('double decker not moving from
+    beginning will it still collide blue cruiser', 'private jet hover from beginning do it still hit purple bus')."""
+    return next((" ".join(words[k - 1:k + 2]) for k in range(1, len(words) - 1) if words[k] in ("from", "since")
+                 and (words[k + 1] in START_WORDS or words[k + 1:k + 3] in (["the", "start"], ["the", "beginning"]))
+                 and (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS | {"moving", "hover", "float", "accelerate"})
+                 .intersection(words[max(k - 3, 0):k])), None)
+
+
 def imagining_unread(words: list[str], program: list[str], said_first: list[str] = ()) -> str:
     """Why a reading of what happened is not the question's ('' when it is): the question imagines otherwise ('brown
     motorbike starting slow instead, it hits the gray car?', 'cf: gray one starts slow instead -> ...' were read as
@@ -478,7 +503,7 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
     # (a story told again is read in the words as first said too: its sentence may have been read as context)
     told = next((w for w in [*words, *said_first] if w in REWRITING), None)
     if "futureEvents" in program:
-        said = told
+        said = told or _state_from_start(words) or _state_from_start(list(said_first))
         return "" if said is None else (f"the question imagines the video otherwise ('{said}'), but its nearest "
                                         "reading asks what happens after it: ask as 'if X had been ... from the "
                                         "start, would it hit Y?'")
@@ -488,7 +513,8 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
              None) or next(   # 'the engine is on from the very start. Would the SUV hit the bike?'
         # a state said straight after 'if' ('Tandem bike at beginning if moving slow, with purple car can collide?')
         (f"if {' '.join(words[k + 1:k + 3])}" for k, w in enumerate(words) if w == "if" and
-         (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS).intersection(words[k + 1:k + 3])), None)
+         (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS).intersection(words[k + 1:k + 3])), None) or \
+        _state_from_start(words) or _state_from_start(list(said_first))
     if said is None:
         return ""
     return (f"the question imagines otherwise ('{said}'), but its nearest reading asks what happens in the video: "

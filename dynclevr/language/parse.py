@@ -62,7 +62,7 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
                                       form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
                                       motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
-                                      property_unread, reversed_reading, size_unread, speed_unsaid,
+                                      pointed_back, property_unread, reversed_reading, size_unread, speed_unsaid,
                                       start_speed_at_collision, still_continuing, time_symbol_said, time_unasked,
                                       uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
@@ -268,7 +268,7 @@ class QuestionParser:
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
             or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
-            or start_speed_at_collision(said, c.program)
+            or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)

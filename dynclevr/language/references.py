@@ -56,7 +56,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "school omnibus": "school bus", "city omnibus": "regular bus", "bendy omnibus": "articulated bus",
                   "town bike": "utility bike", "town bicycle": "utility bike", "scrambler": "dirtbike",
                   "pickup lorry": "truck", "urban bus": "regular bus", "off - road motorcycle": "dirtbike",
-                  "off - road motorbike": "dirtbike",
+                  "off - road motorbike": "dirtbike", "dirt motorbike": "dirtbike", "dirt motorcycle": "dirtbike",
                   **{f"{t.split('_')[0]} {noun}": t.replace("_", " ") for noun in ("bicycle", "cycle")
                      for t in ("mountain_bike", "road_bike", "tandem_bike", "utility_bike")}}
 # Shades people name that are one catalogue colour: the nearest of the eight in CIELAB to the shade's usual sRGB, by a

@@ -1139,6 +1139,8 @@ IDIOMS = phrase_table({
        for scene in ("scene", "view", "image", "frame") for first in ((), ("first",))},
     **{("in", "the", "final", "of"): ("at", "the", "end", "of")},
     **{("in", which, "sense"): ("in", which, "direction") for which in ("which", "what")},
+    **{(go, "with", which, "speed"): (move, "at", which, "speed") for which in ("which", "what")
+       for go, move in (("going", "moving"), ("goes", "moves"), ("went", "moved"), ("go", "move"))},
     **{("with", big, "speed", "than"): (faster, "than") for big, faster in (
         ("bigger", "faster"), ("greater", "faster"), ("higher", "faster"), ("more", "faster"), ("lower", "slower"),
         ("smaller", "slower"), ("less", "slower"))},
