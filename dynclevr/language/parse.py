@@ -268,7 +268,6 @@ class QuestionParser:
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
             or direction_unasked(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
-            or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
@@ -286,7 +285,8 @@ class QuestionParser:
             or property_unread(said, c.program) or visibility_unread(said, c.program)
             or acceleration_unread(said, c.program) or acceleration_unsaid(read, c.program)
             or motion_foretold(read, c.program)
-            or end_unread(said + read, c.program) or size_unread(said, c.program)) else c
+            or end_unread(said + read, c.program) or size_unread(said, c.program)
+            or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)) else c
             for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
