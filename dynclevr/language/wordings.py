@@ -1175,6 +1175,7 @@ IDIOMS = phrase_table({
     # a learner's comparisons and speeding up ('slow than the gray bus', 'more and more fast', 'get more speed')
     **{(slow, "than"): (slower, "than") for slow, slower in (("slow", "slower"), ("fast", "faster"),
                                                             ("quick", "quicker"))},
+    # (said as they are: the longest phrase wins, so 'less fast than' and 'got more speed than' keep their words)
     **{(less, slow, "than"): (less, slow, "than") for less in ("less", "more") for slow in ("slow", "fast", "quick")},
     ("more", "and", "more", "fast"): ("faster", "and", "faster"),
     **{(get, "more", "speed"): (gain, "speed") for get, gain in (("get", "gain"), ("gets", "gains"),
@@ -1186,8 +1187,7 @@ IDIOMS = phrase_table({
     # starting speed had been slow')
     ("from", "start"): ("from", "the", "start"),
     **{(*f, s, "to", *t, e): ("during", "the", "video") for f in (("from",), ()) for s, e in (
-        ("start", "finish"), ("beginning", "end"), ("start", "end")) for t in ((), ("the",))
-       if f or s != "start" or e != "end"},
+        ("start", "finish"), ("beginning", "end"), ("start", "end")) for t in ((), ("the",))},
     **{("the", "point", *where, "it", stops): ("the", "cut") for where in (("where",), ("at", "which"), ("when",))
        for stops in ("stops", "ends", "cuts", "stopped", "ended", "pauses", "paused")},
     **{(first, "speed", "?"): ("speed", "at", "the", "start", "?") for first in ("starting", "initial")},
@@ -1508,7 +1508,8 @@ def choices_as_which(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         if words[k:k + 1] in (["that"], ["which"]) and words[k + 1:k + 2] in (["is"], ["was"]):
             out = which(kind, words[k + 1:])
             return out, ((" ".join(words), " ".join(out)),)
-    # 'which (one / vehicle / of the following / of these) is ... : A , B or C ?'
+    # 'which (one / vehicle / of the following / of these) is ... : A , B or C ?' (the lexicon has read 'following'
+    # as 'next' and 'these' as 'you' by now)
     if words[:1] == ["which"] and words[-1:] == ["?"]:
         j = 1 + (words[1:2] in (["one"], ["vehicle"]))
         j += 2 * (words[1:3] in (["of", "you"], ["of", "these"], ["of", "those"])) \
