@@ -3859,3 +3859,33 @@ def test_a_state_from_the_start_said_without_if_and_what_a_question_points_back_
         "private jet hover from beginning do it still hit purple bass": "imagines",
         "Faster than the motorbike, at the moment of their collision, is that what the blue bicycle is?": "that what",
         "Collide with the green mountain bike: would the red motorbike do that, had it started out slowly?": "do that"})
+
+
+def test_paraphrases_of_the_splits_own_questions():
+    parser = QuestionParser.load()
+    car, slower, later, within, described, colour, moment, colon, heard = parser.parse_batch([
+        "When the purple car and the brown truck collide, is the car the faster of the two?",
+        "At the moment the yellow regular bus crashes into the cyan regular bus, is the yellow one moving more slowly?",
+        "Does the cyan tandem bike hit anything in the rest of the frames?",
+        "Within the frames shown, does the purple bicycle collide with anything?",
+        "At the moment of its collision with the brown vehicle, would the cyan car be described as static, slow, or "
+        "fast?",
+        "Considering the object that crashes into the blue fighter jet, what color does that object have?",
+        "Is there any moment when the yellow vehicle crashes with the purple biplane?",
+        "When it hits the cyan articulated bus, which way is the gray minivan going: front, back, left, right, up or "
+        "down?",
+        "yellow motor bike and sian by cycle they collide any time"])
+    # a shorter mention is the vehicle whose word it echoes (a truck is a car too)
+    assert car[1:3] == ["filter_attributes[purple]", "filter_attributes[car]"] and car[-1] == "faster_velocity"
+    assert slower[-1] == "slower_velocity" and slower[1] == "filter_attributes[yellow]"
+    assert later[0] == "futureEvents" and within[0] == "Events" and within[-1] == "exist"
+    assert described[-1] == "query_moving_velocity" and "get_frame" in described
+    assert colour[-2:] == ["unique", "query_attributes[color]"] and "get_all_col_partners" in colour
+    assert moment[0] == "Events" and moment[-1] == "exist"
+    assert colon[-1] == "query_moving_direction" and "filter_attributes[articulated_bus]" in colon
+    # a speaker's 'sian' is cyan with no article before it, and 'scoota' a scooter
+    assert heard[7:9] == ["filter_attributes[cyan]", "filter_attributes[bicycle]"]
+    assert parser.parse_batch(["is the sian scoota fast at the start"])[0][1:3] == [
+        "filter_attributes[cyan]", "filter_attributes[scooter]"]
+    # a 'would' that imagines stays refused where nothing is described
+    assert_refused(parser, {"At the moment of its collision with the brown car, would the cyan car be fast?": "would"})

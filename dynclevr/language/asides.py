@@ -1156,7 +1156,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         # (nor a time said with a postposition, as a translator leaves it: ', the start at ,', ', the video end at ,')
         timed = bool(out[close - 1] in ("at", "in", "on", "during") and (START_WORDS | END_WORDS | {"middle"}) &
                      set(out[k:close])) if close else False
-        if close and "?" not in out[k:close] and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
+        # (nor a question that offers its answers after a colon: ', which way is the gray minivan going : front ,')
+        if close and not {"?", ":"} & set(out[k:close]) and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
                 and not own_impact and not timed:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []

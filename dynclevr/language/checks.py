@@ -365,8 +365,11 @@ def pointed_back(words: list[str], program: list[str]) -> str:
     turned = program[-1:] and (program[-1].startswith("query") or program[-1] in ("faster_velocity", "slower_velocity"))
     said = next((" ".join(words[k:k + 3]) for k in range(1, len(words) - 2) if words[k] in ("is", "was") and
                  words[k + 1] == "that" and words[k + 2] in ("how", "what")), None) if turned else None
-    said = said or next((f"{a} {b}" for a, b, c in zip(words, words[1:], words[2:] + [""]) if a in ("do", "does", "did")
-                         and b in ("that", "so") and c not in NAMING), None)
+    # ('what color does that object have', 'what shape does that floating object have': 'that' before a noun)
+    said = said or next((f"{words[k]} {words[k + 1]}" for k in range(len(words) - 1)
+                         if words[k] in ("do", "does", "did") and words[k + 1] in ("that", "so")
+                         and not (NAMING | GENERIC_NOUNS).intersection(words[k + 2:k + 4] if words[k + 1] == "that"
+                                                                       else [])), None)
     return (f"the question points back at what it said first ('{said}'): ask it in one clause, without 'that'"
             ) if program and said else ""
 
@@ -492,6 +495,17 @@ def _state_from_start(words: list[str]) -> str | None:
                  .intersection(words[max(k - 3, 0):k])), None)
 
 
+# 'would' of a description asked, not of a change ('would the cyan car be described as static, slow or fast?', 'would
+# it be accurate to say ...')
+DESCRIBED = {"described", "considered", "classed", "classified", "characterised", "characterized", "called",
+             "labelled", "labeled", "regarded", "deemed", "categorised", "categorized", "accurate", "correct", "fair",
+             "true", "right"}
+
+
+def _would_describe(after: list[str]) -> bool:
+    return any(w == "be" and after[j + 1:j + 2] and after[j + 1] in DESCRIBED for j, w in enumerate(after))
+
+
 def imagining_unread(words: list[str], program: list[str], said_first: list[str] = ()) -> str:
     """Why a reading of what happened is not the question's ('' when it is): the question imagines otherwise ('brown
     motorbike starting slow instead, it hits the gray car?', 'cf: gray one starts slow instead -> ...' were read as
@@ -509,8 +523,9 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
                                         "start, would it hit Y?'")
     said = told or next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
-        next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]),
-             None) or next(   # 'the engine is on from the very start. Would the SUV hit the bike?'
+        next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]
+              and not _would_describe(words[k + 1:k + 6])), None) or next(
+        # 'the engine is on from the very start. Would the SUV hit the bike?'
         # a state said straight after 'if' ('Tandem bike at beginning if moving slow, with purple car can collide?')
         (f"if {' '.join(words[k + 1:k + 3])}" for k, w in enumerate(words) if w == "if" and
          (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS).intersection(words[k + 1:k + 3])), None) or \

@@ -84,7 +84,8 @@ from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switc
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
                                        homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
                                        telegram_as_said, worksheet_as_said)
-from dynclevr.language.times import first_frames_as_said, inserted_time_last, moment_pictured, video_end_as_said
+from dynclevr.language.times import (first_frames_as_said, inserted_time_last, moment_pictured, present_asked_later,
+                                     video_end_as_said)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
@@ -398,6 +399,8 @@ class QuestionParser:
         words, typed = type_as_said(words)
         words, afloat = floating_plane_as_vehicle(words)
         words, end = video_end_as_said(words)
+        words, later = present_asked_later(words)
+        end += later
         words, framing = framing_dropped(words)
         words, preamble = preamble_dropped(words)
         framing += preamble

@@ -134,8 +134,10 @@ _HEARD_NAMES = {"".join(w): said for said_words, said in
                  *((tuple(c.split()), c) for cs in CATEGORY_SAID.values() for c in cs)]
                 for w in [said_words]}
 _SOUNDLESS = re.compile(r"[aeiouhwy]")
-# ... and its colour, before a name ('the read sedan', 'the blew bus')
+# ... and its colour, before a name ('the read sedan', 'the blew bus'); one that is no other word needs no article
+# before it ('yellow motor bike and sian by cycle')
 HEARD_COLOURS = {"read": "red", "blew": "blue", "sian": "cyan", "scion": "cyan", "grey": "gray"}
+HEARD_ONLY = {"sian"}
 
 
 def _sounded(letters: str) -> str:
@@ -148,6 +150,8 @@ def _heard_name(heard: list[str]) -> str | None:
         return None
     if letters in _HEARD_NAMES:
         return _HEARD_NAMES[letters]
+    if letters.endswith("a") and letters[:-1] + "er" in _HEARD_NAMES:   # a final 'er' said without its r: 'scoota'
+        return _HEARD_NAMES[letters[:-1] + "er"]
     close = {said for name, said in _HEARD_NAMES.items()
              if len(_sounded(name)) >= 3 and _sounded(name) == _sounded(letters)
              or len(name) >= 6 and abs(len(name) - len(letters)) <= 1
@@ -161,7 +165,8 @@ def heard_as_said(words: list[str], known: set[str]) -> tuple[list[str], tuple[t
     words after the colour are no name already and are not all words of `known` that go on with the question."""
     out, read, k = list(words), [], 0
     while k < len(out) - 1:
-        colour = out[k] in COLOR_NAMES or out[k] in HEARD_COLOURS and k and out[k - 1] in ("the", "a", "an")
+        colour = out[k] in COLOR_NAMES or out[k] in HEARD_ONLY or out[k] in HEARD_COLOURS and k and out[k - 1] in (
+            "the", "a", "an")
         if not colour:
             k += 1
             continue
@@ -601,8 +606,11 @@ def corefer(words: list[str], refs: list[Ref]) -> tuple[list[str], list[Ref]]:
               for k, ref in enumerate(refs)}
     root = list(range(len(refs)))
     for k, js in fuller.items():
-        if len(js) == 1:
-            root[k] = js[0]
+        # of several, the one whose words it says again ('When the purple car and the brown truck collide, is the
+        # car faster?': a truck is a car too, but the speaker echoes 'car')
+        echoed = [j for j in js if set(refs[k]) <= set(refs[j])]
+        if len(js) == 1 or len(echoed) == 1:
+            root[k] = js[0] if len(js) == 1 else echoed[0]
     for k in range(len(refs)):   # 'bus' -> 'double bus' -> 'yellow double bus'
         seen = {k}
         while root[root[k]] != root[k] and root[root[k]] not in seen:

@@ -8,6 +8,8 @@ rewrites, `f(words) -> (words, read_as)`."""
 from __future__ import annotations
 
 from dynclevr.language.references import OBJECT_WORDS
+from dynclevr.language.tokenize import tokenize
+from dynclevr.questions.generate import templates
 from dynclevr.language.words import NAMING, QUESTION_OPENERS, START_ADJECTIVES, STOPPED_SAID, asks_impact, _at
 
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
@@ -229,6 +231,27 @@ def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             words = words[:i] + ["after", "the", "video", "ends"] + words[k:]
         start = i + 4
     return words, tuple(read)
+
+
+# the grammar's times after the video that say its frames or their rest ('in the remaining frames', 'after the shown
+# frames'; not 'later' or 'eventually', which may be said within it), and its end as `video_end_as_said` reads it
+LATER_SAID = tuple(sorted({tuple(tokenize(p)) for pool in ("seen", "heldout")
+                           for p in templates()["lexicon"]["LATER"][pool] if len(p.split()) >= 3
+                           and not p.startswith("later")}
+                          | {("after", "the", "video", "ends"), ("in", "the", "rest", "of", "the", "frames")},
+                          key=len, reverse=True))
+
+
+def present_asked_later(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'does the cyan tandem bike hit anything in the rest of the frames ?' -> 'will the cyan tandem bike hit ...': a
+    collision after the video asked in the present tense (read within the video, then refused for its time). With
+    the words read so, or the words as they are and ()."""
+    if not asks_impact(words) or not _at(words, LATER_SAID):
+        return words, ()
+    k = next((j for j, w in enumerate(words) if w in ("does", "do") and (j == 0 or words[j - 1] == ",")), None)
+    if k is None:
+        return words, ()
+    return words[:k] + ["will"] + words[k + 1:], ((words[k], "will"),)
 
 
 # A moment pointed at by picturing it ('Picture the moment the green SUV runs into the bus; how fast is it then?',

@@ -1212,6 +1212,9 @@ IDIOMS = phrase_table({
     **{("if", who, *had, "kept", rolling, *cameras): ("if", "the", "video", "had", "kept", "going")
        for who in ("we", "they", "you") for had in (("'", "d"), ("had",)) for rolling in ("rolling", "filming")
        for cameras in ((), ("the", "cameras"), ("the", "camera"), ("the", "tape"))},
+    # a moment asked of as a time ('Is there any moment when the yellow car crashes with ...?')
+    **{(be, "there", a, moment, when): (be, "there", "any", "time", "when") for be in ("is", "was")
+       for a in ("a", "any", "ever", "some") for moment in ("moment", "instant") for when in ("when", "where")},
 }.items())
 COMING = ("comes", "come", "came", "coming")
 SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
@@ -1370,8 +1373,11 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     two' -> 'the faster one' (no family was read). With the words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
+        # 'more slowly' compares with what follows ('than'), or with the other vehicle of a collision said ('At the
+        # moment the yellow bus crashes into the cyan bus, is the yellow one moving more slowly?')
         said = COMPARATIVES.get(tuple(words[k:k + 2])) or (
-            COMPARED_ADVERBS.get(tuple(words[k:k + 2])) if words[k + 2:k + 3] == ["than"] else None)
+            COMPARED_ADVERBS.get(tuple(words[k:k + 2])) if words[k + 2:k + 3] == ["than"] or words[k + 2:k + 3] in (
+                [], ["?"], ["."], ["when"], ["as"], ["while"]) and asks_impact(words) else None)
         pair = next((p for p in PAIR_SAID if words[k:k + len(p)] == p), None) if out and out[-1] in COMPARISONS \
             else None
         if said:
