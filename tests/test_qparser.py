@@ -3889,3 +3889,23 @@ def test_paraphrases_of_the_splits_own_questions():
         "filter_attributes[cyan]", "filter_attributes[scooter]"]
     # a 'would' that imagines stays refused where nothing is described
     assert_refused(parser, {"At the moment of its collision with the brown car, would the cyan car be fast?": "would"})
+
+
+def test_paraphrases_a_translation_s_contact_a_speed_as_subject_and_a_question_between_commas():
+    parser = QuestionParser.load()
+    contact, shown, directly, speed, fronted, um, dash = parser.parse_batch([
+        "Did it come to a contact between the green biplane and the blue vehicle?",
+        "Will the cyan wagon after the shown frames be involved in a collision?",
+        "Is the cyan airliner directly at the start standing still?",
+        "Is the green airliner's speed at the start fast?",
+        "At the start, is the green airliner's speed fast?",
+        "um so the one that's going really fast when the video starts what kind of vehicle is that",
+        "At the instant of impact with the yellow double-decker bus, which way is the purple bus travelling — forward, "
+        "backward, left, right, up, or down?"])
+    assert contact[0] == "Events" and contact[-1] == "exist"   # (it was read after the video)
+    assert shown[0] == "futureEvents"
+    assert directly[-2:] == ["start", "is_static"]
+    assert speed == fronted == ["Objects", "filter_attributes[green]", "filter_attributes[airliner]", "unique", "start",
+                                "is_moving_velocity[fast]"]
+    assert um == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    assert dash[-1] == "query_moving_direction" and dash[1:3] == ["filter_attributes[purple]", "filter_attributes[bus]"]

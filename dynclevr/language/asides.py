@@ -105,8 +105,9 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
         words, end = kept + words[end:], len(kept)
     closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
+    # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...')
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
-            not ADDRESSED & set(words[:k]):
+            not ADDRESSED & set(words[:k]) and not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"}):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
@@ -1156,8 +1157,11 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         # (nor a time said with a postposition, as a translator leaves it: ', the start at ,', ', the video end at ,')
         timed = bool(out[close - 1] in ("at", "in", "on", "during") and (START_WORDS | END_WORDS | {"middle"}) &
                      set(out[k:close])) if close else False
-        # (nor a question that offers its answers after a colon: ', which way is the gray minivan going : front ,')
-        if close and not {"?", ":"} & set(out[k:close]) and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
+        # (nor the question itself, its answers offered after it: ', which way is the gray minivan going : front ,',
+        # ', which way is the purple bus travelling - forward ,')
+        asked = "?" in out[k:close] or ":" in out[k:close] or out[k + 1] in ("which", "what", "how") and \
+            out[k + 2:k + 3] != [] and out[k + 2] in QUERY_NOUNS | {"way", "fast"} if close else False
+        if close and not asked and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
                 and not own_impact and not timed:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []

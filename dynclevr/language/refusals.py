@@ -306,7 +306,8 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     # (in the clause it opens: 'after the red car and the blue bus collide , which way does the bus rebound ?')
     around = next((w for k, w in enumerate(said) if w in ("before", "after") and asks_impact(
         said[k + 1:next((m for m in range(k + 1, len(said)) if said[m] in (",", "?", ".")), len(said))][:8])
-                   and not FILM_WORDS & set(said[k + 1:k + 3])), None)
+                   and not FILM_WORDS & set(said[k + 1:k + 3]) and not {"frames", "shown", "observed", "given"} & set(
+                       said[k + 1:k + 4])), None)   # ('will the cyan wagon after the shown frames be involved in ...')
     if around:
         return (f"the question asks about the time {around} a collision, which no question here asks (they ask at "
                 "the collision itself)")

@@ -1154,10 +1154,11 @@ IDIOMS = phrase_table({
     **{(speed, "-", way): (speed, way) for speed, way in (("speeding", "up"), ("speed", "up"), ("speeds", "up"),
                                                           ("slowing", "down"), ("slow", "down"))},
     # a German or Polish translation's 'does it come to a collision' (is there one; 'come' was read as the future)
-    **{(do, "it", "come", "to", *a, "collision"): said for do, said in (
+    # ('did it come to a contact between ...')
+    **{(do, "it", "come", "to", *a, impact): said for do, said in (
         ("does", ("is", "there", "a", "collision")), ("did", ("was", "there", "a", "collision")),
         ("will", ("will", "there", "be", "a", "collision")), ("would", ("would", "there", "be", "a", "collision")))
-       for a in ((), ("a",))},
+       for a in ((), ("a",), ("an",)) for impact in ("collision", "contact", "crash", "impact", "clash")},
     # an engine said again after speeding up asked ('... start off speeding up, engine running?'); 'clips' something
     **{(",", "engine", on): (",", "engine", "on") for on in ("running", "engaged")},
     # (not 'started off moving slowly': 'started moving' is when a motion begins)
@@ -1212,6 +1213,10 @@ IDIOMS = phrase_table({
     **{("if", who, *had, "kept", rolling, *cameras): ("if", "the", "video", "had", "kept", "going")
        for who in ("we", "they", "you") for had in (("'", "d"), ("had",)) for rolling in ("rolling", "filming")
        for cameras in ((), ("the", "cameras"), ("the", "camera"), ("the", "tape"))},
+    # 'directly at the start' (a translation's; 'directly' was read as the direction)
+    **{(just, "at", the, start): ("right", "at", "the", start) for just in ("directly", "immediately", "exactly",
+                                                                             "precisely") for the in ("the", "its")
+       for start in ("start", "beginning", "outset")},
     # a moment asked of as a time ('Is there any moment when the yellow car crashes with ...?')
     **{(be, "there", a, moment, when): (be, "there", "any", "time", "when") for be in ("is", "was")
        for a in ("a", "any", "ever", "some") for moment in ("moment", "instant") for when in ("when", "where")},
@@ -1584,11 +1589,21 @@ SPEED_PREDICATES = {"low": "slow", "slow": "slow", "high": "fast", "fast": "fast
                     "0": "static", "nil": "static"}
 
 
+TIMES_AFTER_SPEED = (["at", "the", "start"], ["at", "the", "beginning"], ["at", "the", "outset"], ["initially"],
+                     ["at", "first"])
+
+
 def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the red car's (initial) speed low ?', 'is the (initial) speed of the red car high at the start ?': the
     object as the subject, 'is the red car slow (at the start) ?', which the grammar says; the decoder read the speed
     as the subject as a question about accelerating or a query of the speed. With the words read so, or the words as
-    they are and ()."""
+    they are and (). A time may come first ('at the start , is the green airliner's speed fast ?') or after the speed
+    ('is the green airliner's speed at the start fast ?')."""
+    comma = words.index(",") if "," in words[:6] else None
+    fronted = comma is not None and bool(START_WORDS & set(words[:comma])) and not OBJECT_WORDS & set(words[:comma])
+    if fronted:
+        out, read = speed_as_subject(words[comma + 1:])
+        return (words[:comma + 1] + out, read) if read else (words, ())
     if words[:1] not in (["is"], ["was"]) or words[1:2] != ["the"]:
         return words, ()
     k = 2
@@ -1613,9 +1628,11 @@ def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         thing = words[j:k]
         if len(thing) < 2:
             return words, ()
+    time = next((t for t in TIMES_AFTER_SPEED if words[k:k + len(t)] == t), [])
+    k += len(time)
     if not words[k:k + 1] or words[k] not in SPEED_PREDICATES:
         return words, ()
-    rest = words[k + 1:]
+    rest = time + words[k + 1:]
     when = ["at", "the", "start"] if start and not {"start", "beginning", "first", "initially"} & set(rest) else []
     end = len(rest) - (rest[-1:] == ["?"])
     out = ["is", *thing, SPEED_PREDICATES[words[k]], *rest[:end], *when, *rest[end:]]
