@@ -3909,3 +3909,22 @@ def test_paraphrases_a_translation_s_contact_a_speed_as_subject_and_a_question_b
                                 "is_moving_velocity[fast]"]
     assert um == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
     assert dash[-1] == "query_moving_direction" and dash[1:3] == ["filter_attributes[purple]", "filter_attributes[bus]"]
+
+
+def test_paraphrases_a_blank_without_choices_a_vehicle_to_find_and_would_you_happen_to_know():
+    parser = QuestionParser.load()
+    colour, kind, found, happen, winged = parser.parse_batch([
+        "Fill in: In the first frames, the fast-moving vehicle is coloured ____.",
+        "Complete: At the start of the video, the vehicle floating in the air is a ____.",
+        "Find the vehicle that the biplane hits. What colour is it?",
+        "Would you happen to know the shape of the object that is accelerating at the start?",
+        "Further on, is the cyan two-winged biplane going to crash into the yellow coach?"])
+    assert colour == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+    assert kind == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    # 'it' is the vehicle found, not the biplane its clause names
+    assert found == ["Events", "Objects", "filter_attributes[biplane]", "unique", "get_all_col_partners", "unique",
+                     "query_attributes[color]"]
+    assert happen == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert winged[0] == "futureEvents" and winged[2:4] == ["filter_attributes[cyan]", "filter_attributes[biplane]"]
+    # a blank of a vehicle the statement names itself asks nothing a family asks
+    assert_refused(parser, ["Fill in: The red car is coloured ____."])

@@ -479,6 +479,30 @@ def check_ins_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return (out, tuple(read)) if read else (words, ())
 
 
+# A vehicle to find, then its property asked of 'it' ('Find the vehicle that the biplane hits. What colour is it?'):
+# 'it' is the vehicle found, not the one its clause names
+FINDING = (("find",), ("identify",), ("locate",), ("spot",), ("consider",), ("take",), ("look", "at"), ("focus", "on"),
+           ("pick", "out"), ("note",))
+PRONOUNS_ASKED = {"it", "that", "this"}
+
+
+def found_then_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'find the vehicle that the biplane hits . what colour is it ?' -> 'what colour is the vehicle that the biplane
+    hits ?'. With the words read so, or the words as they are and ()."""
+    found = next((f for f in FINDING if tuple(words[:len(f)]) == f), None)
+    k = len(found) if found else 0
+    if not found or words[k:k + 1] != ["the"] or words[k + 1:k + 2] == [] or words[k + 1] not in GENERIC_NOUNS or \
+            words[k + 2:k + 3] not in (["that"], ["which"]) or "." not in words:
+        return words, ()
+    stop = words.index(".")
+    asked = words[stop + 1:]
+    be = next((j for j, w in enumerate(asked) if w in ("is", "was")), None)
+    if be is None or asked[:1] not in (["what"], ["which"]) or asked[be + 1:] not in ([p, "?"] for p in PRONOUNS_ASKED):
+        return words, ()
+    out = [*asked[:be + 1], *words[k:stop], "?"]
+    return out, ((" ".join(words), " ".join(out)),)
+
+
 def _turned_to(sentence: list[str], runs: list) -> list:
     """A sentence's mentions, those after its last 'but' first: the vehicle it turns to ('I was watching the red bus,
     but then this grey jet pops in.' -- 'How fast is it ...?' asks about the jet)."""

@@ -242,10 +242,12 @@ DESCRIBED_BEFORE = {
 PLAIN = {"bus": "regular_bus", "car": "sedan"}   # an ordinary bus or car
 _NAME_PAIRS = {tuple(v.split("_")) for v in SUBTYPES if "_" in v}
 SIZES = {"little", "small", "big", "large", "tiny", "huge", "giant", "massive", "enormous"}
-DESCRIBING = SIZES | {"skinny", "thin", "long", "low", "chunky", "sleek", "old", "fashioned", "double", "two", "-",
-                      "up"}
-DESCRIBED_NOUNS = {"aeroplane": "aeroplane", "jet": "aeroplane", "airliner": "aeroplane", "bus": "bus",
-                   "bike": "bicycle", "bicycle": "bicycle", "motorbike": "motorbike", "car": "car", "minivan": "car"}
+DESCRIBING = SIZES | {"skinny", "thin", "long", "low", "chunky", "sleek", "old", "fashioned", "double", "two", "twin",
+                      "-", "up"}
+# (a sub-type's own name too, described again: 'the cyan two-winged biplane')
+DESCRIBED_NOUNS = {"aeroplane": "aeroplane", "jet": "aeroplane", "airliner": "aeroplane", "biplane": "aeroplane",
+                   "bus": "bus", "bike": "bicycle", "bicycle": "bicycle", "motorbike": "motorbike", "car": "car",
+                   "minivan": "car"}
 
 
 def described_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -169,6 +169,11 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         read.append(("true or false", "is it true that"))
         out = ["is", "it", "true", "that", *body, "?"]
     given = []
+    # ('Fill in: ... is coloured ____.', 'Complete: ...')
+    if out[:3] in (["fill", "in", ":"], ["fill", "in", "-"]) or out[:2] == ["complete", ":"]:
+        said = 2 + (out[0] == "fill")
+        read.append((" ".join(out[:said]), "nothing, an instruction"))
+        out = ["fill", "in", "the", "blank", *out[said:]]
     if out[:4] == ["fill", "in", "the", "blank"]:
         # its choices may be said with the instruction ('Fill in the blank (would / would not): ...')
         close = out.index(")", 4) if out[4:5] == ["("] and ")" in out[4:] else None
@@ -193,7 +198,26 @@ def worksheet_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             said = [w for c in choices[:-1] for w in (*c, ",")][:-1] + ["or", *choices[-1]]
             read.append((" ".join(out[blank:close + 1]), " ".join(said)))
             out = out[:blank] + said + rest
+        elif not choices and (asked := _blank_asked(out[:blank])):
+            read.append((" ".join(out[:blank + 1]), " ".join(asked)))
+            out = asked + rest
     return out, tuple(read)
+
+
+BLANK_NOUNS = {("coloured",): ["what", "color"], ("colored",): ["what", "color"], ("a",): ["what", "kind", "of",
+                                                                                           "vehicle"],
+               ("an",): ["what", "kind", "of", "vehicle"]}
+
+
+def _blank_asked(before: list[str]) -> list[str] | None:
+    """A statement's blank without choices asked as what fills it: '..., the fast-moving vehicle is coloured' ->
+    '..., what color is the fast-moving vehicle'; '... is a' -> 'what kind of vehicle is ...'."""
+    noun = next((v for k, v in BLANK_NOUNS.items() if tuple(before[-len(k):]) == k), None)
+    be = len(before) - 2
+    if noun is None or be < 1 or before[be] not in ("is", "was"):
+        return None
+    start = max((k + 1 for k in range(be) if before[k] in (",", ":")), default=0)
+    return before[:start] + noun + [before[be]] + before[start:be]
 
 
 # A speech recogniser's words that sound like the ones said ('is the bus faster then the car', 'sitting their',

@@ -1217,6 +1217,8 @@ IDIOMS = phrase_table({
     **{(just, "at", the, start): ("right", "at", "the", start) for just in ("directly", "immediately", "exactly",
                                                                              "precisely") for the in ("the", "its")
        for start in ("start", "beginning", "outset")},
+    # 'would you (happen to) know the colour of ...' asks it as 'do you know' does
+    **{("would", "you", *happen, "know"): ("do", "you", "know") for happen in ((), ("happen", "to"))},
     # a moment asked of as a time ('Is there any moment when the yellow car crashes with ...?')
     **{(be, "there", a, moment, when): (be, "there", "any", "time", "when") for be in ("is", "was")
        for a in ("a", "any", "ever", "some") for moment in ("moment", "instant") for when in ("when", "where")},
