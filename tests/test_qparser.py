@@ -3928,3 +3928,22 @@ def test_paraphrases_a_blank_without_choices_a_vehicle_to_find_and_would_you_hap
     assert winged[0] == "futureEvents" and winged[2:4] == ["filter_attributes[cyan]", "filter_attributes[biplane]"]
     # a blank of a vehicle the statement names itself asks nothing a family asks
     assert_refused(parser, ["Fill in: The red car is coloured ____."])
+
+
+def test_paraphrases_coming_into_view_said_first_and_a_commentator_s_words():
+    parser = QuestionParser.load()
+    coming, entering, someone, tangle, outpacing, set_to = parser.parse_batch([
+        "Coming into view, is the purple bus at a standstill, slow, or fast?",
+        "On entering the scene, is the purple bus static, slow, or fast?",
+        "Out of the gate, someone's picking up speed! What colour is that one?",
+        "They tangle! At that moment, is the minivan going slower than the blue scooter?",
+        "And they're off! Is the purple one out-pacing the green aeroplane out of the gate?",
+        "Going forward, is the car set to run into the aeroplane?"])
+    # a clause of coming into view said first is the question's time, no digression (it was read at the start)
+    assert coming[-2:] == entering[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # 'someone' of a vehicle whose colour is then asked
+    assert someone == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert tangle[-1] == "slower_velocity" and "get_frame" in tangle
+    assert outpacing[-2:] == ["start", "faster_velocity"]
+    assert set_to[0] == "futureEvents"
+    assert_refused(parser, {"Is someone driving the red car at the start?": "person"})

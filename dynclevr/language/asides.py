@@ -1311,4 +1311,6 @@ SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS 
              "find", "list", "twice", "thrice", "again", "repeatedly"}
           | {w for t in LATER_TIMES for w in t} | START_ADJECTIVES | DURATIONS | NUMBERS
           | {"partway", "halfway", "midway", "middle", "stop", "stopped", "halted", "paused", "frozen", "froze",
-             "freezes", "cut", "cuts", "terminates", "terminated", "truncated"})
+             "freezes", "cut", "cuts", "terminates", "terminated", "truncated"}
+          # coming into view ('as it comes into view , is ...', 'on entering the scene , ...')
+          | COMES_IN_WORDS | {"coming", "entering", "entered", "appearing", "appeared", "emerging", "emerges"})

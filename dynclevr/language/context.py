@@ -503,6 +503,23 @@ def found_then_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return out, ((" ".join(words), " ".join(out)),)
 
 
+# 'someone' said of a vehicle whose kind or colour is then asked ('Someone's picking up speed off the line! What
+# colour is that one?'): a commentator's vehicle, not a person
+SOMEONE = {"someone", "somebody"}
+
+
+def someone_as_something(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'someone 's up in the air ! what kind of vehicle is it ?' -> 'something 's up in the air ! ...'. With the
+    words read so, or the words as they are and ()."""
+    end = max((k for k, w in enumerate(words[:-1]) if w in (".", "!", ";")), default=None)
+    said = [k for k, w in enumerate(words[:end or 0]) if w in SOMEONE]
+    asked = words[end + 1:] if end is not None else []
+    if not said or asked[:1] not in (["what"], ["which"]) or not {"it", "that", "one"} & set(asked) or not (
+            {"vehicle", "color", "colour", *SHAPE_ASKED} & set(asked)):
+        return words, ()
+    return ["something" if k in said else w for k, w in enumerate(words)], tuple((words[k], "something") for k in said)
+
+
 def _turned_to(sentence: list[str], runs: list) -> list:
     """A sentence's mentions, those after its last 'but' first: the vehicle it turns to ('I was watching the red bus,
     but then this grey jet pops in.' -- 'How fast is it ...?' asks about the jet)."""

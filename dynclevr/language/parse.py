@@ -68,7 +68,8 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
-                                       settings_as_imagined, told_otherwise_as_imagined, transcript_as_asked)
+                                       settings_as_imagined, someone_as_something, told_otherwise_as_imagined,
+                                       transcript_as_asked)
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
                                           corefer, delexicalise, described_as_named, description_as_said,
@@ -370,7 +371,8 @@ class QuestionParser:
         words = request_after_setting(words)
         words, checked = check_ins_stated(words)
         words, found = found_then_asked(words)
-        checked += found
+        words, someone = someone_as_something(words)
+        checked += found + someone
         words, fronted_request = fronted_whether_as_asked(words)
         checked += fronted_request
         words, context = context_as_question(words, self.known)

@@ -1217,6 +1217,12 @@ IDIOMS = phrase_table({
     **{(just, "at", the, start): ("right", "at", "the", start) for just in ("directly", "immediately", "exactly",
                                                                              "precisely") for the in ("the", "its")
        for start in ("start", "beginning", "outset")},
+    # a commentator's 'out-pacing' ('is the purple one out-pacing the green aeroplane?') and 'set to' of what will be
+    # ('is the car set to run into the aeroplane?')
+    **{said: ("faster", "than") for pacing in ("pacing", "running", "speeding", "stripping")
+       for said in (("out", "-", pacing), ("out", pacing), ("out" + pacing,))},
+    **{("set", "to", v): ("going", "to", v) for v in ("run", "hit", "collide", "crash", "smash", "bump", "strike",
+                                                     "slam", "plough", "plow", "meet", "clip", "tangle")},
     # 'would you (happen to) know the colour of ...' asks it as 'do you know' does
     **{("would", "you", *happen, "know"): ("do", "you", "know") for happen in ((), ("happen", "to"))},
     # a moment asked of as a time ('Is there any moment when the yellow car crashes with ...?')

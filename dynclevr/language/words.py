@@ -297,7 +297,7 @@ GENERIC_NOUNS = {"thing", "object", "vehicle", "one"}
 COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view"}
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
                 "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch",
-                "shunt")
+                "shunt", "tangl")
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
