@@ -3947,3 +3947,24 @@ def test_paraphrases_coming_into_view_said_first_and_a_commentator_s_words():
     assert outpacing[-2:] == ["start", "faster_velocity"]
     assert set_to[0] == "futureEvents"
     assert_refused(parser, {"Is someone driving the red car at the start?": "person"})
+
+
+def test_paraphrases_a_vehicle_looked_at_as_it_comes_into_view_and_a_physics_instructor_s_words():
+    parser = QuestionParser.load()
+    looked, condition, intersect, extrapolated, impact, opens = parser.parse_batch([
+        "Look at the green vehicle when it first shows up. Is it still, slow, or fast?",
+        "Under the counterfactual initial condition that the brown vehicle had zero initial velocity, would it have "
+        "collided with the blue articulated bus?",
+        "Under the counterfactual initial condition that the cyan fighter had a slow initial velocity, would its "
+        "trajectory still intersect the chopper's in a collision?",
+        "In the extrapolated motion after the final frame, do the trajectories of the purple bus and the blue jet "
+        "intersect in a collision?",
+        "At the instant of impact with the brown truck, is the blue aeroplane's velocity high?",
+        "If the motorbike had been zooming along when the clip opens, would it run into the brown jet?"])
+    assert looked[-2:] == ["come_in_frame", "query_moving_velocity"]   # (it was read at the start)
+    assert "Counterfactual_static" in condition and condition[1] == "filter_attributes[brown]"
+    assert "Counterfactual_moving_slow" in intersect
+    assert intersect[-4:] == ["filter_attributes[chopper]", "unique", "filter_collision", "exist"]
+    assert extrapolated[0] == "futureEvents"
+    assert impact[-1] == "is_moving_velocity[fast]" and "get_frame" in impact
+    assert "Counterfactual_moving_fast" in opens

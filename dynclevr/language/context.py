@@ -689,6 +689,11 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
         elif impact and len(own) == 1:
             moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
+        elif not then and not impact and not (timed & set(out) or asks_impact(out)) and len(own) == 1 and \
+                COMES_IN_WORDS & set(context[-1]) and not asks_impact(context[-1]):
+            # a vehicle looked at as it comes into view ('Look at the green vehicle when it first shows up. Is it
+            # still, slow, or fast?': it was read at the start)
+            moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
         else:
             moment, k, p = [], 0, ()
             started = next((s for s in reversed(context) if START_WORDS & set(s)), None)

@@ -98,8 +98,8 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         imperative_as_stated, inverted_as_asked, negative_question_as_asked,
                                         noun_phrase_as_question, opposed_dropped, request_after_setting,
                                         request_as_imperative, restated_dropped, speed_as_subject, struck_as_active,
-                                        tail_as_question, type_as_said, type_of_category_as_vehicle,
-                                        verbless_comparison_asked)
+                                        tail_as_question, trajectory_as_collision, type_as_said,
+                                        type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -424,6 +424,8 @@ class QuestionParser:
         words, aloft = height_as_aloft(words)
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
+        words, trajectory = trajectory_as_collision(words)
+        subject += trajectory
         words, first = first_frames_as_said(words)
         words, cleft = cleft_as_asked(words)
         words, more = comparative_as_said(words)

@@ -762,7 +762,21 @@ IDIOMS = phrase_table({
     **{(be, passed, "by"): (be, "slower", "than") for be in ("is", "was", "be", "being")
        for passed in ("outpaced", "outrun", "outran", "overtaken", "outstripped")},
     # acceleration said as a noun ('what kind of vehicle is undergoing acceleration at the start?')
-    **{(verb, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing", "under")},
+    **{(verb, *positive, "acceleration"): ("accelerating",) for verb in ("undergoing", "experiencing", "showing",
+                                                                         "under") for positive in ((), ("positive",))},
+    # a physics instructor's condition and initial state ('Under the counterfactual initial condition that the red road
+    # bike had a high initial velocity, would ...'), and the extrapolated future ('In the extrapolated motion after the
+    # final frame, ...')
+    **{("under", "the", *kind, condition, "that"): ("if",) for kind in (
+        ("counterfactual",), ("counterfactual", "initial"), ("hypothetical",), ("hypothetical", "initial"),
+        ("alternative",), ("alternative", "initial")) for condition in ("condition", "assumption", "scenario")},
+    **{("had", *a, level, "initial", v): ("had", "been", said, "at", "the", "start")
+       for v in ("velocity", "speed") for level, said, a in (
+           ("high", "fast", ("a",)), ("large", "fast", ("a",)), ("low", "slow", ("a",)), ("small", "slow", ("a",)),
+           ("slow", "slow", ("a",)), ("fast", "fast", ("a",)), ("zero", "static", ()), ("no", "static", ()))},
+    **{(*extrapolated, "after", "the", final, "frame"): ("after", "the", "video", "ends")
+       for extrapolated in ((), ("in", "the", "extrapolated", "motion"), ("in", "the", "extrapolated", "trajectory"))
+       for final in ("final", "last")},
     # on a screen is in view ('when it first shows up on screen')
     **{("on", *the, "screen"): ("in", "view") for the in ((), ("the",))},
     **{p: ("fast",) for p in (("full", "speed"), ("at", "full", "speed"), ("full", "throttle"), ("fast", "fast"))},
@@ -1217,6 +1231,9 @@ IDIOMS = phrase_table({
     **{(just, "at", the, start): ("right", "at", "the", start) for just in ("directly", "immediately", "exactly",
                                                                              "precisely") for the in ("the", "its")
        for start in ("start", "beginning", "outset")},
+    # a video that opens ('had it been moving at high speed when the clip opens')
+    **{(when, "the", film, opens): _START for when in ("when", "as") for film in ("video", "clip", "footage", "film")
+       for opens in ("opens", "opened")},
     # a commentator's 'out-pacing' ('is the purple one out-pacing the green aeroplane?') and 'set to' of what will be
     # ('is the car set to run into the aeroplane?')
     **{said: ("faster", "than") for pacing in ("pacing", "running", "speeding", "stripping")
@@ -1597,6 +1614,35 @@ SPEED_PREDICATES = {"low": "slow", "slow": "slow", "high": "fast", "fast": "fast
                     "0": "static", "nil": "static"}
 
 
+# A collision said as trajectories that intersect ('would its trajectory still intersect the chopper's in a collision?',
+# 'does the blue airliner's trajectory intersect another vehicle's?'); 'the trajectories of A and B intersect' is
+# read by the idioms
+INTERSECTING = {"intersect": "collide", "intersects": "collides", "intersected": "collided", "cross": "collide",
+                "crosses": "collides", "crossed": "collided", "meet": "collide", "meets": "collides"}
+
+
+def trajectory_as_collision(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'would its trajectory still intersect the chopper ' s in a collision ?' -> 'would it still collide with the
+    chopper ?'. With the words read so, or the words as they are and ()."""
+    k = next((k for k, w in enumerate(words) if w == "trajectory"), None)
+    if k is None or not k:
+        return words, ()
+    j = k + 1 + (words[k + 1:k + 2] == ["still"])
+    if words[j:j + 1] == [] or words[j] not in INTERSECTING:
+        return words, ()
+    # its owner: 'its', or a vehicle's "' s"
+    start = k - 1 if words[k - 1] == "its" else k - 2 if words[k - 2:k] == ["'", "s"] else None
+    if start is None:
+        return words, ()
+    end = next((m for m in range(j + 1, len(words)) if words[m] in ("?", ".") or words[m:m + 3] == [
+        "in", "a", "collision"]), len(words))
+    other = words[j + 1:end]
+    other = other[:-2] if other[-2:] == ["'", "s"] else other
+    said = (["it"] if words[start] == "its" else []) + words[k + 1:j] + [INTERSECTING[words[j]], "with", *other]
+    past = end + 3 * (words[end:end + 3] == ["in", "a", "collision"])
+    return words[:start] + said + words[past:], ((" ".join(words[start:past]), " ".join(said)),)
+
+
 TIMES_AFTER_SPEED = (["at", "the", "start"], ["at", "the", "beginning"], ["at", "the", "outset"], ["initially"],
                      ["at", "first"])
 
@@ -1607,8 +1653,10 @@ def speed_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     as the subject as a question about accelerating or a query of the speed. With the words read so, or the words as
     they are and (). A time may come first ('at the start , is the green airliner's speed fast ?') or after the speed
     ('is the green airliner's speed at the start fast ?')."""
-    comma = words.index(",") if "," in words[:6] else None
-    fronted = comma is not None and bool(START_WORDS & set(words[:comma])) and not OBJECT_WORDS & set(words[:comma])
+    comma = words.index(",") if "," in words[:12] else None
+    # (a clause of time: 'at the start , ...', 'at the moment of impact with the brown truck , ...')
+    fronted = comma is not None and words[0] in TIME_OPENERS | {"at", "on", "upon", "in"} and (
+        bool(START_WORDS & set(words[:comma])) or asks_impact(words[:comma]))
     if fronted:
         out, read = speed_as_subject(words[comma + 1:])
         return (words[:comma + 1] + out, read) if read else (words, ())
