@@ -2688,8 +2688,11 @@ def test_archaic_english_a_question_relayed_and_a_hypothesis_put_to_a_test():
         "Which came first: the crash of the bus, or the crash of the bicycle?": "came first",
         "Is the red car greater in size than the blue bus?": "size",
         "Near the video's end, my friend, does the brown chopper speed up, engine on?": "other than the start",
-        "Which colour level corresponds to the vehicle whose initial speed is recorded as slow?": "speeding up",
-        "Hark, the yellow biplane enters upon the stage! At what pace doth it arrive?": "into view"})
+        "Which colour level corresponds to the vehicle whose initial speed is recorded as slow?": "speeding up"})
+    # the stage a vehicle enters is the moment it comes into view (it was refused before the context read it)
+    hark = parser.parse_batch(["Hark, the yellow biplane enters upon the stage! At what pace doth it arrive?"])[0]
+    assert hark[-2:] == ["come_in_frame", "query_moving_velocity"] and hark[1:3] == [
+        "filter_attributes[yellow]", "filter_attributes[biplane]"]
 
 
 def test_a_thesaurus_a_logician_a_learners_topic_and_a_radio_caller():
@@ -3968,3 +3971,28 @@ def test_paraphrases_a_vehicle_looked_at_as_it_comes_into_view_and_a_physics_ins
     assert extrapolated[0] == "futureEvents"
     assert impact[-1] == "is_moving_velocity[fast]" and "get_frame" in impact
     assert "Counterfactual_moving_fast" in opens
+
+
+def test_paraphrases_a_romance_learner_s_colour_after_the_vehicle_a_negated_counterfactual_and_a_note_s_obj():
+    parser = QuestionParser.load()
+    truck, initially, goes, movement, wouldnt, obj, speed = parser.parse_batch([
+        "If the blue object had started rapid, would be there a collision between the blue object and the truck green?",
+        "Which velocity has the motorbike brown initially?",
+        "Just at the start, in which direction goes the cruiser cyan?",
+        "Supposing that the bus purple was not in movement at the start of the clip, would it have crashed against the "
+        "scooter green?",
+        "Suppose the red bus had been standing still at the beginning; wouldn't it have hit the green school bus?",
+        "If cyan obj fast @ start, collides w/ tandem bike?",
+        "Purple double bus @ start: speed?"])
+    # a colour after its vehicle, after 'and the', before a time or after a verb put first, is the vehicle's own
+    assert truck[-5:-3] == ["filter_attributes[green]", "filter_attributes[truck]"]
+    assert initially[1:3] == ["filter_attributes[brown]", "filter_attributes[motorbike]"]
+    assert goes[1:3] == ["filter_attributes[cyan]", "filter_attributes[cruiser]"] and goes[-1] == \
+        "query_moving_direction"
+    assert "Counterfactual_static" in movement and movement[1:3] == ["filter_attributes[purple]",
+                                                                    "filter_attributes[bus]"]
+    assert "Counterfactual_static" in wouldnt   # (a negated auxiliary after a condition's semicolon asks the same)
+    assert "Counterfactual_moving_fast" in obj and obj[1] == "filter_attributes[cyan]"
+    assert speed[-2:] == ["start", "query_moving_velocity"]
+    # a colour asked of a vehicle stays a colour asked ('is the car red?'), which no family asks
+    assert_refused(parser, ["Is the car red?"])

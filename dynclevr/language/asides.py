@@ -107,7 +107,8 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
     # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...')
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
-            not ADDRESSED & set(words[:k]) and not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"}):
+            not ADDRESSED & set(words[:k]) and not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"}
+                                                    and FILLERS & set(words[:k])):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
@@ -1158,9 +1159,10 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         timed = bool(out[close - 1] in ("at", "in", "on", "during") and (START_WORDS | END_WORDS | {"middle"}) &
                      set(out[k:close])) if close else False
         # (nor the question itself, its answers offered after it: ', which way is the gray minivan going : front ,',
-        # ', which way is the purple bus travelling - forward ,')
-        asked = "?" in out[k:close] or ":" in out[k:close] or out[k + 1] in ("which", "what", "how") and \
-            out[k + 2:k + 3] != [] and out[k + 2] in QUERY_NOUNS | {"way", "fast"} if close else False
+        # ', which way is the purple bus travelling - forward ,', ', in which direction is it going : front ,')
+        opens = k + 1 + (out[k + 1:k + 2] in (["in"], ["at"], ["to"]))
+        asked = "?" in out[k:close] or ":" in out[k:close] or out[opens] in ("which", "what", "how") and \
+            out[opens + 1:opens + 2] != [] and out[opens + 1] in QUERY_NOUNS | {"way", "fast"} if close else False
         if close and not asked and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
                 and not own_impact and not timed:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))

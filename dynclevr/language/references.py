@@ -326,14 +326,17 @@ AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", 
                 "going", "hits", "hit", "collides", "collided", "crashes", "crashed", "it", "appears", "appeared",
                 "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first", "are", "were",
                 "more", "less", "faster", "slower", "when", "collide", "floating", "hovering", "speeding", "accelerating",
-                "flying", "standing", "travelling", "traveling", "driving"}
+                "flying", "standing", "travelling", "traveling", "driving", "drive", "drives", "drove", ":",
+                "participates", "participated", "participate", "takes", "took", "enter", "crash", "crashes"}
 # ... or a time, where no copula before it asks the colour ('when it hits the bus purple in the moment that ...'; not
 # 'is the bus red in the video?'), or the question's end after a comparison's or a collision's object ('faster than
 # the car red?'; not 'is the car that gets hit by the bus red?')
-AFTER_COLOUR_UNASKED = {"in", "at", "during"}
+AFTER_COLOUR_UNASKED = {"in", "at", "during", "initially", "afterwards", "afterward", "later", "eventually", "then"}
 COPULAS_BEFORE = {"is", "was", "are", "were", "be", "been", "'s", "s"}
 OBJECT_BEFORE = {"than", "with", "into", "hit", "hits", "against", "to", "of", "bump", "bumps", "bumped", "crash",
-                 "strike", "strikes", "struck"}
+                 "strike", "strikes", "struck", "and", "or", "between", "involving",
+                 # (a Romance order's verb before its subject: 'in which direction goes the cruiser cyan?')
+                 "goes", "go", "moves", "move", "travels", "travel", "drives", "drive"}
 
 
 def _noun_at(words: list[str], i: int) -> int:

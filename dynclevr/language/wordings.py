@@ -353,7 +353,7 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
     not it ?' and '... , right ?' -> 'the red car is fast ?' (a tag after a statement with no negation of its own).
     With the words read so, or the words as they are and ()."""
     for k in range(len(words) - 2):
-        if (k == 0 or words[k - 1] == ",") and words[k] in YES_NO_OPENERS and words[k + 1] == "not" and \
+        if (k == 0 or words[k - 1] in (",", ";", ":")) and words[k] in YES_NO_OPENERS and words[k + 1] == "not" and \
                 (words[k + 2] in SUBJECT_STARTS or words[k + 2] in OBJECT_WORDS) and words[k + 3:] not in ([], ["?"]):
             return words[:k + 1] + words[k + 2:], ((f"{words[k]} not", words[k]),)
     # '..., right? Or no?': the tag asked again as a choice
@@ -1231,6 +1231,13 @@ IDIOMS = phrase_table({
     **{(just, "at", the, start): ("right", "at", "the", start) for just in ("directly", "immediately", "exactly",
                                                                              "precisely") for the in ("the", "its")
        for start in ("start", "beginning", "outset")},
+    # a Romance-language learner's 'in movement' and 'each time faster' ('was the bus not in movement at the start',
+    # 'had been going each time more rapid')
+    ("in", "movement"): ("moving",),
+    **{("each", "time", *more): ("faster", "and", "faster") for more in (
+        ("faster",), ("quicker",), ("more", "rapid"), ("more", "rapidly"), ("more", "fast"), ("more", "quickly"))},
+    # a note's property after a colon ('Purple double bus @ start: speed?')
+    **{(":", speed, "?"): (":", "what", "speed", "?") for speed in ("speed", "velocity")},
     # a video that opens ('had it been moving at high speed when the clip opens')
     **{(when, "the", film, opens): _START for when in ("when", "as") for film in ("video", "clip", "footage", "film")
        for opens in ("opens", "opened")},
@@ -1407,7 +1414,7 @@ def comparative_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         # moment the yellow bus crashes into the cyan bus, is the yellow one moving more slowly?')
         said = COMPARATIVES.get(tuple(words[k:k + 2])) or (
             COMPARED_ADVERBS.get(tuple(words[k:k + 2])) if words[k + 2:k + 3] == ["than"] or words[k + 2:k + 3] in (
-                [], ["?"], ["."], ["when"], ["as"], ["while"]) and asks_impact(words) else None)
+                [], ["?"], ["."]) and asks_impact(words) else None)
         pair = next((p for p in PAIR_SAID if words[k:k + len(p)] == p), None) if out and out[-1] in COMPARISONS \
             else None
         if said:
