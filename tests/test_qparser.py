@@ -3996,3 +3996,24 @@ def test_paraphrases_a_romance_learner_s_colour_after_the_vehicle_a_negated_coun
     assert speed[-2:] == ["start", "query_moving_velocity"]
     # a colour asked of a vehicle stays a colour asked ('is the car red?'), which no family asks
     assert_refused(parser, ["Is the car red?"])
+
+
+def test_paraphrases_indian_english_a_chinese_learner_s_if_let_and_the_property_asked_before_a_colon():
+    parser = QuestionParser.load()
+    dashing, whether, kindly, starting, let, colour = parser.parse_batch([
+        "What is the speed of the red bus at the time of dashing with the green jet?",
+        "At the time of dashing with the wagon, whether the blue bus is moving faster than the wagon?",
+        "Kindly tell the colour of the object which is dashing with the motorbike.",
+        "Is the red car moving fast in the starting of the video?",
+        "If let yellow airliner increase speed from start, it will hit yellow jet or not?",
+        "Which colour: the thing that is accelerating at the start?"])
+    assert dashing[-1] == "query_moving_velocity" and "get_frame" in dashing
+    assert whether[-1] == "faster_velocity" and whether[1:3] == ["filter_attributes[blue]", "filter_attributes[bus]"]
+    assert kindly == ["Events", "Objects", "filter_attributes[motorbike]", "unique", "get_all_col_partners", "unique",
+                      "query_attributes[color]"]
+    assert starting[-2:] == ["start", "is_moving_velocity[fast]"]
+    assert "Counterfactual_accelerating" in let
+    assert colour == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    # 'its' compared with the vehicle said after 'than' was read as that vehicle: refused
+    assert_refused(parser, {"When yellow bus hit purple articulated bus, its speed lower than purple articulated bus "
+                            "or not?": "compares a vehicle with"})

@@ -1107,7 +1107,10 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             break   # one that says what is asked stays, and one that says the video stopped ('video stops here .')
         # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
         # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')
+        # (and the property asked before a colon: 'Which colour: the thing that is accelerating at the start?')
         if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS) or \
+                words[end] == ":" and words[:1] in (["which"], ["what"]) and end <= 4 and \
+                set(words[1:end]) & {"colour", "color", "type", "kind", "model", "vehicle"} or \
                 words[end] == "." and "then" in words[end + 1:] and \
                 set(words[:end]) & (HEADING_KEPT | START_WORDS) - {"true", "false", "yes", "no"}:
             break

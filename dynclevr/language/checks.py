@@ -31,7 +31,7 @@ from __future__ import annotations
 from difflib import SequenceMatcher
 
 from dynclevr.language.context import _run_on_question, _sentence_spans
-from dynclevr.language.references import OBJECT_WORDS, coordinated, placeholders
+from dynclevr.language.references import OBJECT_WORDS, coordinated, mentions, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
@@ -372,6 +372,21 @@ def pointed_back(words: list[str], program: list[str]) -> str:
                                                                        else [])), None)
     return (f"the question points back at what it said first ('{said}'): ask it in one clause, without 'that'"
             ) if program and said else ""
+
+
+def than_turned(words: list[str], program: list[str]) -> str:
+    """Why a comparison's reading is not the question's ('' when it is): the vehicle said after 'than' is read as the
+    one compared ('When yellow bus hit purple articulated bus, its speed lower than purple articulated bus or not?'
+    was read as whether the purple bus is slower: 'its' taken for the vehicle it is compared with). `words`: as
+    said, before any rule read a pronoun as a vehicle."""
+    if not program or program[-1] not in SPEED_COMPARISONS or "than" not in words:
+        return ""
+    k = words.index("than")
+    after = next((ref for i, _, ref in mentions(words) if k < i <= k + 2), None)
+    first = tuple(t[len("filter_attributes["):-1] for t in program[1:program.index("unique")]
+                  if t.startswith("filter_attributes[")) if "unique" in program else None
+    return ("the question compares a vehicle with the one its reading compares: ask whether X is faster (or slower) "
+            "than Y, naming X") if after is not None and after == first else ""
 
 
 def start_speed_at_collision(words: list[str], program: list[str]) -> str:

@@ -63,8 +63,8 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
                                       motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
                                       pointed_back, property_unread, reversed_reading, size_unread, speed_unsaid,
-                                      start_speed_at_collision, still_continuing, time_symbol_said, time_unasked,
-                                      uncompared, visibility_unread, what_happens)
+                                      start_speed_at_collision, still_continuing, than_turned, time_symbol_said,
+                                      time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
@@ -288,7 +288,8 @@ class QuestionParser:
             or acceleration_unread(said, c.program) or acceleration_unsaid(read, c.program)
             or motion_foretold(read, c.program)
             or end_unread(said + read, c.program) or size_unread(said, c.program)
-            or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)) else c
+            or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)
+            or than_turned(tokenize(text), c.program)) else c
             for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:

@@ -1236,6 +1236,24 @@ IDIOMS = phrase_table({
     ("in", "movement"): ("moving",),
     **{("each", "time", *more): ("faster", "and", "faster") for more in (
         ("faster",), ("quicker",), ("more", "rapid"), ("more", "rapidly"), ("more", "fast"), ("more", "quickly"))},
+    # Indian English: 'dashing with' a vehicle collides with it ('at the time of dashing with the green jet'), 'the
+    # starting' is the start ('in the starting of the video', 'from the starting itself'), 'kindly tell' asks
+    **{(dash, w): (collide, w) for dash, collide in (("dash", "collide"), ("dashes", "collides"),
+                                                     ("dashed", "collided"), ("dashing", "colliding"))
+       for w in ("with", "against", "into")},
+    **{(dash, "each", "other"): (collide, "with", "each", "other") for dash, collide in (
+        ("dash", "collide"), ("dashing", "colliding"), ("dashed", "collided"))},
+    ("at", "the", "time", "of", "dashing"): ("at", "the", "time", "of", "collision"),
+    ("in", "the", "starting"): ("at", "the", "start"), ("from", "the", "starting"): ("from", "the", "start"),
+    ("the", "starting", "of"): ("the", "start", "of"), ("start", "itself"): ("start",),
+    **{("kindly", "tell", w): ("tell", "me", w) for w in ("the", "what", "which", "whether", "if", "how")},
+    # a Chinese learner's 'if let' ('If let yellow vehicle start fast, it will collide with blue object?')
+    ("if", "let"): ("if",),
+    # the property asked first, before a colon ('Which colour: the thing that is accelerating at the start?')
+    **{(which, colour, ":"): ("what", "color", "is") for which in ("which", "what") for colour in ("colour", "color")},
+    **{(which, *of, kind, ":"): ("what", "kind", "of", "vehicle", "is") for which in ("which", "what")
+       for of in ((), ("kind", "of")) for kind in ("type", "kind", "model", "vehicle")
+       if (of, kind) != (("kind", "of"), "kind")},
     # a note's property after a colon ('Purple double bus @ start: speed?')
     **{(":", speed, "?"): (":", "what", "speed", "?") for speed in ("speed", "velocity")},
     # a video that opens ('had it been moving at high speed when the clip opens')

@@ -32,7 +32,7 @@ COMMA_INTERJECTIONS = {"right", "now", "like"}
 # halfway na, so ...', 'it hits the bus lah, or not?')
 PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
-           "honestly"}
+           "honestly", "quite"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
                          "thanks", "cheers", "tho",
