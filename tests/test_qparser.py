@@ -4017,3 +4017,12 @@ def test_paraphrases_indian_english_a_chinese_learner_s_if_let_and_the_property_
     # 'its' compared with the vehicle said after 'than' was read as that vehicle: refused
     assert_refused(parser, {"When yellow bus hit purple articulated bus, its speed lower than purple articulated bus "
                             "or not?": "compares a vehicle with"})
+
+
+def test_paraphrases_the_shown_frames_are_the_video_and_a_nigerian_jam():
+    parser = QuestionParser.load()
+    shown, jam = parser.parse_batch(["Has the brown object been in a crash in the shown frames?",
+                                     "Later on, will the red vehicle jam another vehicle?"])
+    assert shown == ["Events", "Objects", "filter_attributes[brown]", "unique", "filter_collision", "exist"]
+    assert jam == ["futureEvents", "Objects", "filter_attributes[red]", "unique", "filter_collision", "exist"]
+    assert_refused(parser, {"Is there a traffic jam at the start?": "arranged"})

@@ -1247,6 +1247,13 @@ IDIOMS = phrase_table({
     ("in", "the", "starting"): ("at", "the", "start"), ("from", "the", "starting"): ("from", "the", "start"),
     ("the", "starting", "of"): ("the", "start", "of"), ("start", "itself"): ("start",),
     **{("kindly", "tell", w): ("tell", "me", w) for w in ("the", "what", "which", "whether", "if", "how")},
+    # Nigerian English: to 'jam' a vehicle is to hit it ('will the red vehicle jam another vehicle?')
+    **{(jam, w): (hit, w) for jam, hit in (("jam", "hit"), ("jams", "hits"), ("jammed", "hit"), ("jamming", "hitting"))
+       for w in ("the", "another", "each", "anything", "something", "any", "a", "an")},
+    # the frames shown are the video ('Has the brown object been in a crash in the shown frames?' was read after it)
+    **{(p, "the", *frames): ("in", "the", "video") for p in ("in", "within", "during", "throughout", "across")
+       for shown in ("shown", "observed", "given", "visible", "displayed")
+       for frames in (("frames", shown), (shown, "frames"))},
     # a Chinese learner's 'if let' ('If let yellow vehicle start fast, it will collide with blue object?')
     ("if", "let"): ("if",),
     # the property asked first, before a colon ('Which colour: the thing that is accelerating at the start?')
