@@ -4026,3 +4026,33 @@ def test_paraphrases_the_shown_frames_are_the_video_and_a_nigerian_jam():
     assert shown == ["Events", "Objects", "filter_attributes[brown]", "unique", "filter_collision", "exist"]
     assert jam == ["futureEvents", "Objects", "filter_attributes[red]", "unique", "filter_collision", "exist"]
     assert_refused(parser, {"Is there a traffic jam at the start?": "arranged"})
+
+
+def test_paraphrases_a_translation_s_let_and_classifier_and_a_speed_class_said_the_other_way():
+    parser = QuestionParser.load()
+    let, classifier, colour, topic = parser.parse_batch([
+        "If the bicycle gray let be fast from the start, then it crash into the minivan blue or not?",
+        "If the vehicle bus green let move quickly from the start of clip, then it collide with the car yellow or not?",
+        "What type is the vehicle which strikes the vehicle of brown colour?",
+        "The aeroplane purple, does it fly at the time of beginning?"])
+    assert "Counterfactual_moving_fast" in let and let[1:3] == ["filter_attributes[gray]", "filter_attributes[bicycle]"]
+    assert "Counterfactual_moving_fast" in classifier and classifier[1:3] == ["filter_attributes[green]",
+                                                                            "filter_attributes[bus]"]
+    # 'of brown colour' names the vehicle (it was read as its colour asked)
+    assert colour == ["Events", "Objects", "filter_attributes[brown]", "unique", "get_all_col_partners", "unique",
+                      "query_attributes[shape]"]
+    assert topic[1:3] == ["filter_attributes[purple]", "filter_attributes[aeroplane]"]
+    assert_refused(parser, {"If articulated bus when video begins at low speed had been moving, red double bus still "
+                            "would it hit?": "the other",
+                            # (read as the colour asked before 'of brown colour' named the vehicle)
+                            "The vehicle which strikes the vehicle of brown colour, it is which type?": "read"})
+    # a speed class asked as yes or no, in a translation's order, was read as which speed
+    assert_refused(parser, {"Blue articulated bus when into tandem bike bumps, slow it was moving?": "asks whether"})
+
+
+def test_a_vehicle_said_first_then_asked_with_the_question_word_in_place():
+    parser = QuestionParser.load()
+    way, = parser.parse_batch(["The biplane of blue colour, it is moving which way at the time it collides with the "
+                               "truck?"])
+    # (turned into 'is the blue biplane moving which way ...', it was refused as yes or no)
+    assert way[-1] == "query_moving_direction" and way[1:3] == ["filter_attributes[blue]", "filter_attributes[biplane]"]

@@ -693,7 +693,9 @@ def dislocated_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     if words[end:end + 2] != [","] + pronoun or not words[end + 2:end + 3]:
         return words, ()
     verb, rest = words[end + 2], words[end + 3:]
-    said = [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
+    # (a question word left in place keeps the statement's order: 'the blue biplane , it is moving which way ...')
+    said = [*words[:end], verb, *rest] if {"which", "what", "how"} & set(rest[:4]) else \
+        [verb, *words[:end], *rest] if verb in DISLOCATED_ASKS else \
         ["do" if len(named) == 2 else "does", *words[:end], verb, *rest]
     return said, ((" ".join(words[end:end + 3]), " ".join(said[:1])),)
 

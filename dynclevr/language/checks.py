@@ -389,6 +389,39 @@ def than_turned(words: list[str], program: list[str]) -> str:
             "than Y, naming X") if after is not None and after == first else ""
 
 
+SLOW_SAID = {"slow", "slowly", "low", "slower", "sluggish", "sluggishly", "crawl", "crawling", "leisurely", "gently"}
+FAST_SAID = {"fast", "quick", "quickly", "high", "rapid", "rapidly", "speedy", "speedily", "faster", "swift",
+             "swiftly", "zooming", "racing", "full", "top", "flat"}
+
+
+def speed_class_turned(words: list[str], program: list[str]) -> str:
+    """Why a reading of a speed class is not the question's ('' when it is): the question says only the other class
+    ('If articulated bus when video begins at low speed had been moving, ...' was read as had it been fast)."""
+    read = next((c for op in program for c in ("fast", "slow") if op.startswith(("Counterfactual_moving_", "is_moving",
+                                                                              "filter_moving")) and op.endswith(
+        (f"_{c}", f"[{c}]"))), None)
+    said = {"fast": bool(FAST_SAID.intersection(words)), "slow": bool(SLOW_SAID.intersection(words))}
+    if read is None or said[read] or not said["slow" if read == "fast" else "fast"]:
+        return ""
+    return (f"the question says a speed, but its nearest reading asks the other ('{read}'): ask whether the vehicle is "
+            "slow or fast in the grammar's words")
+
+
+def class_asked_as_which(words: list[str], program: list[str]) -> str:
+    """Why a reading of which speed is not the question's ('' when it is): the question asks whether the vehicle
+    moves at one speed, saying no word that asks which ('Blue articulated bus when into tandem bike bumps, slow it
+    was moving?' was read as how fast)."""
+    if not program or program[-1] != "query_moving_velocity" or "or" in words or {
+            "how", "what", "which", "speed", "velocity", "pace", "tell", "describe", "classify"} & set(words):
+        return ""
+    classes = {"slow": "slow", "slowly": "slow", "fast": "fast", "quickly": "fast", "static": "static",
+               "stationary": "static", "still": "static", "parked": "static"}
+    said = [w for w in words if w in classes]
+    # (two classes said are choices offered, their 'or' perhaps read away: 'sitting still, pottering along slow')
+    return (f"the question asks whether the vehicle is '{said[0]}', but its nearest reading asks which speed: ask "
+            "whether it is static, slow or fast") if len({classes[w] for w in said}) == 1 else ""
+
+
 def start_speed_at_collision(words: list[str], program: list[str]) -> str:
     """Why a reading of a speed at a collision is not the question's ('' when it is): the speed is said of the start
     ('Green pickup starting slow: hits red motorbike?', a premise or a condition, was read as slow at the

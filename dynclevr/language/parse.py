@@ -56,13 +56,15 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, correc
                                       interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
                                       radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
-                                      attribute_unsaid, both_imagined, clock_unasked, collision_at_start,
-                                      collision_unread, compared_unsaid, comparison_imagined, comparison_unread,
+                                      attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
+                                      collision_at_start, collision_unread, compared_unsaid, comparison_imagined,
+                                      comparison_unread,
                                       comparison_unsaid, condition_subject_first, condition_unsaid, cut_said,
                                       direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
                                       form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
                                       motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
-                                      pointed_back, property_unread, reversed_reading, size_unread, speed_unsaid,
+                                      pointed_back, property_unread, reversed_reading, size_unread,
+                                      speed_class_turned, speed_unsaid,
                                       start_speed_at_collision, still_continuing, than_turned, time_symbol_said,
                                       time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
@@ -95,11 +97,11 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         condition_named_as_said, contact_made_as_active, contest_as_compared,
                                         drive_on_as_hit, floating_plane_as_vehicle, fronted_value_as_asked,
                                         fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
-                                        imperative_as_stated, inverted_as_asked, negative_question_as_asked,
-                                        noun_phrase_as_question, opposed_dropped, request_after_setting,
-                                        request_as_imperative, restated_dropped, speed_as_subject, struck_as_active,
-                                        tail_as_question, trajectory_as_collision, type_as_said,
-                                        type_of_category_as_vehicle, verbless_comparison_asked)
+                                        imperative_as_stated, inverted_as_asked, let_dropped,
+                                        negative_question_as_asked, noun_phrase_as_question, opposed_dropped,
+                                        request_after_setting, request_as_imperative, restated_dropped,
+                                        speed_as_subject, struck_as_active, tail_as_question, trajectory_as_collision,
+                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -289,7 +291,8 @@ class QuestionParser:
             or motion_foretold(read, c.program)
             or end_unread(said + read, c.program) or size_unread(said, c.program)
             or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)
-            or than_turned(tokenize(text), c.program)) else c
+            or than_turned(tokenize(text), c.program) or speed_class_turned(read, c.program)
+            or class_asked_as_which(read, c.program)) else c
             for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 
     def _words(self, text) -> tuple[list[str], str, tuple[tuple[str, str], ...], list[str]]:
@@ -426,7 +429,8 @@ class QuestionParser:
         words, heading = heading_as_direction(words)
         words, subject = speed_as_subject(words)
         words, trajectory = trajectory_as_collision(words)
-        subject += trajectory
+        words, let = let_dropped(words)
+        subject += trajectory + let
         words, first = first_frames_as_said(words)
         words, cleft = cleft_as_asked(words)
         words, more = comparative_as_said(words)

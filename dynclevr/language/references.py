@@ -327,7 +327,11 @@ AFTER_COLOUR = {",", "is", "was", "does", "did", "has", "had", "will", "would", 
                 "starts", "started", "begins", "began", "comes", "came", "enters", "entered", "first", "are", "were",
                 "more", "less", "faster", "slower", "when", "collide", "floating", "hovering", "speeding", "accelerating",
                 "flying", "standing", "travelling", "traveling", "driving", "drive", "drives", "drove", ":",
-                "participates", "participated", "participate", "takes", "took", "enter", "crash", "crashes"}
+                "participates", "participated", "participate", "takes", "took", "enter", "crash", "crashes",
+                # (a translation's bare verb or particle: 'If the bicycle gray let be fast ...', 'the minivan purple
+                # strike', 'the airliner green ever have collide')
+                "let", "be", "strike", "smash", "bang", "travel", "ever", "parked", "fly", "flies", "flew", "heading",
+                "increasing", "increase", "gaining", "picking", "move", "hitting", "colliding", "crashing", "not"}
 # ... or a time, where no copula before it asks the colour ('when it hits the bus purple in the moment that ...'; not
 # 'is the bus red in the video?'), or the question's end after a comparison's or a collision's object ('faster than
 # the car red?'; not 'is the car that gets hit by the bus red?')
@@ -379,6 +383,11 @@ def _category_before_type_dropped(words: list[str]) -> tuple[list[str], tuple[tu
     sedan."""
     out, read, i = [], [], 0
     while i < len(words):
+        # a classifier before the vehicle's name ('the vehicle bus regular gray', a Vietnamese or Thai translation's)
+        if words[i] in ("vehicle", "object") and out[-1:] == ["the"] and _noun_at(words, i + 1):
+            read.append((words[i], "nothing, a classifier"))
+            i += 1
+            continue
         cat, sub = _value_at(words, i), None
         if cat and cat[0] in CATEGORY_SUBTYPES:
             sub = _value_at(words, i + cat[1])

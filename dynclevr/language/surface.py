@@ -247,7 +247,8 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
     out, read, k = list(words), [], 0
     while k < len(out):
         j = k
-        while j < len(out) and out[j] in NAMING and out[j] not in COLOR_NAMES:
+        while j < len(out) and (out[j] in NAMING or out[j] in ("vehicle", "object", "thing")) and \
+                out[j] not in COLOR_NAMES:
             j += 1
         clause = j + (out[j:j + 1] == [","])
         if j > k and (k == 0 or out[k - 1] not in COLOR_NAMES) and out[clause:clause + 1] and \
@@ -257,6 +258,11 @@ def colour_clause_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str
             read.append((" ".join(out[k:end]), " ".join([out[clause + 2], *out[k:j]])))
             out[k:end] = [out[clause + 2], *out[k:j]]
             k += j - k + 1
+        elif j > k and out[j:j + 1] == ["of"] and out[j + 1:j + 2] and out[j + 1] in COLOR_NAMES and \
+                out[j + 2:j + 3] in (["colour"], ["color"]):   # 'the vehicle of brown colour' (a translation's)
+            read.append((" ".join(out[k:j + 3]), " ".join([out[j + 1], *out[k:j]])))
+            out[k:j + 3] = [out[j + 1], *out[k:j]]
+            k = j + 1
         else:
             k = max(j, k + 1)
     return (out, tuple(read)) if read else (words, ())

@@ -1653,6 +1653,15 @@ INTERSECTING = {"intersect": "collide", "intersects": "collides", "intersected":
                 "crosses": "collides", "crossed": "collided", "meet": "collide", "meets": "collides"}
 
 
+def let_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'if the gray bicycle let be fast from the start , then it crash into ...' -> 'if the gray bicycle be fast ...':
+    a translation's 'let' after a condition's vehicle (Vietnamese, Thai, Indonesian 'cho', 'hai', 'biar'). With the
+    words read so, or the words as they are and ()."""
+    k = next((k for k in range(1, len(words)) if words[k] == "let" and words[k - 1] in NAMING
+              and "if" in words[:k]), None)
+    return (words[:k] + words[k + 1:], (("let", "nothing, a translation's particle"),)) if k else (words, ())
+
+
 def trajectory_as_collision(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'would its trajectory still intersect the chopper ' s in a collision ?' -> 'would it still collide with the
     chopper ?'. With the words read so, or the words as they are and ()."""
