@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from dynclevr.language.references import OBJECT_WORDS
 from dynclevr.language.tokenize import tokenize
-from dynclevr.questions.generate import templates
 from dynclevr.language.words import NAMING, QUESTION_OPENERS, START_ADJECTIVES, STOPPED_SAID, asks_impact, _at
+from dynclevr.questions.generate import templates
 
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
 # the red car , when it hits the bus , fast ?'): the grammar says it last
