@@ -4056,3 +4056,84 @@ def test_a_vehicle_said_first_then_asked_with_the_question_word_in_place():
                                "truck?"])
     # (turned into 'is the blue biplane moving which way ...', it was refused as yes or no)
     assert way[-1] == "query_moving_direction" and way[1:3] == ["filter_attributes[blue]", "filter_attributes[biplane]"]
+
+
+def test_paraphrases_a_partner_found_then_asked_of_its_property_and_times_said_of_the_frames():
+    parser = QuestionParser.load()
+    its, fronted, after, this, later, fall, smaller, doubt, cls = parser.parse_batch([
+        "Something runs into the red jet over the course of the clip; what is its colour?",
+        "At any point in the video, something crashed into the car; what model is it?",
+        "After the visible frames, is the brown dirtbike going to collide with the yellow vehicle?",
+        "after this will the cyan road bike hit anything",
+        "Will green articulated bus bang into something later or no?",
+        "At t = 0, into which speed category does the cyan mountain bike's initial velocity fall?",
+        "At t = 0, is the magnitude of the purple school bus's velocity smaller than that of the gray aeroplane?",
+        "I couldn't quite tell on my first watch: at the beginning, does the yellow plane go faster than the sedan?",
+        "When the brown vehicle collides with the cyan wagon, what is the class of speed of the brown vehicle?"])
+    # 'its' is the something found, not the red jet (it was read as the jet's own colour, and refused)
+    assert its == ["Events", "Objects", "filter_attributes[red]", "filter_attributes[jet]", "unique",
+                   "get_all_col_partners", "unique", "query_attributes[color]"]
+    assert fronted[-1] == "query_attributes[shape]" and "get_all_col_partners" in fronted
+    assert after[0] == this[0] == later[0] == "futureEvents"
+    # a speed that falls into a class is no slowing down, and a speed smaller than another's no size
+    assert fall == ["Objects", "filter_attributes[cyan]", "filter_attributes[mountain_bike]", "unique", "start",
+                    "query_moving_velocity"]
+    assert smaller[-2:] == ["start", "slower_velocity"] and smaller[1:3] == ["filter_attributes[purple]",
+                                                                            "filter_attributes[school_bus]"]
+    assert doubt[-2:] == ["start", "faster_velocity"]
+    assert cls[-2:] == ["get_frame", "query_moving_velocity"]
+    # ... while a vehicle's own size, and a speed that falls, stay refused
+    assert_refused(parser, {"Is the red car smaller than the bus?": "size",
+                            "Does the red car's speed fall at the start?": "slows down"})
+
+
+def test_two_colours_sharing_a_plural_noun_are_two_vehicles_and_a_collision_said_as_an_absolute_clause():
+    parser = QuestionParser.load()
+    shared, absolute = parser.parse_batch([
+        "Do the green and blue articulated buses collide?",
+        "Collision with the green car happening, the gray bicycle into which direction is it then heading?"])
+    # (read as 'the green' one, of any kind, and the blue articulated bus)
+    assert shared == ["Events", "Objects", "filter_attributes[green]", "filter_attributes[articulated_bus]", "unique",
+                      "filter_collision", "Objects", "filter_attributes[blue]", "filter_attributes[articulated_bus]",
+                      "unique", "filter_collision", "exist"]
+    # (read of the green car)
+    assert absolute[1:3] == ["filter_attributes[gray]", "filter_attributes[bicycle]"]
+    assert absolute[-1] == "query_moving_direction"
+
+
+def test_a_speech_recogniser_s_initialism_and_list_without_commas_and_a_speed_denied():
+    parser = QuestionParser.load()
+    spelt, listed, off, run_on = parser.parse_batch([
+        "was the s u v going slow when it hits the bicycle",
+        "when the red scooter comes into view is it not moving slow or fast",
+        "What type of vehicle is the one whose engine is running at the off?",
+        "can you tell me when the cyan jet and the articulated bus collide is the cyan jet going slower than the "
+        "articulated bus"])
+    assert spelt[1] == "filter_attributes[suv]" and spelt[-1] == "is_moving_velocity[slow]"
+    assert listed[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert off == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert run_on[-1] == "slower_velocity" and run_on[1:3] == ["filter_attributes[cyan]", "filter_attributes[jet]"]
+    # motion denied is rest, a speed denied no question's (it was read as the speed asked)
+    assert_refused(parser, {"Is the red car not moving fast at the start?": "negated",
+                            "Was the bus not moving slowly when it hit the car?": "negated"})
+    rest, = parser.parse_batch(["Is the red car not moving at the start?"])
+    assert rest[-1] == "is_static"
+
+
+def test_words_that_turn_the_predicate_round_are_refused_not_read_as_it():
+    parser = QuestionParser.load()
+    # each was read as the predicate after the reversing words (static, fast, faster, the collision)
+    assert_refused(parser, {"Is the red car anything but static at the start?": "anything but",
+                            "Is it false that the red car is fast at the start?": "false that",
+                            "Is the red car no faster than the blue bus at the start?": "no faster",
+                            "Would it be wrong to say that the red car is fast at the start?": "wrong to say",
+                            "Do you doubt that the red car is accelerating at the start?": "doubt that",
+                            "Is the red car's engine not running at the start?": "negated",
+                            "Does the red car go slower than the blue bus, or faster, at the start?": "slower or faster",
+                            # ... and a collision prevented, escaped or not there (each read as the collision)
+                            "Would the crash between the red car and the blue bus have been prevented if the car had "
+                            "been static?": "prevented",
+                            "Does the red car survive the video without a collision?": "without a collision",
+                            "Is there no collision between the red car and the blue bus?": "is there no collision"})
+    tagged, = parser.parse_batch(["Is the red car moving fast, or is it not?"])
+    assert tagged[-1] == "is_moving_velocity[fast]"

@@ -161,8 +161,8 @@ DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "w
 # A speaker's doubt around the question: said first ('Not sure, but ...', 'I could be off here, but ...', 'Since the
 # clip cuts off, I can't be sure: ...'), or after it (', or am I misremembering?', '; is that right?')
 # a viewer who cannot make it out ('ngl cant tell, ...', '... cant see it rly')
-VIEWER_DOUBTS = tuple((*i, can, "not", see) for i in ((), ("i",)) for can in ("can", "could")
-                      for see in ("tell", "see")) + (("hard", "to", "tell"),)
+VIEWER_DOUBTS = tuple((*i, can, "not", *quite, see) for i in ((), ("i",)) for can in ("can", "could")
+                      for quite in ((), ("quite",), ("really",)) for see in ("tell", "see")) + (("hard", "to", "tell"),)
 HEDGE_STARTS = (("not", "sure"), ("not", "certain"), ("unless",), ("maybe",), ("correct", "me"), ("no", "idea"),
                 ("hard", "to", "say"), *VIEWER_DOUBTS)
 HEDGE_ENDS = ((",", "but"), (",", "so"), (":",), (";",), ("-",), (",",))

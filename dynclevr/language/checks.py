@@ -87,7 +87,12 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
         if w not in NEGATIONS or offered(words, k):
             continue
         after = [v for v in words[k + 1:k + 5] if v not in PAST]
-        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"]:
+        # (motion denied is rest, but in a question a speed denied is no family's: 'is the red car not moving
+        # fast?', nor an engine's running: 'is its engine not running?'; a statement's, tagged, asks it: 'the scooter
+        # is not going slowly , is it ?')
+        asked = words[:1] and words[0] in YES_NO_OPENERS and (
+            after[1:2] and after[1] in SPEED_CLASS_WORDS - {"still"} or ENGINE_WORDS.intersection(words[k - 3:k]))
+        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"] or asked:
             said = " ".join(words[k:k + 3])
             return (f"the question is negated ('{said}'), which no question here asks: ask it without the "
                     "negation and take the opposite answer")
@@ -652,12 +657,17 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
                 "it")
     # 'after the video ends , which vehicle will the green car run into ?' read as whether it hits anything (also
     # '..., with which vehicle will ...')
-    which = next((words[j + 1] for j in range(len(words) - 1) if words[j] in ("which", "what") and (
+    at = next((j for j in range(len(words) - 1) if words[j] in ("which", "what") and (
         j == 0 or words[j - 1] == "," or words[j - 1] in ("with", "into") and (j == 1 or words[j - 2] == ","))
         and (words[j + 1] in OBJECT_WORDS or words[j + 1] in GENERIC_NOUNS)), None)
-    # ('which one is faster , is it the sedan ?' asks whether the sedan is)
-    if which and returns is not str and not {"faster_velocity", "slower_velocity"} & set(map(operation, program)):
-        return f"the question asks which {which}, but its nearest reading asks yes or no: no question here reads it"
+    # ('which one is faster , is it the sedan ?' asks whether the sedan is; 'when they collide , which one is
+    # faster ?' was read as whether the first is)
+    named = at is not None and any(words[m:m + 2] in (["is", "it"], ["was", "it"], ["is", "that"])
+                                   for m in range(at + 2, len(words)))
+    if at is not None and returns is not str and not (
+            named and {"faster_velocity", "slower_velocity"} & set(map(operation, program))):
+        return f"the question asks which {words[at + 1]}, but its nearest reading asks yes or no: no question here " \
+            "reads it"
     # 'which vehicle hits the bus first?' read as the bus's direction: a vehicle asked for is its colour or type
     if head[:1] == ["which"] and head[1:2] and (head[1] in OBJECT_WORDS or head[1] in GENERIC_NOUNS) and \
             operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):
@@ -807,13 +817,15 @@ SPEEDING_UP = {"engine", "engines", "throttle", "revving", "gaining", "picking",
 
 SIZES = {"size", "length", "width", "weight", "mass", "bigger", "smaller", "larger", "heavier", "lighter", "wider",
          "taller"}
+SPEED_SIZED = {"bigger", "smaller", "larger"}   # ... which a speed can be said to be
 
 
 def size_unread(words: list[str], program: list[str]) -> str:
     """Why a reading is not the question's ('' when it is): the question compares or asks a size ('is the red car
     greater in size than the blue bus?' was read as faster), which no question here asks."""
-    said = next((w for k, w in enumerate(words) if w in SIZES and words[k + 1:k + 2] not in (["speed"], ["velocity"])),
-                None)   # not 'a smaller speed'
+    # not 'a smaller speed', 'its speed smaller than', 'the magnitude of its velocity smaller than'
+    said = next((w for k, w in enumerate(words) if w in SIZES and words[k + 1:k + 2] not in (["speed"], ["velocity"])
+                 and not (w in SPEED_SIZED and {"speed", "velocity"} & set(words[max(k - 3, 0):k]))), None)
     return (f"the question asks about a size ('{said}'), which no question here asks (they ask speed classes, "
             "directions, colours, types and collisions)") if said else ""
 

@@ -30,7 +30,7 @@ STATES = {"is_fast": "fast", "fast": "fast", "is_slow": "slow", "slow": "slow", 
 HAS = {**dict.fromkeys(SPEED_NAMES, "speed"), "v0": "speed at the start", **dict.fromkeys(DIRECTION_NAMES, "direction"),
        "color": "colour", "colour": "colour", "type": "type"}
 MAX_CHARS = 1000
-_TIME = r"(?:\s*(?:@|at)?\s*t\s*=\s*(?:0|zero|start)\b|\s*@\s*start\b|\s+at\s+start\b)"
+_TIME = r"(?:\s*(?:@|[Aa][Tt])?\s*t\s*=\s*(?:0|zero|start)\b|\s*@\s*start\b|\s+at\s+start\b)"
 _VEHICLE = r"(?:the )?((?:" + _COLOURS + r") [a-z ]*?)"   # a vehicle's name, as `_names` leaves it
 _PAIR = r"the (?:" + _COLOURS + r") [^,:?.=>]+? and the (?:" + _COLOURS + r") [^,:?.=>]+? collide\b"   # `_calls`'
 _KEYWORD = re.compile(r"(?:t|at|time|when)\s*=\s*[^=]+|at the start")

@@ -351,10 +351,11 @@ IDEA_ASKS = (["any", "idea"], ["any", "ideas"], ["do", "you", "know"], ["can", "
 def impact_said_first(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'in the crash , was the brown suv slower than the cyan truck ?' -> 'when the brown suv and the cyan truck
     collide , was ...': a collision said first without its pair, where the question names the two vehicles; with
-    the words read so, or the words as they are and ()."""
+    the words read so, or the words as they are and (). A collision said first with its partner as an absolute clause
+    is read as a clause of time (`_absolute_impact`)."""
     said = _at(words[:6], IMPACT_MOMENTS)
     if not said or said[0] != 0:
-        return words, ()
+        return _absolute_impact(words)
     rest = words[len(said[1]):]
     rest = rest[(rest[:1] == [","]):]
     pair = list(dict.fromkeys(r for _, _, r in mentions(rest)))
@@ -362,6 +363,24 @@ def impact_said_first(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         return words, ()
     clause = ["when", *_said(pair[0]), "and", *_said(pair[1]), "collide", ","]
     return clause + rest, ((" ".join(said[1]), " ".join(clause[:-1])),)
+
+
+IMPACT_NOUNS = {"collision", "crash", "impact", "contact"}
+HAPPENING = {"happen", "happening", "occurring", "occur"}
+
+
+def _absolute_impact(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'collision with the green car happening , the gray bicycle ... ?' -> 'when colliding with the green car , ...':
+    a translation's absolute clause (the question was read of the green car)."""
+    runs = mentions(words)
+    if words[:1] == [] or words[0] not in IMPACT_NOUNS or words[1:2] != ["with"] or not runs or \
+            runs[0][0] - (words[2:3] == ["the"]) != 2:
+        return words, ()
+    end = runs[0][1]
+    if words[end:end + 1] == [] or words[end] not in HAPPENING or words[end + 1:end + 2] != [","]:
+        return words, ()
+    clause = ["when", "colliding", *words[1:runs[0][1]]]
+    return clause + words[end + 1:], ((" ".join(words[:end + 1]), " ".join(clause)),)
 
 
 def _judged(question: list[str], said: list[str]) -> list[str] | None:
@@ -637,7 +656,9 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     pointed = any(a in ("that", "this") and (b in GENERIC | {"?"} or out[k - 1:k] in (["is"], ["was"])
                                             and out[k + 2:k + 3] == ["?"] and b not in OBJECT_WORDS)
                   for k, (a, b) in enumerate(zip(out, out[1:])))
-    asked_of = pronoun is not None and out[pronoun + 1] in SENTENCE_ENDS | {","}   # 'what colour is it?'
+    # 'what colour is it?', 'what is its colour?'
+    asked_of = pronoun is not None and (out[pronoun + 1] in SENTENCE_ENDS | {","} or out[pronoun] == "its" and
+                                        out[pronoun + 2:pronoun + 3] and out[pronoun + 2] in SENTENCE_ENDS | {","})
     if pointed or (asked_of or plural) and any(map(_unnamed, context)) or (pronoun is not None or plural) and strange:
         return words, ()
     if pronoun is not None:

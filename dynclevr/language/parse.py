@@ -75,13 +75,13 @@ from dynclevr.language.context import (afterthoughts_read, check_ins_stated, clo
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
                                           corefer, delexicalise, described_as_named, description_as_said,
-                                          heard_as_said, is_description, placeholders)
-from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW_ASKED, NORMATIVE, REPEATS, TOWARD,
-                                        _at_viewer, chained, checked_attribute, imagined_otherwise, impact_denied,
-                                        onset_asked, ordered, otherwise_compared, possibility_asked, premised,
-                                        properties_joined, quantified, questions_joined, ranking, reversed_as_said,
-                                        several_asked, speed_measure, speed_measured, speeds_alike, times_joined,
-                                        unknown_property, _unknown_vehicle)
+                                          heard_as_said, is_description, placeholders, shared_noun_as_two)
+from dynclevr.language.refusals import (CAUSES, CAUSING, HEIGHT_COMPARISONS, HOW_ASKED, NORMATIVE, REPEATS, REVERSING,
+                                        TOWARD, _at_viewer, chained, checked_attribute, imagined_otherwise,
+                                        impact_denied, onset_asked, ordered, otherwise_compared, possibility_asked,
+                                        premised, properties_joined, quantified, questions_joined, ranking,
+                                        reversed_as_said, several_asked, speed_measure, speed_measured, speeds_alike,
+                                        times_joined, unknown_property, _unknown_vehicle)
 from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_batch
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
@@ -333,6 +333,7 @@ class QuestionParser:
         creole = telegram + creole
         words, switched = code_switched_as_said(words)
         shorthand += creole + switched
+        words, shared = shared_noun_as_two(words)   # before a plural is read as its singular
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
         words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
@@ -340,6 +341,7 @@ class QuestionParser:
         by_ear += her
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
+        named = shared + named
         words, looked = described_as_named(words)
         words, attributed = attributes_as_named(words)
         words, clause = colour_clause_as_named(words)
@@ -505,11 +507,20 @@ class QuestionParser:
             next((f"{a} times" for a, b in zip(said, said[1:]) if b == "times" and a in NUMBERS), None)
         if often:
             return [], f"the question asks how often ('{often}'), which no question here answers", read_as, said
-        offered = next((f"{a} or {c}" for a, b, c in zip(said, said[1:], said[2:])
-                        if b == "or" and {a, c} <= COMPARISONS and SPEED_ORDER[a] != SPEED_ORDER[c]), None)
+        # (also with the other vehicle between: 'does the red car go slower than the bus, or faster?'; or the other
+        # asked again: 'is the bus faster than the red car, or is the red car faster?')
+        offered = next((f"{a} or {next(c for c in said[j + 1:] if c in COMPARISONS)}" for k, a in enumerate(said)
+                        if a in COMPARISONS for j in range(k + 1, min(k + 10, len(said) - 1)) if said[j] == "or" and (
+                            said[j + 1] in COMPARISONS and SPEED_ORDER[a] != SPEED_ORDER[said[j + 1]] or
+                            said[j + 1] in ("is", "was", "does", "did") and COMPARISONS & set(said[j + 2:j + 9]))),
+                       None)
         if offered:
             return [], (f"the question offers '{offered}' to choose from, which no question here answers: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
+        reversal = next((" ".join(r) for k in range(len(said)) for r in REVERSING if said[k:k + len(r)] == r), None)
+        if reversal:
+            return [], (f"the question asks the opposite of what the parser can read ('{reversal}'): ask it the "
+                        "other way round and take the opposite answer"), read_as, said
         measured = speed_measured(said)
         if measured:
             return [], (f"the question measures a speed in numbers ('{measured}'), which no question here asks: ask "

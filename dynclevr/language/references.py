@@ -293,6 +293,31 @@ def described_as_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     return (out, tuple(read)) if read else (words, ())
 
 
+def _singular(word: str) -> str | None:
+    """'buses' -> 'bus', 'jets' -> 'jet': a vehicle's noun said in the plural, or None."""
+    return next((word[:-n] for n in (2, 1) if word.endswith("es"[2 - n:]) and word[:-n] in OBJECT_WORDS), None)
+
+
+def shared_noun_as_two(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the green and blue articulated buses' -> 'the green articulated bus and the blue articulated bus': two
+    colours sharing a plural noun are two vehicles (it was read as 'the green' one and the blue bus). With the words
+    read so, or the words as they are and ()."""
+    out, read, k = list(words), [], 0
+    while k < len(out) - 3:
+        b = k + 2 + (out[k + 2] == "the")
+        end = next((e for e in range(b + 1, min(b + 5, len(out))) if _singular(out[e])), None)
+        if out[k] not in COLOR_NAMES or out[k + 1] != "and" or b >= len(out) or out[b] not in COLOR_NAMES or \
+                end is None or any(w in COLOR_NAMES or not w.isalpha() for w in out[b + 1:end]):
+            k += 1
+            continue
+        noun = [*out[b + 1:end], _singular(out[end])]
+        said = [out[k], *noun, "and", "the", out[b], *noun]
+        read.append((" ".join(out[k:end + 1]), " ".join(said)))
+        out[k:end + 1] = said
+        k += len(said)
+    return (out, tuple(read)) if read else (words, ())
+
+
 def catalogue_names(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """['the', 'crimson', 'dirt', '-', 'bike'] -> (['the', 'red', 'dirtbike'], (('crimson', 'red'), ('dirt-bike',
     'dirtbike'))): every vehicle name of EVERYDAY_NAMES, a sub-type's name hyphenated or run together, a sub-type

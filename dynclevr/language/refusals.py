@@ -28,12 +28,12 @@ import re
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS
 from dynclevr.language.times import FILM_WORDS, _video_end
-from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, COMES_IN_WORDS,
-                                     COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS, END_TIMES,
-                                     ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES,
-                                     MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_VEHICLES,
-                                     PARTNER_SAID, PLURALS, REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS,
-                                     START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS, asks_impact, _head)
+from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, CLASS_NOUNS,
+                                     COMES_IN_WORDS, COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS,
+                                     END_TIMES, ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING,
+                                     LATER_TIMES, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS,
+                                     OTHER_VEHICLES, PARTNER_SAID, PLURALS, REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS,
+                                     SPEED_NOUNS, START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS, asks_impact, _head)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -507,9 +507,10 @@ SUBJECTS = {"it", "they", "the", "that", "this", "he", "she", "there"}
 
 
 def properties_joined(words: list[str]) -> str:
-    """Two kinds of motion asked at once ('fast and accelerating', 'floating and moving fast'), or ''."""
+    """Two kinds of motion asked at once ('fast and accelerating', 'floating and moving fast', 'accelerating but
+    slow'), or ''."""
     for k, w in enumerate(words):
-        if w != "and":
+        if w not in ("and", "but"):
             continue
         left = next((MOTION_KINDS[v] for v in reversed(words[max(k - 2, 0):k]) if v in MOTION_KINDS), None)
         right = next((MOTION_KINDS[v] for v in words[k + 1:k + 4] if v in MOTION_KINDS), None)   # '... and not ...'
@@ -803,6 +804,24 @@ OUTDONE = {"outpaced", "outrun", "outran", "overtaken", "outstripped", "passed",
            "surpassed", "outperformed", "bested", "exceeded", "outdistanced", "outraced"}
 
 
+# Words that turn what follows round ('is the red car anything but static?', 'is it false that ...', 'no faster
+# than'): the decoder read the predicate after them as asked
+REVERSING = (["anything", "but"], ["anything", "other", "than"], ["something", "other", "than"], ["anything", "except"],
+             ["far", "from"], ["nowhere", "near"], ["by", "no", "means"], ["the", "opposite", "of"],
+             ["false", "that"], ["untrue", "that"], ["incorrect", "that"], ["not", "the", "case", "that"],
+             ["impossible", "that"], ["unlikely", "that"], ["rule", "out"], ["a", "mistake", "to"],
+             *([wrong, "to", say] for wrong in ("wrong", "incorrect", "false") for say in ("say", "think", "claim")),
+             *([deny, "that"] for deny in ("deny", "denies", "doubt", "doubts")),
+             *(["no", c] for c in ("faster", "slower", "quicker", "speedier")),
+             # a collision prevented, escaped, or not there ('would the crash have been prevented if ...?', 'does it
+             # survive the video without a collision?', 'is there no collision between ...?')
+             *([w] for w in ("prevented", "prevent", "averted", "avert", "escaped", "spared")), ["untouched", "by"],
+             *([*without, hit] for without in (["without"], ["without", "a"], ["without", "any"], ["is", "there", "no"],
+                                                ["was", "there", "no"], ["zero"])
+               for hit in ("collision", "collisions", "crash", "crashes", "contact", "impact", "colliding", "hitting",
+                           "crashing", "touching", "bumping", "striking")))
+
+
 LOSING = {"lose", "loses", "losing", "lost", "shed", "sheds", "shedding", "drop", "drops", "dropping", "reduce",
           "reduces", "reducing", "reduced", "decrease", "decreases", "decreasing", "decreased", "cut", "cuts",
           "cutting", "bleed", "bleeds", "bleeding"}
@@ -822,7 +841,9 @@ def slowing_down(words: list[str]) -> bool:
         if w in LOSING and SPEED_NOUNS.intersection(after[:2]):
             return True
         verb = after[1:3] if after[:1] == ["is"] else after[:2]
-        if w in SPEED_NOUNS and (verb[:1] and verb[0] in FALLING or verb in (["goes", "down"], ["going", "down"])):
+        # (not a speed that falls into a class: 'into which speed category does its initial velocity fall?')
+        if w in SPEED_NOUNS and (verb[:1] and verb[0] in FALLING or verb in (["goes", "down"], ["going", "down"])) \
+                and not ({"into", "in"} & set(words[:k]) and CLASS_NOUNS & set(words[:k])):
             return True
         if w in GETTING and (after[:1] == ["slower"] or after[:2] == ["more", "slowly"]) and "than" not in after:
             return True

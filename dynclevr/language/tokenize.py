@@ -52,6 +52,8 @@ _DICTATED = re.compile(r"\b(comma|question mark|new line|new paragraph|exclamati
 _HASHTAGS = re.compile(r"(?:\s+#[a-z]\w*)+\s*$")
 _AND = re.compile(r"(?<=[a-z] )n(?= [a-z])")   # a text's 'n' between words ('the sedan n the bus'), not 'y/n'
 # a text's '1' for 'one' where it names a vehicle ('the faster 1', 'the red 1'), never a number of something
+# a speech recogniser's letters of an initialism ('the s u v', 's.u.v.'), before 'u' is read as 'you'
+_SPELT = re.compile(r"\bs[\s.]+u[\s.]+v\b\.?")
 _ONE = re.compile(r"\b(the|that|this|which|faster|slower|other|gray|grey|red|blue|green|brown|purple|cyan|yellow)"
                   r"\s+1\b(?!\s*(?:s\b|sec|second|frame|minute|m\b|km|mph|%))")
 
@@ -77,6 +79,6 @@ def tokenize(text: str) -> list[str]:
     # punctuation dictated in words ('the dirt bike comma when it ... full stop'), a post's trailing hashtags
     text = _DICTATED.sub(lambda m: _SAID_MARKS[m.group(1) or m.group(2)], text)
     text = _HASHTAGS.sub("", text)
-    text = _ONE.sub(r"\1 one", text)
+    text = _ONE.sub(r"\1 one", _SPELT.sub("suv", text))
     text = _AND.sub("and", text)
     return [SPELLINGS.get(t, t) for t in _TOKEN.findall(text)]

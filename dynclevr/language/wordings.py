@@ -18,11 +18,12 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
-from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, COMPARISONS,
-                                     DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
-                                     MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
-                                     REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, SPEED_CLASS_WORDS,
-                                     START_ADJECTIVES, START_WORDS, TIME_OPENERS, YES_NO_OPENERS, _head, asks_impact)
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, CLASS_NOUNS,
+                                     COMPARISONS, DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES,
+                                     MOTION_NOUNS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS,
+                                     QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES,
+                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, TIME_OPENERS, YES_NO_OPENERS,
+                                     _head, asks_impact)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -269,7 +270,7 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
     # 'I'd like to know, is the bus fast?', '... , at the start, is it fast?': the question itself
     asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else \
-        next((j for j in range(2, 7) if rest[:1] and rest[0] in TIME_OPENERS and rest[j:j + 1] and rest[j] in
+        next((j for j in range(2, 12) if rest[:1] and rest[0] in TIME_OPENERS and rest[j:j + 1] and rest[j] in
               YES_NO_OPENERS and rest[j + 1:j + 2] and rest[j + 1] in SUBJECT_STARTS | set(COLOR_NAMES)), 0)
     if rest[asked:asked + 1] and rest[asked] in YES_NO_OPENERS:
         return rest, ((said, "nothing, a request"),)
@@ -280,6 +281,14 @@ def imperative_as_stated(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     """A request closed by a question mark ('Describe the speed of the bus at the start?') as the grammar closes
     one, with a full stop: the question mark made the decoder read it as yes or no. With the words read so, or the
     words as they are and ()."""
+    # an indirect question whose verb comes last ('tell me what kind of vehicle the one that keeps speeding up at the
+    # outset is .'; the decoder lost its way in the subject): asked directly
+    rest = words[2:]
+    subject = next((j for j in range(1, 6) if rest[j:j + 1] and rest[j] in SUBJECT_STARTS), None)
+    if words[:2] == ["tell", "me"] and rest[:1] in (["what"], ["which"]) and subject and len(rest) > subject + 3 and \
+            rest[-2] in ("is", "was") and rest[-1] in (".", "?"):
+        out = [*rest[:subject], rest[-2], *rest[subject:-2], "?"]
+        return out, ((" ".join(words), " ".join(out)),)
     if words[-1:] != ["?"] or not any(words[:len(i)] == i for i in IMPERATIVES):
         return words, ()
     return [*words[:-1], "."], (("?", "."),)
@@ -376,8 +385,9 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
                    for k, w in enumerate(statement)):
             return statement + ["?"], again + ((" ".join(body[-n:]), "?"),)
-    # a tag without its comma ('is it going slow or nah': no choice offered)
-    if body[-2:] in (["or", "nah"], ["or", "nope"], ["or", "naw"]):
+    # a tag without its comma ('is it going slow or nah', 'will it bang into something later or no': no choice
+    # offered)
+    if body[-2:] in (["or", "nah"], ["or", "nope"], ["or", "naw"], ["or", "no"]):
         return body[:-2] + ["?"], again + ((" ".join(body[-2:]), "?"),)
     # a statement tagged 'right' without its comma, after a vehicle or a time ('... when it hit the wagon right ?'; not
     # 'is it moving right ?')
@@ -388,7 +398,6 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
 
 
 # a class a vehicle falls into ('into which speed class does the red sedan fall : static , slow or fast ?')
-CLASS_NOUNS = {"class", "category", "group", "bracket", "band"}
 FALLING_INTO = (["fall", "into"], ["fall", "in"], ["fall"], ["fit", "into"], ["fit", "in"], ["fit"], ["belong", "to"],
                 ["belong", "in"], ["belong"])
 
@@ -402,13 +411,18 @@ def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         if w not in ("which", "what") or words[j:j + 1] == [] or words[j] not in CLASS_NOUNS or \
                 words[j + 1:j + 2] not in (["does"], ["did"]):
             continue
-        end = next((m for m in range(j + 2, min(j + 8, len(words)))
+        end = next((m for m in range(j + 2, min(j + 12, len(words)))
                     for f in FALLING_INTO if words[m:m + len(f)] == f), None)
         if end is None:
             return words, ()
         into = next(f for f in FALLING_INTO if words[end:end + len(f)] == f)
         start = k - (words[k - 1:k] in (["into"], ["in"], ["to"]))
-        out = [*words[:start], *words[k:j + 1], "is", *words[j + 2:end], "in", *words[end + len(into):]]
+        subject = words[j + 2:end]
+        # a vehicle's speed said as the subject ('... does the cyan bike 's initial velocity fall ?')
+        owner = next((m for m in range(len(subject) - 2) if subject[m:m + 2] == ["'", "s"] and subject[-1] in (
+            "speed", "velocity") and set(subject[m + 2:-1]) <= {"first", "initial", "starting", "own"}), None)
+        subject = subject[:owner] if owner else subject
+        out = [*words[:start], *words[k:j + 1], "is", *subject, "in", *words[end + len(into):]]
         return out, ((" ".join(words[start:end + len(into)]), " ".join(out[start:start + end - k + 1])),)
     return words, ()
 
@@ -506,8 +520,8 @@ IDIOMS = phrase_table({
                            ("out", "of", "the", "gates"), ("out", "of", "the", "blocks"), ("outta", "the", "gate"),
                            ("outta", "the", "gates"), ("outta", "the", "blocks"), ("when", "things", "kick", "off"),
                            ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
-                           ("when", "everything", "kicks", "off"), ("from", "the", "off"), ("from", "the", "jump"),
-                           ("off", "the", "jump"))},
+                           ("when", "everything", "kicks", "off"), ("from", "the", "off"), ("at", "the", "off"),
+                           ("from", "the", "jump"), ("off", "the", "jump"))},
     # a script's 'top of the scene' and 'fade in' (its 'fade out' the end, which no question asks)
     **{(*a, "top", "of", "the", f): ("the", "start") for a in ((), ("the",)) for f in (
         "scene", "take", "shot", "clip", "video", "reel", "footage", "hour", "show")},
@@ -555,7 +569,15 @@ IDIOMS = phrase_table({
     **{("in", w, "itself"): ("at", "the", "start") for w in ("beginning", "start", "starting")},
     **{("over", "the", "course", "of", "the", f): ("in", "the", "video") for f in (
         "video", "clip", "film", "footage", "recording")},
+    # ... and 'at any point in the video', said first of what a collision's partner is ('At any point in the video,
+    # something crashed into the car; what model is it?' was read as yes or no)
+    **{("at", some, "point", p, "the", f): ("in", "the", "video") for some in ("any", "some") for p in ("in", "during")
+       for f in ("video", "clip", "film", "footage", "recording")},
     (",", "if", "you", "will", ","): (",",),
+    # a Romance learner's 'the class of speed of' a vehicle is its speed ('which is the class of speed of the brown
+    # vehicle?')
+    **{("the", cls, "of", sp, "of"): ("the", "speed", "of") for cls in ("type", "kind", "class", "category")
+       for sp in ("speed", "velocity")},
     **{("first", "few", m): ("first", m) for m in ("seconds", "moments", "frames", "instants")},
     # a video editor's: the whole video scrubbed through, the part after the cut, the last frame passed, a shot or an
     # edit imagined otherwise ('If we'd shot the pickup standing still ...', 'Re-edit it so the SUV ...'), the take's
@@ -1254,6 +1276,13 @@ IDIOMS = phrase_table({
     **{(p, "the", *frames): ("in", "the", "video") for p in ("in", "within", "during", "throughout", "across")
        for shown in ("shown", "observed", "given", "visible", "displayed")
        for frames in (("frames", shown), (shown, "frames"))},
+    # ... and after them, or after 'this' said of the video, is after it ('After the visible frames, is the brown
+    # dirtbike going to collide with ...?', 'after this will the cyan road bike hit anything')
+    **{("after", "this", w): ("after", "the", "video", w) for w in ("will", "is", "are", "does", "do", "would", ",",
+                                                                    "?")},
+    **{(p, "the", *frames): ("after", "the", "video") for p in ("after", "beyond", "past")
+       for shown in ("shown", "observed", "given", "visible", "displayed")
+       for frames in (("frames", shown), (shown, "frames"))},
     # a Chinese learner's 'if let' ('If let yellow vehicle start fast, it will collide with blue object?')
     ("if", "let"): ("if",),
     # the property asked first, before a colon ('Which colour: the thing that is accelerating at the start?')
@@ -1629,8 +1658,9 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
                 continue
             said, k = [first[0]], i + first[1]
             while True:
-                sep = next((s for s in ([",", "or"], ["or"], [","]) if words[k:k + len(s)] == s), None)
-                nxt = _choice(words, k + len(sep), choices) if sep else None
+                # (or none: a speech recogniser's list without its commas, 'is it not moving slow or fast')
+                sep = next((s for s in ([",", "or"], ["or"], [","], []) if words[k:k + len(s)] == s), None)
+                nxt = _choice(words, k + len(sep), choices)
                 if not nxt:
                     break
                 said.append(nxt[0])

@@ -103,6 +103,7 @@ AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"
 
 
 MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
+CLASS_NOUNS = {"class", "category", "group", "bracket", "band"}   # a speed's ('which speed class is it in?')
 ATTRIBUTE_NOUNS = {"color", "shape", "type", "kind", "sort"}
 QUERY_NOUNS = MOTION_NOUNS | ATTRIBUTE_NOUNS
 
