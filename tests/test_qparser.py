@@ -4137,3 +4137,77 @@ def test_words_that_turn_the_predicate_round_are_refused_not_read_as_it():
                             "Is there no collision between the red car and the blue bus?": "is there no collision"})
     tagged, = parser.parse_batch(["Is the red car moving fast, or is it not?"])
     assert tagged[-1] == "is_moving_velocity[fast]"
+
+
+def test_a_caller_s_remark_after_the_question_and_a_motion_said_again_are_read_away():
+    parser = QuestionParser.load()
+    remark, hang_up, meant, there, kicks = parser.parse_batch([
+        "Does the purple city bus crash into the green thing, I wanna get y'all's take on it?",
+        "What color is the one that's up in the air at the very beginning, I'll hang up and listen.",
+        "When that green SUV crashes with the red chopper, is the SUV hauling, I mean going fast, right at that "
+        "moment?",
+        "Now how quick is the red sedan moving right there at first in the video, that's my question.",
+        "Okay so I gotta ask, right when it kicks off, is the green school bus going faster than the green city bus?"])
+    assert remark[-1] == "exist" and remark[-4] == "filter_attributes[green]"
+    assert hang_up == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    assert meant[-2:] == ["get_frame", "is_moving_velocity[fast]"]   # (read as a speed class asked as which)
+    assert there[-2:] == ["start", "query_moving_velocity"]         # ('right' read as a direction)
+    assert kicks[-2:] == ["start", "faster_velocity"]               # (read at a collision)
+    # a remark that says what is asked stays: its speeds, its vehicle
+    restated, = parser.parse_batch(["Is the SUV going slow, I mean fast, at the start?"])
+    assert restated[-1] == "is_moving_velocity[fast]"
+
+
+def test_a_note_s_comparison_counterfactual_label_and_time_after_the_video():
+    parser = QuestionParser.load()
+    compared, label, post, appearance, premise = parser.parse_batch([
+        "@ start red sedan vel < red school bus vel? y/n",
+        "counterfactual - cyan fighter starts slow -> hits bicycle?",
+        "post-video: purple bus collides w/ blue jet?",
+        "As soon as its appearance occurs, is the red tandem bike stationary, slow or fast?",
+        "Assuming school bus was standing still in opening frames itself, it would run into green minivan?"])
+    assert compared[-2:] == ["start", "slower_velocity"] and compared[2] == "filter_attributes[sedan]"
+    assert "Counterfactual_moving_slow" in label and label[-1] == "exist"
+    assert post[0] == "futureEvents"                                 # (read within the video)
+    assert appearance[-2:] == ["come_in_frame", "query_moving_velocity"]   # (its clause dropped: the start)
+    assert "Counterfactual_static" in premise
+    assert_refused(parser, {"Given that the bus is parked, does the sedan hit it?": "premise"})
+
+
+def test_a_vehicle_told_apart_only_as_another_of_its_kind_two_times_or_motion_by_indefinite_are_refused():
+    parser = QuestionParser.load()
+    # each was read as a question it does not ask: any collision, a collision's time alone, a direction
+    assert_refused(parser, {"Does the red bus collide with another bus?": "another of its kind",
+                            "Does the red car hit another red object?": "another of its kind",
+                            "Does the red car hit a moving object?": "by its motion",
+                            "Is the red car moving fast at the start or when it hits the bus?": "two times",
+                            "Which direction is the red car not moving at the start?": "negated"})
+    other, offered = parser.parse_batch(["Does the red car collide with another bus?",
+                                         "When the motorbike comes into view, is it not moving, slow or fast?"])
+    assert other[-4] == "filter_attributes[bus]" and other[-1] == "exist"
+    assert offered[-2:] == ["come_in_frame", "query_moving_velocity"]
+
+
+def test_a_letter_s_courtesies_old_names_and_a_scenario_that_sets_the_scene():
+    parser = QuestionParser.load()
+    grateful, trouble, ordinary, motor_car, consequence, scenario, labelled = parser.parse_batch([
+        "I should be most grateful to learn whether the yellow biplane was aloft in the opening moments of the "
+        "picture.",
+        "Might I trouble you for the kind of thing that is floating in the air at the start of the film?",
+        "I should very much like to know whether the mountain bicycle and the purple omnibus (the ordinary sort) ran "
+        "into one another in the picture.",
+        "May I ask whether the yellow SUV motor car is to be involved in a crash later on, beyond the end of the film?",
+        "Supposing the grey saloon car had been standing still at first, I should be grateful to know whether it "
+        "would have struck the bicycle.",
+        "Scenario: blue articulated bus hits the tandem bike. What is the bus's speed at impact: static, slow or fast?",
+        "Scenario: the red object is stationary when the video begins (counterfactual). Would it have collided with "
+        "the purple articulated bus?"])
+    assert grateful[-2:] == ["start", "is_floating"]
+    assert trouble == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    assert "filter_attributes[regular_bus]" in ordinary and ordinary[-1] == "exist"
+    assert motor_car[:4] == ["futureEvents", "Objects", "filter_attributes[yellow]", "filter_attributes[suv]"]
+    assert "Counterfactual_static" in consequence and consequence[-1] == "exist"
+    # (a scene set by a collision is no condition: it was read as one, and refused)
+    assert scenario[-3:] == ["unique", "get_frame", "query_moving_velocity"]
+    assert "Counterfactual_static" in labelled
+    assert_refused(parser, {"Counterfactual: the red car hits the bus. Is it fast then?": "imagines"})

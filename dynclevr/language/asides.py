@@ -43,6 +43,9 @@ SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "c
              "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
              "greetings", "with"}
 THANKING = {"thanks", "thank", "cheers", "ta", "many"}
+# how a caller's remark after the question opens: the speaker or the question itself ('that's my question')
+SPEAKER_REMARKS = (("i",), ("that", "'", "s"), ("that", "is"), ("'", "cause"), ("cause",), ("cos",), ("because", "i"),
+                   ("y", "'", "all"), ("you", "all"), ("me", "and"), ("just", "wondering"), ("just", "curious"))
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
 
 
@@ -52,6 +55,18 @@ def _says_nothing(tail: list[str]) -> bool:
     return not asks_impact(tail) and not set(tail) & (
         OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
         | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
+
+
+def _unremarked(remark: list[str]) -> list[str]:
+    """A caller's remark without the words that only look like asking ('that's what I'm wondering', 'I'll hang up')."""
+    out, k = [], 0
+    while k < len(remark):
+        if remark[k:k + 2] in (["hang", "up"], ["what", "i"], ["what", "we"]):
+            k += 2
+            continue
+        out.append(remark[k])
+        k += 1
+    return out
 
 
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -65,7 +80,9 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     addressees = " ".join(words[j] for j in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
         words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
-    k = 0
+    # a caller's '(now) real quick ,' asks in haste, of no vehicle's speed
+    k = next((j + 3 for j in (0, 1) if words[j:j + 3] in (["real", "quick", ","], ["real", "fast", ","])
+              and (j == 0 or words[0] in INTERJECTIONS | COMMA_INTERJECTIONS)), 0)
     # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
     while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS | ADDRESSED
                               and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
@@ -95,6 +112,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
                    and len(words[j:end]) <= 6 and _says_nothing(words[j:end])), None)
     if remark:
         end = remark - (words[remark - 1] == ",")
+    # a caller's remark closing the question after its last comma (', that's my question .', ', I'll hang up and
+    # listen .', ", 'cause I missed it if it did ?", ', y'all ?'): the question mark it carried stays
+    last = end - (words[end - 1:end] in (["?"], ["."], ["!"]))
+    remark = next((j for j in range(k + 4, last) if words[j - 1] == "," and last - j <= 14
+                   and any(tuple(words[j:j + len(r)]) == r for r in SPEAKER_REMARKS)
+                   and "?" not in words[j:last] and _says_nothing(_unremarked(words[j:last]))), None)
+    if remark and QUESTION_OPENERS.union(YES_NO_OPENERS).intersection(words[k:remark]):
+        words, end = [*words[:remark - 1], "?", *words[remark - 1:]], remark
     closing = ((" ".join(words[end:]), "nothing, an interjection"),) if words[end:] else ()
     # a speaker's fillers within the question ('the um green sedan'), with the commas around them
     within = [j for j in range(k, end) if words[j] in FILLERS]
@@ -759,6 +784,35 @@ def corrections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return words, ()
 
 
+MEANT = ([",", "i", "mean"], [",", "i", "meant"], [",", "or", "rather"], [",", "that", "is"])
+SAID_OF_MOTION = MOTION_WORDS | MOTION_DESCRIPTIONS | {"really", "very", "pretty", "quite", "real", "is", "was"}
+
+
+def restatements_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the suv moving fast , I mean going fast , at that moment ?' -> 'is the suv going fast at that moment ?': a
+    motion said, then said again after 'I mean' between commas; the second is what is asked. With the first read as
+    the second, or the words as they are and ()."""
+    for k in range(1, len(words) - 3):
+        meant = next((m for m in MEANT if words[k:k + len(m)] == m), None)
+        if meant is None:
+            continue
+        b = k + len(meant)
+        e = next((j for j in range(b, len(words)) if words[j] in (",", "?", ".")), len(words))
+        again = words[b:e]
+        if not again or not set(again) <= SAID_OF_MOTION or not MOTION_DESCRIPTIONS.intersection(again):
+            continue
+        # the verb said again ('I mean going fast') restates the verb too; a speed alone ('I mean fast') the speed
+        kept = SAID_OF_MOTION - {"is", "was"} if MOTION_WORDS.intersection(again) else MOTION_DESCRIPTIONS
+        a = k
+        while a > 0 and words[a - 1] in kept:
+            a -= 1
+        if a == k:
+            continue
+        return [*words[:a], *again, *words[e + (words[e:e + 1] == [","]):]], (
+            (" ".join(words[a:e]), " ".join(again)),)
+    return words, ()
+
+
 OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me little bus' as said in Ireland
 TOYS = {"toy", "toys", "model", "little", "wee"}
 # ... and fondness ('that sweet blue tandem bike', 'poor gray mountain bike', 'our trusty old pickup')
@@ -900,7 +954,7 @@ def _purpose(heading: list[str], rest: list[str]) -> bool:
 # only: ...', 'Q: ... ? A (yes/no):'): a role, and a heading of instructions that asks nothing
 PROMPT_WORDS = {"yes", "or", "no", "only", "answer", "respond", "reply", "with", "one", "word", "a", "an", "the",
                 "single", "step", "by", "-", "reasoning", "is", "welcome", "fine", "but", "end", "think", "query",
-                "question", "q", "task", "and", "/", "(", ")", "vehicle", "type", "colour",
+                "question", "q", "task", "and", "/", "(", ")", "vehicle", "type", "colour", "expect",
                 "color", "output", "format", "please", "briefly", "just", "your", "final", "instruction", "prompt",
                 "following", "true", "false", "in", "words", "short", "answers", "aloud", "first", "then"}
 ROLE_ENDS = {"and", ":", ",", "."}
@@ -1138,6 +1192,13 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             read.append((" ".join(words[k:close + 1]), "nothing, an aside"))
             k = close + 1
             continue
+        # ... or a note that what it says is imagined, where a label or 'would' says so too ('Scenario: the red
+        # object is stationary when the video begins (counterfactual). Would it have ...?')
+        if words[k] == "(" and words[k + 2:k + 3] == [")"] and words[k + 1] in IMAGINING_LABELS | CONDITION_LABELS \
+                and (CONDITION_LABELS & set(out[:3]) or "would" in words[k + 3:]):
+            read.append((" ".join(words[k:k + 3]), "nothing, said again"))
+            k += 3
+            continue
         # ... or the start said again ('at the outset ( frame 0 )')
         close = words.index(")", k) if words[k] == "(" and ")" in words[k:k + 5] else None
         if close and words[k + 1:close] in (*TIME_ZERO, ["the", "start"], ["at", "the", "start"]) and \
@@ -1309,6 +1370,7 @@ SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS 
           | STATIC_SAID | REST_WORDS | START_WORDS | END_SAID | FILM_WORDS | CONDITION_OPENERS | CONDITION_WORDS
           | IMAGINING | IMAGINED_SAID | TIME_SAID | NEGATIONS | DIRECTION_WORDS | ASKING | set(COLOR_NAMES)
           | OTHER_COLOURS | PLURALS | QUERY_NOUNS | COMPARING | {"would", "could", "had", "were", "should", "shall"}
+          | COMES_IN_WORDS | {"appearance", "arrival"}   # 'as soon as its appearance occurs'
           | {"at", "once", "upon", "how", "why", "where", "who", "whom", "whose", "then", "first", "after", "before",
              "until", "later", "end", "ends", "way", "each", "other", "both", "either", "anything", "something",
              "nothing", "same", "instead", "rather", "only", "just", "moment", "instant", "frame", "second", "seconds",

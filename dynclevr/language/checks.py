@@ -92,7 +92,12 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
         # is not going slowly , is it ?')
         asked = words[:1] and words[0] in YES_NO_OPENERS and (
             after[1:2] and after[1] in SPEED_CLASS_WORDS - {"still"} or ENGINE_WORDS.intersection(words[k - 3:k]))
-        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"] or asked:
+        # motion denied is read only as rest: 'which direction is the red car not moving?' has no family ('not
+        # moving , slow or fast ?' offers it)
+        unrested = after[:1] and after[0] in MOTION_WORDS and not ops & REST_OPERATIONS and \
+            "or" not in words[k + 2:k + 7] and not (after[1:2] and after[1] in SPEED_CLASS_WORDS | COMPARISONS | {
+                ",", "more", "less", "as", "so", "too", "very", "really", "that"})
+        if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"] or asked or unrested:
             said = " ".join(words[k:k + 3])
             return (f"the question is negated ('{said}'), which no question here asks: ask it without the "
                     "negation and take the opposite answer")
@@ -189,6 +194,12 @@ def _direction_said(words: list[str]) -> str | None:
     for k, w in enumerate(words):
         as_time = w == "right" and words[k + 1:k + 2] != [] and words[k + 1] in RIGHT_AS_TIME and \
             words[k - 1:k] not in (["the"], ["to"])   # 'right at the start', not 'to the right at the start'
+        # ... nor a caller's 'right there at the start', 'is it right that ...', 'they collide , right , and ...'
+        as_time = as_time or w == "right" and (
+            words[k + 1:k + 2] == ["there"] and words[k - 1:k] not in (["the"], ["to"])
+            or words[k - 2:k] == ["is", "it"] and words[k + 1:k + 2] == ["that"]
+            or words[k - 1:k] == [","] and words[k + 1:k + 3] in ([",", "and"], [",", "so"], [",", "now"])
+            and words[k - 2] not in DIRECTION_WORDS)
         if w in DIRECTION_WORDS and not as_time:
             return w
         if w in ("up", "down") and words[k - 1:k] and words[k - 1] in HEIGHT_MOTIONS and \
@@ -786,9 +797,14 @@ def motion_unfiltered(words: list[str], program: list[str]) -> str:
     if MOTION_FILTERS.intersection(map(operation, program)):
         return ""
     said = next((" ".join(words[k:j + 1]) for k, w in enumerate(words) if w in MOTION_PICKS
-                 and words[k - 1:k] in (["the"], ["that"], ["this"])
+                 and (words[k - 1:k] in (["the"], ["that"], ["this"])
+                      # ... or an indefinite one, not said of the vehicle itself ('is it a slow one?', 'is the bus
+                      # a stationary one?')
+                      or words[k - 1:k] in (["a"], ["an"], ["any"], ["another"], ["some"]) and words[k - 2:k - 1]
+                      and words[k - 2] not in {"is", "was", "be", "s", "are", "were", "it"} | OBJECT_WORDS)
                  for j in (k + 2, k + 1) if words[j:j + 1] and words[j] in OBJECT_WORDS | GENERIC_NOUNS
-                 and all(x in OBJECT_WORDS for x in words[k + 1:j])), None)
+                 and all(x in OBJECT_WORDS for x in words[k + 1:j])
+                 and not (words[k - 1] in ("a", "an", "any", "another", "some") and words[j] == "one")), None)
     if said is None:
         return ""
     return f"the question picks a vehicle by its motion ('{said}'), which no question here does so"

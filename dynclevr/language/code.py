@@ -14,7 +14,7 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS
 
 _CODE = re.compile(r"[a-z][A-Z]|[A-Za-z0-9]_[A-Za-z0-9]|==|->|=>|\u2192|\u21d2|[a-z]\(|\bSELECT\b|\bt\s*=\s*\w|"
-                   r"^\s*(//|#)|[a-z]{2}\.[a-z_]{2,}")
+                   r"^\s*(//|#)|[a-z]{2}\.[a-z_]{2,}|\b(?:vel|velocity|speed)\s*[<>]")
 _COLOURS = "|".join(COLOR_NAMES)
 NAME_WORDS = OBJECT_WORDS | {name.split()[0] for name in EVERYDAY_NAMES}   # a vehicle's name starts so
 SPEED_NAMES = ("speed", "velocity", "vel", "v")
@@ -111,11 +111,13 @@ def _members(text: str) -> str:
 
 def _compared(text: str) -> str:
     """'the speed of A at the start > the speed of B at the start' -> 'is A faster than B at the start'."""
-    term = r"(?:the speed of (?P<{0}>the [a-z ]+?)|(?P<{0}2>the [a-z ]+?)'s speed)(?P<{0}t> at the start)?"
+    # (and a note's 'green motorbike vel > red airliner vel', its vehicles named by colour)
+    term = (r"(?:the speed of (?P<{0}>the [a-z ]+?)|(?P<{0}2>the [a-z ]+?)'s speed|(?P<{0}3>(?:the )?(?:" + _COLOURS
+            + r") [a-z]+(?: [a-z]+)?) (?:vel|velocity|speed))(?P<{0}t> at the start)?")
     m = re.search(term.format("a") + r"\s*(?P<op>[<>])\s*" + term.format("b") + r"(?=\s*[?.,:]|\s*$|\s+when\b)", text)
     if not m:
         return text
-    a, b = m.group("a") or m.group("a2"), m.group("b") or m.group("b2")
+    a, b = (m.group(k) or m.group(k + "2") or _the(m.group(k + "3")) for k in ("a", "b"))
     when = m.group("at") or m.group("bt") or ""
     return text[:m.start()] + f"is {a} {'faster' if m.group('op') == '>' else 'slower'} than {b}{when}" + \
         text[m.end():]
@@ -172,7 +174,7 @@ def code_as_said(text: str) -> tuple[str, tuple[tuple[str, str], ...]]:
     said = re.sub(r"\s*=\s*\?\s*$", " ?", said)
     said = re.sub(r"^if ([^:]+?)\s*:\s*", r"if \1 , ", said)
     # what follows a condition's arrow is what it asks: a sentence of its own, as the parser reads a condition
-    imagined = re.match(r"\s*(?:counterfactual|hypothetical|intervention|what if|suppose|if)\b", said)
+    imagined = re.match(r"\s*(?:counterfactual|cf|hypothetical|intervention|what if|what-if|whatif|suppose|if)\b", said)
     said = re.sub(r"\s*(?:->|=>)\s*", " . " if imagined else " , ", said)
     said = re.sub(r"(^|[:,.]\s*)(" + _PAIR + ")", r"\1do \2", said)
     said = re.sub(r"\s*@\s*(?=when|the)", " ", said)

@@ -123,9 +123,16 @@ def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
     """Where a sentence opens on a condition's opener (after a label: 'Game designer: suppose ...', or as a label:
     'Counterfactual: the pickup ...'): its place, its words and the opener it is read as; None where it does not."""
     colon = sentence.index(":") if ":" in sentence else None
+    if sentence[1:2] == ["-"] and sentence[0] in CONDITION_LABELS:   # a note's 'counterfactual - ...'
+        colon = 1
     # ('Counterfactual: ...', and a label that opens on its word: 'Change one thing: ...')
+    # (not a label before a collision alone, with no motion to imagine: 'Scenario: the fighter strikes the cruiser.'
+    # sets the scene of a question about it)
+    said = sentence[(colon or 0) + 1:]
+    event = asks_impact(said) and not (MOTION_DESCRIPTIONS | IMAGINED_SAID | UNMOVED).intersection(said) and \
+        not any(w.startswith(("accelerat", "float", "speed")) for w in said)
     if colon and (sentence[colon - 1] in CONDITION_LABELS or colon <= 3 and sentence[0] in CONDITION_LABELS) and (
-            mentions(sentence[colon:]) or "it" in sentence):
+            mentions(sentence[colon:]) or "it" in sentence) and not event:
         return colon + 1, (), ("suppose",)
     for k in (0, colon + 1 if colon is not None else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:

@@ -54,7 +54,8 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, correc
                                       distractors_dropped, ramble_dropped, dislocated_as_asked, examination_as_asked,
                                       framing_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
                                       interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
-                                      radio_as_asked, requested_as_asked, ticket_fields_read, wagers_read)
+                                      radio_as_asked, requested_as_asked, restatements_read, ticket_fields_read,
+                                      wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_unread, compared_unsaid, comparison_imagined,
@@ -398,6 +399,8 @@ class QuestionParser:
         words, inverted = inverted_as_asked(words)
         opened += inverted
         words, idioms = idioms_as_said(words)
+        words, meant = restatements_read(words)
+        idioms += meant
         words, contest = contest_as_compared(words)
         words, active = contact_made_as_active(words)
         words, named_condition = condition_named_as_said(words)
@@ -507,6 +510,15 @@ class QuestionParser:
             next((f"{a} times" for a, b in zip(said, said[1:]) if b == "times" and a in NUMBERS), None)
         if often:
             return [], f"the question asks how often ('{often}'), which no question here answers", read_as, said
+        # 'is it fast at the start or when it hits the bus?' was read at the collision alone
+        both = next((" ".join(said[k:k + 3]) for k in range(len(said) - 2) if said[k] in START_WORDS
+                     and said[k + 1] in ("or", "and") and said[k + 2] in TIME_OPENERS), None) or \
+            next((" ".join(said[k:k + 4]) for k in range(len(said) - 3) if said[k] in ("or", "and")
+                  and said[k + 1:k + 3] == ["at", "the"] and said[k + 3] in START_WORDS
+                  and {"when", "as", "while", "once"}.intersection(said[:k])), None)
+        if both:
+            return [], (f"the question asks at two times at once ('{both}'), which no question here asks: ask at "
+                        "each time alone"), read_as, said
         # (also with the other vehicle between: 'does the red car go slower than the bus, or faster?'; or the other
         # asked again: 'is the bus faster than the red car, or is the red car faster?')
         offered = next((f"{a} or {next(c for c in said[j + 1:] if c in COMPARISONS)}" for k, a in enumerate(said)
@@ -613,6 +625,11 @@ class QuestionParser:
             ref = refs[int(w[4:-1]) - 1]
             named = " ".join(ref).replace("_", " ")
             before, after = words[k - 1] if k else "", words[k + 1] if k + 1 < len(words) else ""
+            # 'does the red bus hit another bus?': a vehicle told apart from the named one only as another of its
+            # kind (`corefer` read it as the same one), which no program picks out
+            if before in ("another", "other", "different") and w in words[:k]:
+                return (f"the question tells a vehicle from the {named} only as another of its kind ('{before}'), "
+                        "which no question here picks out: name that vehicle by its colour or type")
             # 'the green tractor': an object the catalogue lacks, where the unknown word is the object's noun. After
             # a sub-type or category the description is whole, and the word after it is the sentence's ('the red
             # sedan ends up hitting ...'), unless 'than' follows it: 'the red sedan bigger than the blue bus'

@@ -76,9 +76,14 @@ _SHADES = {(said, colour) for shade, colour in COLOUR_SHADES.items() for said in
     {((tone, c), c) for tone in ("dark", "bright", "deep") for c in COLOR_NAMES} | \
     {(ish, c) for c in COLOR_NAMES for ish in ((c + "ish",), (c, "-", "ish"))} | \
     {(("reddish",), "red"), (("bluish",), "blue"), (("purplish",), "purple"), (("greyish",), "gray")}
+# a bus glossed as the ordinary sort ('the purple omnibus (the ordinary sort)') is the catalogue's regular bus
+_ORDINARY = {((bus, "(", "the", plain, sort, ")"), "regular bus") for bus in ("bus", "omnibus")
+             for plain in ("ordinary", "regular", "normal", "usual", "standard", "plain")
+             for sort in ("sort", "kind", "type", "variety")}
 # A category as people say it, for a sub-type said with its category ('the fighter plane', 'the sedan car').
 CATEGORY_SAID = {"aeroplane": ("aeroplane", "plane", "aircraft"), "bicycle": ("bicycle", "bike"),
-                 "bus": ("bus", "coach"), "car": ("car", "automobile"), "motorbike": ("motorbike",)}
+                 "bus": ("bus", "coach"), "car": ("car", "automobile", "motorcar", "motor car"),
+                 "motorbike": ("motorbike",)}
 
 
 def _written(name: str) -> set[tuple[str, ...]]:
@@ -102,8 +107,8 @@ def phrase_table(pairs) -> dict[str, tuple[tuple[tuple[str, ...], tuple[str, ...
 _EVERYDAY = phrase_table((w, tuple(said.split())) for w, said in sorted(
     {(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
                                   *EVERYDAY_NAMES.items()] for w in _written(name)}
-    | {(tuple(v.split("_")) + (c,), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]}
-    | _SHADES, key=lambda kv: (-len(kv[0]), kv)))
+    | {((*v.split("_"), *c.split()), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]}
+    | _SHADES | _ORDINARY, key=lambda kv: (-len(kv[0]), kv)))
 
 
 def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -678,8 +678,10 @@ def quantified(words: list[str]) -> str:
 
 def premised(words: list[str]) -> str:
     """A premise stated first ('given that the bus is parked, ...'), or ''."""
+    # (nor a learner's 'assuming the bus was parked, it would hit ...?': the 'would' after it imagines it)
     said = next((" ".join(p) for k in range(len(words)) for p in PREMISES if words[k:k + len(p)] == p
-                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])), None)
+                 and not IMAGINED & set(words[k + len(p):(words + [","])[k:].index(",") + k])
+                 and "would" not in words[(words + [","])[k:].index(",") + k:]), None)
     if said is None:
         return ""
     return (f"the question states a premise ('{said}'), which no question here reads: ask the question alone, or as "

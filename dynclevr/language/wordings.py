@@ -144,8 +144,8 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 # 'I wonder ...', 'I'm curious, ...' (after 'please', 'so', 'hey' or 'ok' said first). The grammar words requests as
 # 'Tell me ...'.
 REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
-                     r"(?:(?:can|could|would|will) you (?:please |kindly )?"
-                     r"(?:tell me|tell(?= (?:the|whether|if|which|what|how) )|let me know|advise(?: me)?"
+                     r"(?:(?:can|could|would|will) you (?:please |kindly )?(?:be (?:so kind as|good enough) to )?"
+                     r"(?:tell me|inform me|tell(?= (?:the|whether|if|which|what|how) )|let me know|advise(?: me)?"
                      r"|describe(?: for me| to me)?(?= (?:which|what|how|whether))"
                      # an assistant's verb of the answer ('could you identify what kind of vehicle ...')
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
@@ -154,8 +154,11 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      # a translation's courtesy ('Would it be possible to know whether ...')
                      r"|(?:would|could|is) it be possible to (?:know|learn|find out|ask)"
                      r"(?= (?:whether|if|which|what|how|in))"
-                     r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really )?"
-                     r"(?:like to |love to )?know"
+                     r"|i (?:would |' d |want to |need to |should )(?:very much |so much |really |dearly )?"
+                     r"(?:like to |love to )?(?:know|learn)"
+                     # a letter's courtesies ('Might I trouble you to tell me ...', 'May I ask whether ...')
+                     r"|(?:might|may) i (?:trouble you to tell me|trouble you for|ask you to tell me"
+                     r"|ask(?= whether| if))"
                      r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
                      r"(?:possibly |kindly |please )?(?:tell me|let me know|say)"
                      r"|i (?:am |' m |was )?(?:wondering|wonder) (?:if|whether) you (?:could|would|might|can) "
@@ -169,7 +172,8 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?(?! about)|please tell me|let me know"
                      # a worksheet's bare 'Tell the colour of ...'
                      r"|(?:please )?tell(?= the (?:color|type|kind|shape|category|class|speed|velocity|direction) )"
-                     r"|i (?:would |' d )be (?:most |very |really |so )?grateful (?:to know|if you could tell me)"
+                     r"|i (?:would |' d |should )be (?:most |very |really |so |much )?(?:grateful|obliged|glad) "
+                     r"(?:to know|to learn|to be told|if you could tell me|if you would tell me)"
                      r"|(?:[a-z]+ ){1,4}(?:want|wants|wanted|would like|' d like|need|needs) to know(?! is )"
                      r"|(?:[a-z]+ ){1,3}(?:is|are|was|were|' s) (?:asking|wondering)"
                      r"|(?:i |we )?need(?= the )|(?:customer|user|client|caller|reporter) asks(?= wh| if| how)"
@@ -224,6 +228,15 @@ def request_after_setting(words: list[str]) -> list[str]:
     sentence there, so that the scene is read as the question's context and the request as a request (asked, if
     it ends with a full stop)."""
     for k in range(2, len(words) - 2):
+        # (a condition said first, then the request for its consequence: 'had the plane been fast , i should like
+        # to know whether it would have hit the bike .' -> '... , would it have hit the bike ?')
+        if words[k] == "," and SUPPOSING & set(words[:k]) and "?" not in words[:k] and \
+                (m := REQUEST.match(" ".join(words[k + 1:]) + " ")):
+            rest = " ".join(words[k + 1:])[m.end():].split()
+            would = rest.index("would") if "would" in rest[1:6] else None
+            if rest[:1] in (["whether"], ["if"]) and would and len(rest) > would + 2:
+                asked = ["would", *rest[1:would], *rest[would + 1:]]
+                return words[:k + 1] + asked[:-1] + ["?" if asked[-1] in (".", "?") else asked[-1]]
         # (a scene set: a vehicle or the video named, and nothing asked or imagined in it)
         if words[k] not in (",", ";", ":", "-", ".") or "?" in words[:k] or \
                 not (OBJECT_WORDS | FILM_WORDS) & set(words[:k]) or SUPPOSING & set(words[:k]):
@@ -521,10 +534,19 @@ IDIOMS = phrase_table({
                            ("outta", "the", "gates"), ("outta", "the", "blocks"), ("when", "things", "kick", "off"),
                            ("as", "things", "kick", "off"), ("when", "it", "all", "kicks", "off"),
                            ("when", "everything", "kicks", "off"), ("from", "the", "off"), ("at", "the", "off"),
-                           ("from", "the", "jump"), ("off", "the", "jump"))},
+                           ("from", "the", "jump"), ("off", "the", "jump"), ("when", "it", "kicks", "off"),
+                           ("as", "it", "kicks", "off"), ("when", "it", "first", "kicks", "off"))},
+    # 'as soon as it starts , is ...': the video's start, its 'it' no vehicle (not 'when it starts moving')
+    **{(*when, "it", starts, ","): (*_START, ",") for when in (("when",), ("as",), ("once",), ("as", "soon", "as"))
+       for starts in ("starts", "begins", "started", "began")},
     # a script's 'top of the scene' and 'fade in' (its 'fade out' the end, which no question asks)
     **{(*a, "top", "of", "the", f): ("the", "start") for a in ((), ("the",)) for f in (
         "scene", "take", "shot", "clip", "video", "reel", "footage", "hour", "show")},
+    # 'should we expect the bus to hit ...' as the grammar's 'do you expect'
+    **{(aux, who, "expect"): ("do", "you", "expect") for aux in ("should", "would", "can", "could", "do", "might")
+       for who in ("we", "you", "one") if (aux, who) != ("do", "you")},
+    # a note's 'post-video:' is after the video
+    **{("post", *dash, film): ("after", "the", "video") for dash in ((), ("-",)) for film in ("video", "clip")},
     ("fade", "in"): ("the", "start"), ("fade", "out"): ("the", "end"), ("fade", "-", "in"): ("the", "start"),
     ("fade", "-", "out"): ("the", "end"),
     # the whole of the video is the video ('over the whole clip', 'the entire time')
@@ -1017,13 +1039,13 @@ IDIOMS = phrase_table({
                                                    ("ending", "hitting"))},
     **{("t", "-", bone): (hit,) for bone, hit in (("bone", "hit"), ("bones", "hits"), ("boned", "hit"),
                                                   ("boning", "hitting"))},
-    # 'does it end up hitting' is 'does it hit', said of the verbs of a collision
+    # 'does it end up hitting' is 'does it hit', said of the verbs of a collision (and 'getting into a wreck')
     **{(end, "up", gerund): (forms[k],) for k, end in enumerate(("end", "ends", "ended"))
        for gerund, forms in {"hitting": ("hit", "hits", "hit"), "colliding": ("collide", "collides", "collided"),
                              "crashing": ("crash", "crashes", "crashed"), "smashing": ("smash", "smashes", "smashed"),
                              "bumping": ("bump", "bumps", "bumped"), "running": ("run", "runs", "ran"),
                              "striking": ("strike", "strikes", "struck"), "slamming": ("slam", "slams", "slammed"),
-                             "ramming": ("ram", "rams", "rammed")}.items()},
+                             "ramming": ("ram", "rams", "rammed"), "getting": ("get", "gets", "got")}.items()},
     **{(adverb, verb): (verb, "slowly") for adverb in ("barely", "hardly", "scarcely")
        for verb in ("moving", "moves", "move", "moved")},
     **{(verb, *rest): (accelerate,) for verb, accelerate in (("hitting", "accelerating"), ("hits", "accelerates"),

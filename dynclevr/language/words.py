@@ -77,7 +77,7 @@ OTHER_VEHICLES = {"boat", "boats", "ship", "ships", "train", "trains", "tram", "
                   "carts", "blimp", "zeppelin", "spaceship", "ufo", "taxi", "ambulance", "limo", "limousine",
                   "locomotive", "locomotives", "glider", "gliders", "hovercraft"}
 
-NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said}
+NOUNS_SAID = {w for said in CATEGORY_SAID.values() for w in said if " " not in w}
 NAMING = OBJECT_WORDS | NOUNS_SAID   # the words of a vehicle's name
 
 
