@@ -4211,3 +4211,13 @@ def test_a_letter_s_courtesies_old_names_and_a_scenario_that_sets_the_scene():
     assert scenario[-3:] == ["unique", "get_frame", "query_moving_velocity"]
     assert "Counterfactual_static" in labelled
     assert_refused(parser, {"Counterfactual: the red car hits the bus. Is it fast then?": "imagines"})
+
+
+def test_a_partner_in_turn_a_collision_with_one_alone_and_a_still_that_goes_on_are_refused():
+    parser = QuestionParser.load()
+    # read as the first partner, whether it hits the bus, and whether it is static
+    assert_refused(parser, {"What colour is the vehicle that hits the red car last?": "in turn",
+                            "Does the red car hit only the bus?": "nothing else",
+                            "Is the red car still fast when it hits the bus?": "asks a speed"})
+    rest, = parser.parse_batch(["Is the red car still at the start?"])
+    assert rest[-1] == "is_static"

@@ -76,8 +76,11 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
                 "static, or slow or fast)")
+    # ('is it still fast when it hits the bus?': a 'still' that goes on, not one that stands)
+    rests = {w for k, w in enumerate(words) if w != "still" or not (
+        words[k + 1:k + 2] and words[k + 1] in SPEED_CLASS_WORDS - {"still"} | MOTION_WORDS | COMPARISONS)}
     if ops & REST_OPERATIONS and (SPEED_CLASS_WORDS - COMPARISONS - {"still"}).intersection(words) and \
-            not (REST_WORDS | NEGATIONS).intersection(words):
+            not (REST_WORDS | NEGATIONS).intersection(rests):
         return "the question asks a speed (slow or fast), but its nearest reading asks whether the vehicle is static"
     # 'what colour is it at the start?' was read as the colour of the static one
     if ops & REST_OPERATIONS and not (REST_WORDS | NEGATIONS | UNMOVED | RESTING).intersection(words):

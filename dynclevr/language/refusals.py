@@ -181,12 +181,21 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         or next((" ".join(said[k - 1:k + 1]) for k in range(2, len(said)) if said[k] == "first" and
                  asks_impact(said[k - 1:k]) and said[k + 1:k + 2] in ([], ["?"], ["."], [","]) and (
                      said[k - 2] in ("was", "were", "is", "are", "got", "gets", "get", "be", "been")
-                     or said[k - 1].startswith(("collid", "crash", "bump", "smash")))), None)
-    # ('what does the truck hit third?', 'which of the two was hit first?'; 'what does it hit first?' asks the
-    # first partner, as a partner's question does)
+                     or said[k - 1].startswith(("collid", "crash", "bump", "smash")))), None) \
+        or next((" ".join(said[k - 1:k + 1]) for k in range(2, len(said)) if said[k] in ORDINALS - {"next"}
+                 and said[k + 1:k + 2] in ([], ["?"], ["."], [","]) and asks_impact(said[max(k - 6, 0):k])), None)
+    # ('what does the truck hit third?', 'which of the two was hit first?', 'the vehicle that hits the car last';
+    # 'what does it hit first?' asks the first partner, as a partner's question does)
     if later:
         return (f"the question asks for one of several in turn ('{later}'), which no question here asks (a collision "
                 "partner's question asks the first)")
+    # 'does the red car hit only the bus?' (read as whether it hits the bus) asks that it hits nothing else
+    alone = next((" ".join(said[k:k + 3]) for k in range(1, len(said) - 2) if said[k] == "only" and (
+        asks_impact(said[k - 1:k]) and said[k + 1] in ("the", "a", "with", "into")
+        or asks_impact(said[k + 1:k + 2]) and said[k + 2] in ("the", "a", "with", "into"))), None)
+    if alone:
+        return (f"the question asks whether a vehicle hits one and nothing else ('{alone}'), which no question here "
+                "asks: ask whether it hits that one, or anything")
     relative = next((w for k, w in enumerate(said) if w in RELATIVE_MOTION | PASSING and
                      said[k + 1 + (said[k + 1:k + 2] == ["the"]):][:1] in ([v] for v in VEHICLE_SAID)), None) or \
         next((f"{a} {b}" for k, (a, b) in enumerate(zip(said, said[1:])) if a in ("cut", "cuts", "cutting")
