@@ -1385,14 +1385,16 @@ def test_shipped_weights_read_the_papers_and_peoples_wordings():
 
 def test_handwritten_questions_are_read_into_their_families_programs(tmp_path, monkeypatch):
     """The hand-written questions' gold programs come out of their family's template, well formed; the shipped
-    parser gets most of them (85.5% when the file was written)."""
+    parser gets most of them (85.5% when the file was written; every line is scored by eval-qparser and
+    docs/analysis/blind_questions.py, so the test reads every tenth, a few minutes less of CI)."""
     hand = handwritten()
     assert len(hand) >= 70 and all(well_formed(program.split()) for _, program in hand)
     assert ("Does the gray dirtbike collide with the brown truck?",
             "Events Objects filter_attributes[gray] filter_attributes[dirtbike] unique filter_collision "
             "Objects filter_attributes[brown] filter_attributes[truck] unique filter_collision exist") in hand
-    got = QuestionParser.load().parse_batch([t for t, _ in hand])
-    assert sum(g == p.split() for g, (_, p) in zip(got, hand)) >= 0.8 * len(hand)
+    sample = hand[::10]
+    got = QuestionParser.load().parse_batch([t for t, _ in sample])
+    assert sum(g == p.split() for g, (_, p) in zip(got, sample)) >= 0.9 * len(sample)
     bad = tmp_path / "hand.txt"
     bad.write_text("# comment\ncollide_sideways | red sedan |  |  | Does the red sedan slide?\n")
     monkeypatch.setattr(qeval, "HANDWRITTEN_FILE", bad)
@@ -2268,15 +2270,17 @@ def test_a_reading_must_read_what_is_imagined_and_what_floats():
     parser = QuestionParser.load()
     # each was read as a question about the video as it is (the final measure's wrong readings)
     assert_refused(parser, {"brown motorbike starting slow instead, it hits the gray car or not?": "instead",
-                            "cf: gray one starts slow instead -> does gray collide w/ the pickup?": "'cf'",
                             "imagine the chopper begins fast. does it collide with the bus then": "imagine",
                             "quick check, plane floating at the beginning or not?": "floating",
                             "How fast is the school bus moving in the very last frame?": "end"})
-    floating, later, wagon = parser.parse_batch([
+    floating, later, wagon, noted = parser.parse_batch([
         "When the clip begins, is the private jet floating rather than sitting on the ground?",
         "given the clip is cut off mid-way, do the fighter jet and the sedan end up colliding afterwards?",
-        "Suppose the grey estate wagon had stayed parked from the start - would it have hit the yellow sedan?"])
+        "Suppose the grey estate wagon had stayed parked from the start - would it have hit the yellow sedan?",
+        # (a note's 'cf:' now opens its condition as 'counterfactual:' does; it was refused, as read in the video)
+        "cf: gray one starts slow instead -> does gray collide w/ the pickup?"])
     assert floating[-1] == "is_floating" and later[0] == "futureEvents"
+    assert "Counterfactual_moving_slow" in noted and noted[-4] == "filter_attributes[truck]"
     assert wagon[:3] == ["Objects", "filter_attributes[gray]", "filter_attributes[wagon]"]
     assert "Counterfactual_static" in wagon
 
@@ -4218,6 +4222,11 @@ def test_a_partner_in_turn_a_collision_with_one_alone_and_a_still_that_goes_on_a
     # read as the first partner, whether it hits the bus, and whether it is static
     assert_refused(parser, {"What colour is the vehicle that hits the red car last?": "in turn",
                             "Does the red car hit only the bus?": "nothing else",
-                            "Is the red car still fast when it hits the bus?": "asks a speed"})
-    rest, = parser.parse_batch(["Is the red car still at the start?"])
-    assert rest[-1] == "is_static"
+                            "Is the red car still fast when it hits the bus?": "asks a speed",
+                            # ... as standing still, and as after the video
+                            "If the red car had kept moving, would it have hit the bus?": "moving",
+                            "Would the red car have hit the bus anyway?": "would ... have"})
+    rest, kept, later = parser.parse_batch(["Is the red car still at the start?",
+                                            "If the red car had kept still, would it have hit the bus?",
+                                            "Had the video continued, would the red car have hit the bus?"])
+    assert rest[-1] == "is_static" and "Counterfactual_static" in kept and later[0] == "futureEvents"

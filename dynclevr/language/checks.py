@@ -54,6 +54,7 @@ def operation(token: str) -> str:
 # moving?', 'is it not accelerating?', 'does it miss the bus?') as its nearest phrase, the unreversed one, and its
 # answer would be the opposite. So a reading is kept only where the question's words say what its program asks.
 REST_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
+GOING_ON = {"still", "kept", "keeps", "keep", "stay", "stays", "stayed"}   # before a motion, it goes on
 # what a negation may deny in the grammar's own questions: motion ('not moving': rest) and a fall ('had never come
 # down': floating); 'X or not' offers both answers
 DENIABLE = MOTION_WORDS | {"fall", "falls", "fell", "fallen", "falling", "come", "came", "drop", "dropped", "land",
@@ -73,12 +74,12 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     """Why the program asks the opposite of the question ('' when it does not): motion asked as rest, a negation
     the grammar never says, or a word that reverses the program's predicate ('miss', 'braking', 'grounded')."""
     ops = {operation(t) for t in abstract}
-    if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(words):
+    # the words that say rest, but for one that goes on ('is it still fast ...?', 'had it kept moving ...')
+    rests = {w for k, w in enumerate(words) if w not in GOING_ON or not (
+        words[k + 1:k + 2] and words[k + 1] in SPEED_CLASS_WORDS - {"still"} | MOTION_WORDS | COMPARISONS)}
+    if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(rests):
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
                 "static, or slow or fast)")
-    # ('is it still fast when it hits the bus?': a 'still' that goes on, not one that stands)
-    rests = {w for k, w in enumerate(words) if w != "still" or not (
-        words[k + 1:k + 2] and words[k + 1] in SPEED_CLASS_WORDS - {"still"} | MOTION_WORDS | COMPARISONS)}
     if ops & REST_OPERATIONS and (SPEED_CLASS_WORDS - COMPARISONS - {"still"}).intersection(words) and \
             not (REST_WORDS | NEGATIONS).intersection(rests):
         return "the question asks a speed (slow or fast), but its nearest reading asks whether the vehicle is static"
@@ -99,7 +100,7 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
         # moving , slow or fast ?' offers it)
         unrested = after[:1] and after[0] in MOTION_WORDS and not ops & REST_OPERATIONS and \
             "or" not in words[k + 2:k + 7] and not (after[1:2] and after[1] in SPEED_CLASS_WORDS | COMPARISONS | {
-                ",", "more", "less", "as", "so", "too", "very", "really", "that"})
+                ",", "?", "more", "less", "as", "so", "too", "very", "really", "that"})
         if not after or after[0] not in DENIABLE and after[:2] != ["in", "motion"] or asked or unrested:
             said = " ".join(words[k:k + 3])
             return (f"the question is negated ('{said}'), which no question here asks: ask it without the "
@@ -585,6 +586,13 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
     told = next((w for w in [*words, *said_first] if w in REWRITING), None)
     if "futureEvents" in program:
         said = told or _state_from_start(words) or _state_from_start(list(said_first))
+        # ... or a 'would have' that says no condition and no time after the video ('Would the red car have hit the
+        # bus anyway?' was read as after the video)
+        had = next(("would ... have" for k, w in enumerate(words) if w == "would" and "have" in words[k + 1:k + 6]),
+                   None)
+        if said is None and had and not (FUTURE_CUES - {"would"} | CONDITION_MARKERS | {"unless", "were"}
+                                          ).intersection([*words, *said_first]):
+            said = had
         return "" if said is None else (f"the question imagines the video otherwise ('{said}'), but its nearest "
                                         "reading asks what happens after it: ask as 'if X had been ... from the "
                                         "start, would it hit Y?'")
