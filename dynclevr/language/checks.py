@@ -54,7 +54,7 @@ def operation(token: str) -> str:
 # moving?', 'is it not accelerating?', 'does it miss the bus?') as its nearest phrase, the unreversed one, and its
 # answer would be the opposite. So a reading is kept only where the question's words say what its program asks.
 REST_OPERATIONS = {"is_static", "filter_static", "Counterfactual_static"}
-GOING_ON = {"still", "kept", "keeps", "keep", "stay", "stays", "stayed"}   # before a motion, it goes on
+STILL_GOING = {"still", "kept", "keeps", "keep", "stay", "stays", "stayed"}   # before a motion, it goes on
 # what a negation may deny in the grammar's own questions: motion ('not moving': rest) and a fall ('had never come
 # down': floating); 'X or not' offers both answers
 DENIABLE = MOTION_WORDS | {"fall", "falls", "fell", "fallen", "falling", "come", "came", "drop", "dropped", "land",
@@ -75,7 +75,7 @@ def reversed_reading(words: list[str], abstract: list[str]) -> str:
     the grammar never says, or a word that reverses the program's predicate ('miss', 'braking', 'grounded')."""
     ops = {operation(t) for t in abstract}
     # the words that say rest, but for one that goes on ('is it still fast ...?', 'had it kept moving ...')
-    rests = {w for k, w in enumerate(words) if w not in GOING_ON or not (
+    rests = {w for k, w in enumerate(words) if w not in STILL_GOING or not (
         words[k + 1:k + 2] and words[k + 1] in SPEED_CLASS_WORDS - {"still"} | MOTION_WORDS | COMPARISONS)}
     if ops & REST_OPERATIONS and MOTION_WORDS.intersection(words) and not (REST_WORDS | NEGATIONS).intersection(rests):
         return ("the question asks whether an object is moving, which no question here asks (ask whether it is "
