@@ -4018,9 +4018,11 @@ def test_paraphrases_indian_english_a_chinese_learner_s_if_let_and_the_property_
     assert starting[-2:] == ["start", "is_moving_velocity[fast]"]
     assert "Counterfactual_accelerating" in let
     assert colour == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
-    # 'its' compared with the vehicle said after 'than' was read as that vehicle: refused
-    assert_refused(parser, {"When yellow bus hit purple articulated bus, its speed lower than purple articulated bus "
-                            "or not?": "compares a vehicle with"})
+    # 'its' compared with the vehicle said after 'than' was read as that vehicle: the vehicle after 'than' is the
+    # one compared with
+    its, = parser.parse_batch(["When yellow bus hit purple articulated bus, its speed lower than purple articulated "
+                               "bus or not?"])
+    assert its[1:3] == ["filter_attributes[yellow]", "filter_attributes[bus]"] and its[-1] == "slower_velocity"
 
 
 def test_paraphrases_the_shown_frames_are_the_video_and_a_nigerian_jam():
@@ -4230,3 +4232,58 @@ def test_a_partner_in_turn_a_collision_with_one_alone_and_a_still_that_goes_on_a
                                             "If the red car had kept still, would it have hit the bus?",
                                             "Had the video continued, would the red car have hit the bus?"])
     assert rest[-1] == "is_static" and "Counterfactual_static" in kept and later[0] == "futureEvents"
+
+
+def test_a_comparison_read_turned_round_is_read_with_the_vehicle_after_than_as_the_one_compared_with():
+    parser = QuestionParser.load()
+    guy, fronted, started = parser.parse_batch([
+        "When the gray bus hits the blue SUV, is this guy movin' faster than the SUV?",
+        "Driving quicker than the brown bendy bus, is it, the cyan minivan, right at the moment they collide?",
+        "When the video starts, quicker than the yellow double-decker it's going, the blue SUV, is it?"])
+    # each was read as whether the vehicle after 'than' is the faster
+    assert guy[1:3] == ["filter_attributes[gray]", "filter_attributes[bus]"] and guy[-1] == "faster_velocity"
+    assert fronted[1:3] == ["filter_attributes[cyan]", "filter_attributes[minivan]"]
+    assert started[1:3] == ["filter_attributes[blue]", "filter_attributes[suv]"] and started[-2] == "start"
+    it, = parser.parse_batch(["When the red car hits the blue bus, is it faster than the car?"])
+    assert it[1:3] == ["filter_attributes[blue]", "filter_attributes[bus]"]
+
+
+def test_scots_taglish_and_jamaican_words_similes_and_echoed_tags():
+    parser = QuestionParser.load()
+    scots, taglish, jamaican, simile, tractor, echoed, pressed = parser.parse_batch([
+        "If the yellow saloon hadnae been movin at the very start, wid it hae run intae the cyan mountain bike?",
+        "At the start po, is yung yellow fighter slower than the cyan scooter?",
+        "Di SUV did a go slow when it collide wid di bicycle?",
+        "In the opening frames, is the suv still as a sleeping stone, slow as a wandering cloud, or fast as a falling "
+        "star?",
+        "Suppose the car had been crawlin' along tractor-slow from the start, would it have collided with the yellow "
+        "scooter?",
+        "The yellow one and the cyan motorbike, do they crash into each other, do they?",
+        "This chopper - does it get into a collision, or what?"])
+    assert "Counterfactual_static" in scots and scots[-4:-2] == ["filter_attributes[mountain_bike]", "unique"]
+    assert taglish[-2:] == ["start", "slower_velocity"] and taglish[2] == "filter_attributes[fighter]"
+    # (Jamaican 'wid' is 'with', a Scot's 'would')
+    assert jamaican[-2:] == ["get_frame", "is_moving_velocity[slow]"] and "filter_attributes[bicycle]" in jamaican
+    assert simile[-2:] == ["start", "query_moving_velocity"]
+    assert "Counterfactual_moving_slow" in tractor                  # (a tractor: no vehicle here)
+    assert echoed[-1] == "exist" and echoed[2] == "filter_attributes[yellow]"
+    assert pressed[-1] == "exist" and pressed[-4] == "filter_attributes[chopper]"
+    # a time after a speed is no simile, nor a dash before the choices, nor 'like mad' (fast)
+    footage, choices, mad = parser.parse_batch([
+        "One vehicle is crawling along slowly as the footage begins. What type of vehicle is that?",
+        "At what speed does the yellow bicycle enter the frame for the first time - static, slow or fast?",
+        "Say the cyan city bike had started out going like mad, would it have knocked into the yellow sedan?"])
+    assert footage[-3:] == ["filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
+    assert choices[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert "Counterfactual_moving_fast" in mad
+
+
+def test_a_direction_read_where_none_is_said_is_refused():
+    parser = QuestionParser.load()
+    # read as which way it moves: 'right' there is a time's
+    assert_refused(parser, {"What is the motion of the green scooter right at the start?": "no direction"})
+    back, state = parser.parse_batch(["Back at the start, which way is the red car moving?",
+                                      "In what state of motion, pray, does the green scooter find itself right at the "
+                                      "start?"])
+    assert back[-1] == "query_moving_direction"
+    assert state[-2:] == ["start", "query_moving_velocity"]   # (read as a direction, 'pray' unknown)

@@ -31,7 +31,7 @@ from __future__ import annotations
 from difflib import SequenceMatcher
 
 from dynclevr.language.context import _run_on_question, _sentence_spans
-from dynclevr.language.references import OBJECT_WORDS, coordinated, mentions, placeholders
+from dynclevr.language.references import OBJECT_WORDS, coordinated, generalises, mentions, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
@@ -204,6 +204,8 @@ def _direction_said(words: list[str]) -> str | None:
             or words[k - 2:k] == ["is", "it"] and words[k + 1:k + 2] == ["that"]
             or words[k - 1:k] == [","] and words[k + 1:k + 3] in ([",", "and"], [",", "so"], [",", "now"])
             and words[k - 2] not in DIRECTION_WORDS)
+        # ... nor a yarn's 'back at the outset', 'back when it started' (a time gone by)
+        as_time = as_time or w == "back" and k == 0 and words[1:2] in (["at"], ["when"], ["in"], ["then"])
         if w in DIRECTION_WORDS and not as_time:
             return w
         if w in ("up", "down") and words[k - 1:k] and words[k - 1] in HEIGHT_MOTIONS and \
@@ -235,6 +237,23 @@ def direction_unasked(words: list[str], abstract: list[str]) -> str:
         return ""
     return (f"the question turns on '{said}', a direction or a place, which no question here asks but 'which way "
             "is it moving' (at the start or at a collision)")
+
+
+# Words that ask which way without naming a direction ('where is it headed', 'what bearing', 'whither')
+DIRECTION_ASKING = {"direction", "directions", "way", "ways", "heading", "headed", "head", "heads", "where", "whither",
+                    "toward", "towards", "bearing", "course", "orientation", "facing", "pointing", "pointed", "aimed",
+                    "path", "trajectory", "route", "compass", "side", "sideways", "forth"}
+
+
+def direction_unsaid(said: list[str], read: list[str], program: list[str]) -> str:
+    """Why a reading of a direction is not the question's ('' when it is): the question says no direction and no
+    word that asks one ('In what state of motion does the green scooter find itself right at the start?' was read
+    as which way it moves: 'right' there is a time's)."""
+    if program[-1] != "query_moving_direction" or DIRECTION_ASKING.intersection(said + read) or \
+            _direction_said(said) or _direction_said(read):
+        return ""
+    return ("the question says no direction, but its nearest reading asks which way a vehicle moves: ask 'which way "
+            "is it moving' (or how fast)")
 
 
 # A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion
@@ -394,6 +413,27 @@ def pointed_back(words: list[str], program: list[str]) -> str:
             ) if program and said else ""
 
 
+def _compared(program: list[str]) -> list[tuple[str, ...]]:
+    """A speed comparison's two vehicles in the order compared, each as the filter tokens that name it."""
+    refs, run = [], []
+    for t in program:
+        if t.startswith("filter_attributes["):
+            run.append(t)
+        elif t == "unique" and run:
+            if tuple(run) not in refs:
+                refs.append(tuple(run))
+            run = []
+        elif t != "Objects":
+            run = []
+    return refs
+
+
+def _said_after_than(words: list[str]) -> tuple[str, ...] | None:
+    """The values of the vehicle said just after 'than' ('than the brown bendy bus' -> ('brown',))."""
+    k = words.index("than")
+    return next((ref for i, _, ref in mentions(words) if k < i <= k + 2), None)
+
+
 def than_turned(words: list[str], program: list[str]) -> str:
     """Why a comparison's reading is not the question's ('' when it is): the vehicle said after 'than' is read as the
     one compared ('When yellow bus hit purple articulated bus, its speed lower than purple articulated bus or not?'
@@ -401,12 +441,33 @@ def than_turned(words: list[str], program: list[str]) -> str:
     said, before any rule read a pronoun as a vehicle."""
     if not program or program[-1] not in SPEED_COMPARISONS or "than" not in words:
         return ""
-    k = words.index("than")
-    after = next((ref for i, _, ref in mentions(words) if k < i <= k + 2), None)
-    first = tuple(t[len("filter_attributes["):-1] for t in program[1:program.index("unique")]
-                  if t.startswith("filter_attributes[")) if "unique" in program else None
+    after, refs = _said_after_than(words), _compared(program)
+    values = [tuple(t[len("filter_attributes["):-1] for t in ref) for ref in refs]
+    turned = after is not None and bool(values) and generalises(after, values[0]) and not any(
+        generalises(after, v) for v in values[1:])
     return ("the question compares a vehicle with the one its reading compares: ask whether X is faster (or slower) "
-            "than Y, naming X") if after is not None and after == first else ""
+            "than Y, naming X") if turned else ""
+
+
+def than_as_said(words: list[str], program: list[str] | None) -> list[str] | None:
+    """A comparison of two vehicles read turned round (`than_turned`) as the question says it: the vehicle after
+    'than' is the one compared with ('When the gray bus hits the blue SUV, is this guy faster than the SUV?', Welsh
+    English's 'Quicker than the yellow double-decker it's going, the blue SUV, is it?'). None where it is not so
+    read, or where more than two vehicles are named."""
+    if not program or not than_turned(words, program) or len(refs := _compared(program)) != 2:
+        return None
+    swap = {refs[0]: refs[1], refs[1]: refs[0]}
+    out, i = [], 0
+    while i < len(program):
+        ref = next((r for r in refs if tuple(program[i:i + len(r)]) == r and (i + len(r) == len(program) or not
+                    program[i + len(r)].startswith("filter_attributes["))), None)
+        if ref is None:
+            out.append(program[i])
+            i += 1
+        else:
+            out.extend(swap[ref])
+            i += len(ref)
+    return out
 
 
 SLOW_SAID = {"slow", "slowly", "low", "slower", "sluggish", "sluggishly", "crawl", "crawling", "leisurely", "gently"}

@@ -59,15 +59,14 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, correc
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_unread, compared_unsaid, comparison_imagined,
-                                      comparison_unread,
-                                      comparison_unsaid, condition_subject_first, condition_unsaid, cut_said,
-                                      direction_unasked, end_unread, floating_unread, floating_unsaid, form_unasked,
-                                      form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
-                                      motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
-                                      pointed_back, property_unread, reversed_reading, size_unread,
-                                      speed_class_turned, speed_unsaid,
-                                      start_speed_at_collision, still_continuing, than_turned, time_symbol_said,
-                                      time_unasked, uncompared, visibility_unread, what_happens)
+                                      comparison_unread, comparison_unsaid, condition_subject_first, condition_unsaid,
+                                      cut_said, direction_unasked, direction_unsaid, end_unread, floating_unread,
+                                      floating_unsaid, form_unasked, form_unmatched, future_unread, imagining_unread,
+                                      impact_unsaid, motion_foretold, motion_unfiltered, motion_unread, named_attribute,
+                                      operation, own_attribute_asked, pointed_back, property_unread, reversed_reading,
+                                      size_unread, speed_class_turned, speed_unsaid, start_speed_at_collision,
+                                      still_continuing, than_as_said, than_turned, time_symbol_said, time_unasked,
+                                      uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
@@ -100,7 +99,7 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
                                         imperative_as_stated, inverted_as_asked, let_dropped,
                                         negative_question_as_asked, noun_phrase_as_question, opposed_dropped,
-                                        request_after_setting, request_as_imperative, restated_dropped,
+                                        request_after_setting, request_as_imperative, restated_dropped, similes_dropped,
                                         speed_as_subject, struck_as_active, tail_as_question, trajectory_as_collision,
                                         type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
@@ -266,12 +265,13 @@ class QuestionParser:
         # a collision asked in the present after the video is said to stop is one after the cut (the stop's sentence
         # is read as context, and 'does the jet hit the bus?' then read within the video)
         chosen = [_cut_as_future(c, t, said) for c, t, said in zip(chosen, texts, said_words)]
+        chosen = [_than_as_said(c, t) for c, t in zip(chosen, texts)]
         # checked against the words as said: the lexicon reads some as others ('away' as 'off', 'turn' as 'turned');
         # a collision against the words as read, typos fixed ('colide'), where no word it does not know may be an
         # impact's misspelt (the decoder reads a collision in 'collied' from the rest of the question)
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
-            or direction_unasked(said, c.program)
+            or direction_unasked(said, c.program) or direction_unsaid(said, read, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
@@ -398,7 +398,9 @@ class QuestionParser:
         words, opened = interjections_dropped(words)
         words, inverted = inverted_as_asked(words)
         opened += inverted
+        words, similes = similes_dropped(words)
         words, idioms = idioms_as_said(words)
+        idioms = similes + idioms
         words, meant = restatements_read(words)
         idioms += meant
         words, contest = contest_as_compared(words)
@@ -747,6 +749,14 @@ def _cut_as_future(parse: Parse, text: str, said: list[str]) -> Parse:
         return parse
     return replace(parse, program=["futureEvents", *program[1:]],
                    read_as=(*parse.read_as, (cut, "after the video ends")))
+
+
+def _than_as_said(parse: Parse, text: str) -> Parse:
+    """A comparison read turned round, the vehicle said after 'than' taken for the one compared: the two swapped
+    (`checks.than_as_said`)."""
+    program = than_as_said(tokenize(text), parse.program) if parse.program else None
+    return parse if program is None else replace(
+        parse, program=program, read_as=(*parse.read_as, ("than", "compared with the vehicle after it")))
 
 
 def _chosen(parses: list[Parse], time: str | None, named: bool = False) -> Parse:

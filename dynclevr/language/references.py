@@ -36,7 +36,7 @@ EVERYDAY_NAMES = {"double decker": "double bus", "double decker bus": "double bu
                   "mtb": "mountain bike", "pickup": "truck", "pick - up": "truck", "pick - up truck": "truck",
                   # a vehicle's everyday noun (as synonyms.txt reads it), here so that the context of a question and
                   # what follows it are read for it ('The red airliner ... is the plane going slower?')
-                  "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car",
+                  "plane": "aeroplane", "aircraft": "aeroplane", "automobile": "car", "motorcar": "car", "motor car": "car",
                   "lorry": "truck", "van": "minivan", "pushbike": "bicycle", "pushie": "bicycle",
                   "jetliner": "airliner", "warplane": "fighter", "war plane": "fighter",
                   # as plane spotters name them

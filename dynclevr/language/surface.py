@@ -516,18 +516,27 @@ CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "
                 "wah": "what", "wat": "what", "weh": "that", "wey": "that", "inna": "in", "nuh": "not", "mo": "more",
                 "afta": "after", "ting": "thing", "anyting": "anything", "someting": "something", "wit": "with",
                 "woulda": "would", "abi": "or", "bumbye": "later", "langgar": "collide", "lick": "hit",
-                "demself": "each other", "e": "it", "bin": "had", "dey": "is"}
+                "demself": "each other", "e": "it", "bin": "had", "dey": "is",
+                # Jamaican's 'wid' is 'with' (a Scot's 'would', synonyms.txt), 'neva', 'anodda', 'seh'
+                "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me"}
 CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
-                  "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg"}
+                  "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva", "anodda",
+                  "seh"}
 CREOLE_PHRASES = phrase_table([
     (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
     (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
     *(((f, s), ("at", "the", s)) for f in ("for", "a") for s in ("beginning", "start")),
     (("for", "air"), ("in", "the", "air")), (("for", "di", "video"), ("in", "the", "video")),
     (("for", "middle"), ("partway",)), (("e", "for"), ("it", "would")), (("for", "still"), ("would", "still")),
+    (("e", "for", "don"), ("it", "would", "have")), (("for", "don"), ("would", "have")), (("e", "don"), ("it", "has")),
     *(((a, "pass"), (b, "than")) for a, b in (("slow", "slower"), ("fast", "faster"))),
     *((("a", v), ("is", v + "ing" if v[-1] != "e" else v[:-1] + "ing")) for v in (
-        "go", "move", "head", "hover", "speed", "float", "drive")),
+        "go", "move", "head", "hover", "speed", "float", "drive", "zoom", "race", "travel", "cruise", "fly")),
+    # 'smash inna di truck', 'bounce inna' (crash into), 'same time it collide' (when), 'tell mi nuh' (a plea)
+    *(((v, "inna"), (h, "into")) for v, h in (("smash", "smash"), ("crash", "crash"), ("bounce", "crash"),
+                                              ("run", "run"), ("slam", "slam"), ("bump", "bump"), ("lick", "hit"),
+                                              ("drive", "drive"))),
+    (("same", "time"), ("when",)), (("tell", "mi", "nuh"), ("tell", "me")),
     (("one", "place"), ("still",)), (("mo", "fast"), ("faster",)), (("mo", "slow"), ("slower",)),
     (("beginning", "time"), ("at", "the", "beginning")), (("kind", "a"), ("kind", "of"))])
 
@@ -567,6 +576,7 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 # A bilingual speaker's other language between English words (French, German, Portuguese, Mandarin in pinyin,
 # Arabizi): its words of time, joining and comparing as English says them, its tags and fillers dropped; read only
 # in a question that has one of its own words (`SWITCH_MARKERS`), so English 'also', 'ma' or 'que' stay as they are
+TAGALOG_PARTICLES = ("po", "ba", "lang", "naman", "nga", "pala", "talaga", "diba", "kasi", "sige")
 SWITCH_PHRASES = phrase_table([
     *(((*p,), ("at", "the", "start")) for p in (
         ("au", "debut"), ("au", "tout", "debut"), ("am", "anfang"), ("no", "comeco"), ("zai", "kaishi", "de", "shihou"),
@@ -599,13 +609,16 @@ SWITCH_PHRASES = phrase_table([
     *(((*p,), ("at", "the", "end")) for p in (("zai", "zuihou"), ("zuihou",), ("a", "la", "fin"), ("am", "ende"),
                                               ("no", "final"))),
     *(((*p,), ("in", "the", "middle")) for p in (("zai", "zhongjian"), ("au", "milieu"), ("in", "der", "mitte"),
-                                                 ("no", "meio")))])
+                                                 ("no", "meio"))),
+    # Taglish: 'yung' is 'the', its particles of politeness and emphasis say nothing ('At the start po, is yung yellow
+    # fighter slower than the cyan scooter?', 'Sige, do ...', 'Ano, if ...')
+    (("yung",), ("the",)), *(((w,), ()) for w in TAGALOG_PARTICLES), (("sige", ","), ()), (("ano", ","), ())])
 SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
                   "est", "quand", "quando", "wenn", "ist", "tava", "etait", "estava", "haishi", "ruguo", "zhuang",
                   "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual",
                   "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio",
                   "cuando", "chocar", "chocan", "chocaron", "choco", "chocado", "choca", "chocaria", "inicio",
-                  "principio"}
+                  "principio", "yung", *TAGALOG_PARTICLES}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

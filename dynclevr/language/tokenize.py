@@ -13,7 +13,7 @@ SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane":
              "vid": "video", "spd": "speed", "dir": "direction", "@": "at",   # and a note's ('spd @ start')
              "vel": "velocity", "mtn": "mountain",
              "wat": "what", "wut": "what", "wht": "what", "rly": "really", "secs": "seconds",
-             "b4": "before", "smth": "something", "sth": "something", "bc": "because"}   # and a text's
+             "b4": "before", "r": "are", "smth": "something", "sth": "something", "bc": "because"}   # and a text's
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 # Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
@@ -36,8 +36,10 @@ _GLOSS = re.compile(r"\b([ie])\.\s?([eg])\.?(?=[\s,:)]|$)")
 _LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
 # 'it'd been' is 'it had been' ('it'd had' and "I'd like" the rules read as said)
 _HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
-# a drawl's 'would it've hit' is 'would it have hit'
-_IT_HAVE = re.compile(r"\b(it|they)'ve\b")
+# a drawl's 'would it've hit' is 'would it have hit', and 'the bit we've seen' 'we have'
+_IT_HAVE = re.compile(r"\b(it|they|we|you|i)'ve\b")
+# 'faster an' faster', 'the car an' the bus'
+_AN = re.compile(r"\ban'(?=\s|$)")
 # 'the plane that's hovering' is 'that is' (a relative clause's, as the grammar says it)
 _THAT_IS = re.compile(r"\b(that|which|who)'s(?= (?:[a-z]+ing|still|parked|static|stationary|fast|slow|moving)\b)")
 
@@ -69,7 +71,7 @@ def tokenize(text: str) -> list[str]:
     text = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
     text = _AINT.sub(lambda m: "never" if m.group(1) else "is not", text)
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
-    text = _DROPPED_G.sub(r"\1g", text)
+    text = _DROPPED_G.sub(r"\1g", _AN.sub("and", text))
     text = _THAT_IS.sub(r"\1 is", _HAD.sub(r"\1 had", _IT_HAVE.sub(r"\1 have", _LEAD.sub("", text))))
     text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
     text = _MENTION.sub(" ", text)

@@ -386,6 +386,10 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
     body = words[:len(words) - len(end)]
     if body[-2:] == [",", "or"]:   # 'is it slower than the bus , or ?' (a learner's tag)
         return body[:-2] + ["?"], again + ((", or", "?"),)
+    # 'does it get into a collision , or what ?' (a question asked, then pressed)
+    if body[-3:] == [",", "or", "what"] and any(w in YES_NO_OPENERS and (k == 0 or body[k - 1] == ",")
+                                                 for k, w in enumerate(body[:-3])):
+        return body[:-3] + ["?"], again + ((", or what", "?"),)
     negative = [[w, "not", p] for w in sorted(YES_NO_OPENERS) for p in sorted(TAG_PRONOUNS)]
     for tag in negative + list(AGREEING_TAGS):
         n = len(tag) + 1
@@ -398,6 +402,13 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
         if not any(w in NEGATIONS and not (w == "not" and statement[k + 1:k + 2] and statement[k + 1] in MOTION_WORDS)
                    for k, w in enumerate(statement)):
             return statement + ["?"], again + ((" ".join(body[-n:]), "?"),)
+    # a question asked, then its auxiliary echoed as a tag ('do they crash into each other , do they ?', Welsh and
+    # Irish English's 'does it hit the bus , does it ?')
+    # (asked first, or after a vehicle said first: not after a condition, 'If ..., would it the bus hit, would it?')
+    if body[-3:-2] == [","] and body[-2] in YES_NO_OPENERS and body[-1] in TAG_PRONOUNS and any(
+            w in YES_NO_OPENERS and (k == 0 or body[k - 1] == "," and body[0] in ("the", "that", "this"))
+            for k, w in enumerate(body[:-3])):
+        return body[:-3] + ["?"], again + ((" ".join(body[-3:]), "?"),)
     # a tag without its comma ('is it going slow or nah', 'will it bang into something later or no': no choice
     # offered)
     if body[-2:] in (["or", "nah"], ["or", "nope"], ["or", "naw"], ["or", "no"]):
@@ -564,6 +575,37 @@ IDIOMS = phrase_table({
     # the video's end said as what someone did to it ('finna hit something after where they stopped the video?')
     **{(*a, "they", v, "the", f): ("after", "the", "video", "ends") for a in (("after", "where"), ("after",), ("past",
        "where")) for v in ("stopped", "cut", "paused", "ended") for f in ("video", "clip", "footage")},
+    # British and American similes of speed said whole ('going like the clappers', 'hell for leather')
+    **{p: ("fast",) for p in (("like", "the", "clappers"), ("like", "greased", "lightning"), ("like", "stink"),
+                              ("hell", "for", "leather"), ("at", "a", "rate", "of", "knots"), ("like", "a", "shot"))},
+    # more and more speed is speeding up ('getting faster and faster', 'going quicker an' quicker')
+    **{(*v, f, "and", f): (a,) for f in ("faster", "quicker", "speedier") for v, a in (
+        (("getting",), "accelerating"), (("going",), "accelerating"), (("moving",), "accelerating"),
+        (("gets",), "accelerates"), (("got",), "accelerated"), (("get",), "accelerate"), ((), "accelerating"))},
+    # a Nigerian's greeting before the question ('How far, is the red bus ...'), and the frames that are left (the
+    # rest of the video: 'In whatever frames are left, is the truck gonna ...')
+    **{("how", "far", ",", w): (w,) for w in ("is", "was", "are", "were", "do", "does", "did", "will", "would", "which",
+                                               "what", "when", "if", "initially", "at", "in", "right", "suppose")},
+    **{(p, *the, "frames", *that, "are", "left"): ("after", "the", "video", "ends") for p in ("in", "during", "over")
+       for the in (("the",), ("whatever",), ("what", "ever")) for that in ((), ("that",), ("which",))},
+    # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
+    ("pray", "tell", ","): (), ("pray", "tell"): (), **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (
+        ("find", "get"), ("finds", "gets"), ("found", "got"))}, ("party", "to"): ("involved", "in"),
+    **{(k, "aloft"): ("floating",) for k in ("keeping", "staying", "remaining", "holding")},
+    **{("butt", h): ("collide",) for h in ("heads", "head")}, ("butted", "heads"): ("collided",),
+    ("butting", "heads"): ("colliding",),
+    # the part seen is the video ('efter the bit we've seen', 'after this part'), a streamer's 'cranking up its
+    # speed', New York's 'this guy' of a vehicle ('is this guy movin' faster than the SUV?'; not 'the guy driving it')
+    **{("after", d, part, *that, who, "have", *seen): ("after", "the", "video", "ends") for d in ("the", "this")
+       for part in ("bit", "part", "moment", "stretch") for that in ((), ("that",)) for who in ("we", "you")
+       for seen in (("seen",), ("watched",), ("been", "shown"))},
+    **{("after", "this", part): ("after", "the", "video", "ends") for part in ("bit", "part")},
+    **{(d, "guy"): (d, "one") for d in ("this", "that")},
+    **{(c, "up", p, "speed"): ("accelerating",) for c in ("cranking", "ramping", "winding", "revving")
+       for p in ("its", "the", "her", "his")},
+    # a Scot's 'no' of a motion ('the one that's no movin at aw')
+    **{(be, "no", v): (be, "not", v) for be in ("is", "s", "was") for v in (
+        "moving", "going", "driving", "flying", "floating", "speeding", "accelerating", "hovering")},
     **{p: ("fast",) for p in (("flat", "out"), ("at", "full", "tilt"), ("at", "full", "throttle"), ("at", "a", "clip"),
                               ("at", "a", "good", "clip"), ("at", "a", "fair", "clip"), ("at", "quite", "a", "clip"),
                               ("like", "a", "rocket"), ("like", "the", "wind"),
@@ -671,7 +713,7 @@ IDIOMS = phrase_table({
     **{(verb + ending, "along"): (moving, "fast") for verb in ("tear", "belt", "bomb", "barrel", "bowl", "motor",
                                                                  "pelt", "streak", "rocket", "haul", "scream", "zoom",
                                                                  "whizz", "whiz", "race")
-       for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"))},
+       for ending, moving in (("ing", "moving"), ("s", "moves"), ("ed", "moved"), ("in", "moving"))},
     ("hauling",): ("moving", "fast"),
     ("at", "a", "fast", "clip"): ("fast",), ("at", "speed"): ("fast",), ("speed", "reading"): ("speed",),
     # Indian English's 'dash' for a collision ('will it dash the red bicycle?'; 'dashing along' stays a speed), and its
@@ -1339,6 +1381,60 @@ PERSONS_HIT = {"anyone": "anything", "anybody": "anything", "someone": "somethin
 DESCRIBED = {"speed", "velocity", "direction", "heading", "color", "kind", "type", "motion", "movement"}
 
 
+# A simile after a speed or a rest says that speed again ('still as a stone', 'slow as a snail', 'quick as the wind',
+# 'frozen like a statue', 'tearing along like a spooked horse', 'tractor-slow'): dropped, so that its noun is not
+# read as a vehicle no video shows ('tractor'). Not a comparison with a vehicle ('as fast as the bus', 'slow as the
+# red one'): the noun phrase names none, and no 'as' comes before the speed; nor a time ('slowly as the footage
+# begins'): a simile of 'as' has 'a' or 'an', or is 'as the wind'.
+SIMILE_SPEEDS = {"still", "motionless", "stationary", "static", "frozen", "parked", "slow", "slowly", "fast", "quick",
+                 "quickly", "swift", "swiftly", "fleet", "rapid", "rapidly", "speedy"}
+SIMILE_MOTIONS = {"tearing", "racing", "crawling", "creeping", "zooming", "flying", "going", "moving", "running",
+                  "sitting", "standing", "bombing", "shooting", "charging", "moseying", "plodding", "drifting"}
+_SIMILE_ENDS = {",", "?", ".", "!", ":", ";", "or", "and", "when", "at", "as", "just", "from", "in", "right", "while",
+                "on", "during", "before", "after", "then", "would", "will", "does", "did", "is", "was", "?"}
+_TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", "moment", "outset", "opening", "point",
+               "now", "then", "here", "there", "it", "them", "collision", "impact", "crash"}
+_NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
+
+
+def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'is the suv still as a sleeping stone , slow as a wandering cloud , or fast as a falling star ?' -> 'is the suv
+    still , slow , or fast ?' (`SIMILE_SPEEDS`). With the similes dropped."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        w = words[k]
+        # 'tractor-slow', 'snail - slow' (not a dash before the choices: 'for the first time - static, slow or fast')
+        if words[k + 1:k + 2] == ["-"] and words[k + 2:k + 3] and words[k + 2] in SIMILE_SPEEDS and w.isalpha() \
+                and w not in OBJECT_WORDS | set(COLOR_NAMES) | SIMILE_SPEEDS | FILM_WORDS | _TIMES_SAID:
+            read.append((" ".join(words[k:k + 3]), words[k + 2]))
+            out.append(words[k + 2])
+            k += 3
+            continue
+        out.append(w)
+        k += 1
+        speed = w in SIMILE_SPEEDS and (len(out) < 2 or out[-2] != "as")
+        motion = w in SIMILE_MOTIONS or (w == "along" and len(out) > 1 and out[-2] in SIMILE_MOTIONS)
+        if not (speed or motion) or k >= len(words) or words[k] not in ("as", "like") or (
+                motion and words[k] != "like"):
+            continue
+        # a simile has its article ('slow as a snail'; 'as the video begins' is a time, 'like mad' an idiom)
+        article = words[k + 1:k + 2]
+        if article not in (["a"], ["an"], ["the"]) or article == ["the"] and words[k] == "as" and \
+                words[k + 2:k + 3] not in (["wind"], ["breeze"], ["grave"]):
+            continue
+        j = k + 2
+        end = j
+        while end < len(words) and end - j < 3 and words[end] not in _SIMILE_ENDS:
+            end += 1
+        phrase = words[j:end]
+        if not phrase or (end < len(words) and words[end] not in _SIMILE_ENDS) or any(
+                v in OBJECT_WORDS or v in COLOR_NAMES or v in _NAMES_NONE or not v.isalpha() for v in phrase):
+            continue
+        read.append((" ".join(words[k:end]), "nothing, a simile"))
+        k = end
+    return out, tuple(read)
+
+
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is it going flat out right off the bat' -> 'is it going fast at the start'. With the idioms read so."""
     read = ()
@@ -1360,6 +1456,8 @@ def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     read += perfect
     out, more = phrases_as_said(words, IDIOMS)
     read += more
+    # a speed said twice once its idiom is read ('bombing along fast' is 'moving fast fast')
+    out = [w for k, w in enumerate(out) if not (k and w == out[k - 1] and w in ("fast", "slow", "slowly"))]
     # what a vehicle hits said as a person ('does the chopper touch anyone?'): only vehicles are there to hit
     for k, w in enumerate(out):
         if w in PERSONS_HIT and k and (asks_impact(out[max(k - 2, 0):k]) or out[k - 1].startswith("touch")):

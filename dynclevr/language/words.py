@@ -30,17 +30,20 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
-PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po"}
+PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po", "sha"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
-           "honestly", "quite"}
+           "honestly", "quite", "totally", "whatsoever", "indeed", "plumb", "pray"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
                          "thanks", "cheers", "tho",
                          # and the particles regional Englishes close with ('they collide or not, lah?', '..., abi?')
                          "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah", "na", "yaar", "diba",
-                         "naman", "po",
+                         "naman", "po", "sha",
                          # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
-                         "affirmative", "roger", "ne", "desu", "nani"} | CHAT
+                         "affirmative", "roger", "ne", "desu", "nani",
+                         # ... and a streamer's chat's emotes ('does it hit anything KEKW')
+                         "kekw", "monkas", "pog", "pogchamp", "poggers", "lul", "omegalul", "kappa", "sadge", "pepega",
+                         "copium"} | CHAT
 
 
 SENTENCE_ENDS = {".", "!", "?"}
