@@ -4287,3 +4287,41 @@ def test_a_direction_read_where_none_is_said_is_refused():
                                       "start?"])
     assert back[-1] == "query_moving_direction"
     assert state[-2:] == ["start", "query_moving_velocity"]   # (read as a direction, 'pray' unknown)
+
+
+def test_a_pit_wall_a_briefing_hong_kong_and_london_words():
+    parser = QuestionParser.load()
+    flying, lights, post, report, kinetic, hong_kong, motor, engine, butcher = parser.parse_batch([
+        "One machine is flying at full pace as the lights go out, what kind of vehicle is it?",
+        "Lights out, is the red car moving fast?",
+        "Assess whether the red jet impacts another vehicle post-footage.",
+        "Report the colour of the vehicle accelerating at H-hour.",
+        "Did the blue tandem bike make kinetic contact with the car? Confirm.",
+        "Video start ar, the red dirt bike quicker than the cyan aeroplane hai mai?",
+        "Which way's the sedan moving when it prangs the brown motor?",
+        "Is the red car's motor running at the start?",
+        "Have a butcher's at the kick-off - what colour's the thing going proper fast?"])
+    # read as floating, within the video, and of any brown vehicle
+    assert flying == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    assert lights[-2:] == ["start", "is_moving_velocity[fast]"]
+    assert post[0] == "futureEvents"
+    assert report == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert kinetic[-1] == "exist" and "filter_attributes[tandem_bike]" in kinetic
+    assert hong_kong[-2:] == ["start", "faster_velocity"] and hong_kong[2] == "filter_attributes[dirtbike]"
+    assert motor[-7:-4] == ["filter_attributes[brown]", "filter_attributes[car]", "unique"]
+    assert engine[-1] == "is_accelerating"                              # (its motor is its engine)
+    assert butcher[-3:] == ["filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+
+
+def test_a_clause_of_a_collision_is_never_dropped_to_read_at_the_start():
+    parser = QuestionParser.load()
+    bash, unmarked, assumed = parser.parse_batch([
+        "As they bash, is the brown wagon going less fast than the yellow utility bike?",
+        "once the red car hits the bus is the bus fast?",
+        "Assume the blue road bike static at the start. Would the blue road bike and the wagon make contact?"])
+    # read at the start (its clause a digression), of the red car (its clause's subject), after the video
+    assert bash[-3:] == ["unique", "get_frame", "slower_velocity"]
+    assert unmarked[1] == "filter_attributes[bus]" and unmarked[-1] == "is_moving_velocity[fast]"
+    assert "Counterfactual_static" in assumed
+    assert_refused(parser, {"lol when the blue bicycle smashes into the green airliner is it going fast?":
+                            "asks at a collision"})

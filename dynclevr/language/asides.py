@@ -141,9 +141,15 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # A digression between commas, or before the first, that says nothing the question could need ('So, Jen, and this
 # is the part I love, was the red sedan ...', 'at what speed, I wonder, was it moving?'): no vehicle, motion,
 # collision, time, place, condition, negation or asking in it.
+# a clause of time said first is never a digression, whatever its verb ('As they bash, is the wagon slower ...?' was
+# read at the start)
+TIME_CLAUSE_OPENERS = (["when"], ["whenever"], ["once"], ["while"], ["as", "they"], ["as", "it"], ["the", "moment"],
+                       ["at", "the", "moment"], ["the", "instant"], ["at", "the", "instant"])
+
+
 def _says_something(span: list[str]) -> bool:
     # (an impact's word misspelt too: 'wen they colide ,')
-    return bool(set(span) & SAYING) or asks_impact(span) or any(
+    return bool(set(span) & SAYING) or asks_impact(span) or any(span[:len(t)] == t for t in TIME_CLAUSE_OPENERS) or any(
         w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() or len(w) > 4 and impact_like(w)
         for w in span)
 

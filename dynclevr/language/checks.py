@@ -515,6 +515,29 @@ def start_speed_at_collision(words: list[str], program: list[str]) -> str:
             "'if X had been ... from the start, would it hit Y?' or how fast X is when it hits Y") if said else ""
 
 
+# a clause of a collision's time: its conjunction, then an impact's words before the clause ends
+_COLLISION_CLAUSE = {"when", "whenever", "once", "while", "as"}
+_CLAUSE_ENDS = {",", "?", ".", "!", ":", ";", "is", "was", "are", "were", "does", "did", "will", "would", "what",
+                "which", "how"}
+
+
+def collision_time_dropped(said: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question, as said (`said`: before any
+    rule read it), asks at a collision in a clause that a rule read away ('gyatt when the blue bicycle smashes into
+    the green airliner is it going fast?' lost its clause as context after an unknown first word, and was read at the
+    start)."""
+    if "start" not in program or START_WORDS.intersection(said):
+        return ""
+    for k, w in enumerate(said):
+        if w not in _COLLISION_CLAUSE or w == "as" and said[k + 1:k + 2] not in (["they"], ["it"], ["the"]):
+            continue
+        end = next((j for j in range(k + 1, len(said)) if said[j] in _CLAUSE_ENDS), len(said))
+        if asks_impact(said[k + 1:end]):
+            return (f"the question asks at a collision ('{' '.join(said[k:end])}'), but its nearest reading asks at "
+                    "the start: ask 'when X hits Y, is X ...'")
+    return ""
+
+
 def clock_unasked(words: list[str], program: list[str]) -> str:
     """Why a reading of the whole video, or of its future, is not the question's ('' when it is): the question asks
     within a time ('in the first 3 seconds', 'within 2 seconds', 'in the next 40 frames', 'in the first second'), or

@@ -150,8 +150,9 @@ def _stated(sentence: list[str]) -> bool:
     said = _opener_said(sentence)
     return bool(said) and said[1][:1] and said[1][0] in STATING and not (IMAGINING_MARKS & set(sentence) or any(
         w == "from" and START_WORDS & set(sentence[k + 1:k + 3]) for k, w in enumerate(sentence))
-        or said[1][0] in ("assume", "assuming") and START_WORDS & set(sentence) and SPEED_CLASS_WORDS & set(sentence))
-    # ('assume the cruiser starts slow')
+        or said[1][0] in ("assume", "assuming") and START_WORDS & set(sentence) and (
+            SPEED_CLASS_WORDS | STATES_SAID - {"up", "in", "at", "already"}) & set(sentence))
+    # ('assume the cruiser starts slow', 'assume the blue road bike static at the start')
 
 
 

@@ -58,15 +58,16 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, correc
                                       wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
-                                      collision_at_start, collision_unread, compared_unsaid, comparison_imagined,
-                                      comparison_unread, comparison_unsaid, condition_subject_first, condition_unsaid,
-                                      cut_said, direction_unasked, direction_unsaid, end_unread, floating_unread,
-                                      floating_unsaid, form_unasked, form_unmatched, future_unread, imagining_unread,
-                                      impact_unsaid, motion_foretold, motion_unfiltered, motion_unread, named_attribute,
-                                      operation, own_attribute_asked, pointed_back, property_unread, reversed_reading,
-                                      size_unread, speed_class_turned, speed_unsaid, start_speed_at_collision,
-                                      still_continuing, than_as_said, than_turned, time_symbol_said, time_unasked,
-                                      uncompared, visibility_unread, what_happens)
+                                      collision_time_dropped, collision_at_start, collision_unread, compared_unsaid,
+                                      comparison_imagined, comparison_unread, comparison_unsaid,
+                                      condition_subject_first, condition_unsaid, cut_said, direction_unasked,
+                                      direction_unsaid, end_unread, floating_unread, floating_unsaid, form_unasked,
+                                      form_unmatched, future_unread, imagining_unread, impact_unsaid, motion_foretold,
+                                      motion_unfiltered, motion_unread, named_attribute, operation, own_attribute_asked,
+                                      pointed_back, property_unread, reversed_reading, size_unread, speed_class_turned,
+                                      speed_unsaid, start_speed_at_collision, still_continuing, than_as_said,
+                                      than_turned, time_symbol_said, time_unasked, uncompared, visibility_unread,
+                                      what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
@@ -93,15 +94,16 @@ from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        choices_as_which, class_as_asked, cleft_as_asked, comparative_as_said,
-                                        condition_named_as_said, contact_made_as_active, contest_as_compared,
-                                        drive_on_as_hit, floating_plane_as_vehicle, fronted_value_as_asked,
-                                        fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
-                                        imperative_as_stated, inverted_as_asked, let_dropped,
-                                        negative_question_as_asked, noun_phrase_as_question, opposed_dropped,
-                                        request_after_setting, request_as_imperative, restated_dropped, similes_dropped,
-                                        speed_as_subject, struck_as_active, tail_as_question, trajectory_as_collision,
-                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
+                                        clause_comma_added, choices_as_which, class_as_asked, cleft_as_asked,
+                                        comparative_as_said, condition_named_as_said, contact_made_as_active,
+                                        contest_as_compared, drive_on_as_hit, floating_plane_as_vehicle,
+                                        fronted_value_as_asked, fronted_whether_as_asked, heading_as_direction,
+                                        height_as_aloft, idioms_as_said, imperative_as_stated, inverted_as_asked,
+                                        let_dropped, negative_question_as_asked, noun_phrase_as_question,
+                                        opposed_dropped, request_after_setting, request_as_imperative, restated_dropped,
+                                        similes_dropped, speed_as_subject, struck_as_active, tail_as_question,
+                                        trajectory_as_collision, type_as_said, type_of_category_as_vehicle,
+                                        verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -293,6 +295,7 @@ class QuestionParser:
             or end_unread(said + read, c.program) or size_unread(said, c.program)
             or start_speed_at_collision(said, c.program) or pointed_back(said, c.program)
             or than_turned(tokenize(text), c.program) or speed_class_turned(read, c.program)
+            or collision_time_dropped(tokenize(text), c.program)
             or class_asked_as_which(read, c.program)) else c
             for c, said, read, text in zip(chosen, said_words, read_words, texts)]
 
@@ -317,9 +320,10 @@ class QuestionParser:
         held = {w: k for w, k in held.items() if k}
         words = [held.get(w, w) for w in words]
         words = closing_mark_added(words)
+        words, clause_comma = clause_comma_added(words)
         words, pictured = moment_pictured(words)
         words, starred = corrections_starred(words, self.readable)
-        starred = pictured + starred
+        starred = clause_comma + pictured + starred
         words, archaic = archaic_as_said(words, self.readable)
         words, relayed = quoted_question(words)
         starred += archaic + relayed

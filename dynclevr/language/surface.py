@@ -576,6 +576,7 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 # A bilingual speaker's other language between English words (French, German, Portuguese, Mandarin in pinyin,
 # Arabizi): its words of time, joining and comparing as English says them, its tags and fillers dropped; read only
 # in a question that has one of its own words (`SWITCH_MARKERS`), so English 'also', 'ma' or 'que' stay as they are
+CANTONESE_PARTICLES = ("ar", "ga", "wor", "la", "lor", "meh")
 TAGALOG_PARTICLES = ("po", "ba", "lang", "naman", "nga", "pala", "talaga", "diba", "kasi", "sige")
 SWITCH_PHRASES = phrase_table([
     *(((*p,), ("at", "the", "start")) for p in (
@@ -612,13 +613,15 @@ SWITCH_PHRASES = phrase_table([
                                                  ("no", "meio"))),
     # Taglish: 'yung' is 'the', its particles of politeness and emphasis say nothing ('At the start po, is yung yellow
     # fighter slower than the cyan scooter?', 'Sige, do ...', 'Ano, if ...')
-    (("yung",), ("the",)), *(((w,), ()) for w in TAGALOG_PARTICLES), (("sige", ","), ()), (("ano", ","), ())])
+    (("yung",), ("the",)), *(((w,), ()) for w in TAGALOG_PARTICLES), (("sige", ","), ()), (("ano", ","), ()),
+    # Hong Kong English: Cantonese particles, and 'hai mai' (is it or not) as a yes-or-no tag
+    (("hai", "mai"), ()), *(((w,), ()) for w in CANTONESE_PARTICLES)])
 SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
                   "est", "quand", "quando", "wenn", "ist", "tava", "etait", "estava", "haishi", "ruguo", "zhuang",
                   "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual",
                   "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio",
                   "cuando", "chocar", "chocan", "chocaron", "choco", "chocado", "choca", "chocaria", "inicio",
-                  "principio", "yung", *TAGALOG_PARTICLES}
+                  "principio", "yung", *TAGALOG_PARTICLES, "ar", "ga", "wor", "hai"}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

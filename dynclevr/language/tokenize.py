@@ -38,6 +38,8 @@ _LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
 _HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
 # a drawl's 'would it've hit' is 'would it have hit', and 'the bit we've seen' 'we have'
 _IT_HAVE = re.compile(r"\b(it|they|we|you|i)'ve\b")
+# a briefing's hour of the start ('at H-hour', 'from T-zero')
+_ZERO_HOUR = re.compile(r"\b(?:h-hour|t-zero|t-0|h hour)\b")
 # 'faster an' faster', 'the car an' the bus'
 _AN = re.compile(r"\ban'(?=\s|$)")
 # 'the plane that's hovering' is 'that is' (a relative clause's, as the grammar says it)
@@ -71,7 +73,7 @@ def tokenize(text: str) -> list[str]:
     text = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
     text = _AINT.sub(lambda m: "never" if m.group(1) else "is not", text)
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
-    text = _DROPPED_G.sub(r"\1g", _AN.sub("and", text))
+    text = _DROPPED_G.sub(r"\1g", _AN.sub("and", _ZERO_HOUR.sub("the start", text)))
     text = _THAT_IS.sub(r"\1 is", _HAD.sub(r"\1 had", _IT_HAVE.sub(r"\1 have", _LEAD.sub("", text))))
     text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
     text = _MENTION.sub(" ", text)

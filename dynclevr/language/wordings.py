@@ -170,6 +170,8 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"(?:old |elderly |poor )?"
                      r"(?:man|woman|lady|gentleman|fellow|person|pensioner|granny|grandad|grandpa|grandma)"
                      r"|(?:i (?:am |' m )|just )curious(?: to know)?(?! about)|please tell me|let me know"
+                     # an after-action report's 'Report the colour of ...'
+                     r"|report(?= (?:the|its|which|what|how) )"
                      # a worksheet's bare 'Tell the colour of ...'
                      r"|(?:please )?tell(?= the (?:color|type|kind|shape|category|class|speed|velocity|direction) )"
                      r"|i (?:would |' d |should )be (?:most |very |really |so |much )?(?:grateful|obliged|glad) "
@@ -266,6 +268,28 @@ def fronted_whether_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[s
     if m := FRONTED_WHETHER.match(" ".join(words)):
         return ["tell", "me", "whether", *m.group(1).split(), "."], ((" ".join(words), "tell me whether ..."),)
     return words, ()
+
+
+# the conjunctions of a clause of time whose end a speaker may not mark ('when the red car hits the bus is the bus
+# fast ?')
+_UNMARKED_CLAUSE_OPENERS = {"when", "once", "while", "whenever"}
+
+
+def clause_comma_added(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A clause of time said first without its comma, the comma put where the question starts: 'once the red car
+    hits the bus is the bus fast ?' -> 'once the red car hits the bus , is the bus fast ?' (read without it, the
+    clause's subject was taken for the question's). With the words read so, or the words as they are and ()."""
+    if not words or words[0] not in _UNMARKED_CLAUSE_OPENERS or "," in words:
+        return words, ()
+    k = next((k for k in range(3, len(words) - 1) if words[k] in ("how", "what", "which", "where") or words[k] in
+              YES_NO_OPENERS and (words[k + 1] in SUBJECT_STARTS or words[k + 1] in COLOR_NAMES)), None)
+    said = mentions(words[1:k]) if k else []
+    # (its verb after its subject: 'once the cyan bike shows up is it ...')
+    if not said or not any(w not in OBJECT_WORDS and w not in COLOR_NAMES and w not in DEFINITE
+                           for w in words[1 + said[0][1]:k]):
+        return words, ()
+    return words[:k] + [","] + words[k:], ((" ".join(words[k - 1:k + 1]), " ".join(words[k - 1:k]) + " , " +
+                                            words[k]),)
 
 
 def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -557,7 +581,8 @@ IDIOMS = phrase_table({
     **{(aux, who, "expect"): ("do", "you", "expect") for aux in ("should", "would", "can", "could", "do", "might")
        for who in ("we", "you", "one") if (aux, who) != ("do", "you")},
     # a note's 'post-video:' is after the video
-    **{("post", *dash, film): ("after", "the", "video") for dash in ((), ("-",)) for film in ("video", "clip")},
+    **{("post", *dash, film): ("after", "the", "video") for dash in ((), ("-",))
+       for film in ("video", "clip", "footage", "film", "recording", "feed")},
     ("fade", "in"): ("the", "start"), ("fade", "out"): ("the", "end"), ("fade", "-", "in"): ("the", "start"),
     ("fade", "-", "out"): ("the", "end"),
     # the whole of the video is the video ('over the whole clip', 'the entire time')
@@ -589,8 +614,9 @@ IDIOMS = phrase_table({
     **{(p, *the, "frames", *that, "are", "left"): ("after", "the", "video", "ends") for p in ("in", "during", "over")
        for the in (("the",), ("whatever",), ("what", "ever")) for that in ((), ("that",), ("which",))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
-    ("pray", "tell", ","): (), ("pray", "tell"): (), **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (
-        ("find", "get"), ("finds", "gets"), ("found", "got"))}, ("party", "to"): ("involved", "in"),
+    ("pray", "tell", ","): (), ("pray", "tell"): (), ("party", "to"): ("involved", "in"),
+    **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
+                                                                         ("found", "got"))},
     **{(k, "aloft"): ("floating",) for k in ("keeping", "staying", "remaining", "holding")},
     **{("butt", h): ("collide",) for h in ("heads", "head")}, ("butted", "heads"): ("collided",),
     ("butting", "heads"): ("colliding",),
@@ -603,6 +629,30 @@ IDIOMS = phrase_table({
     **{(d, "guy"): (d, "one") for d in ("this", "that")},
     **{(c, "up", p, "speed"): ("accelerating",) for c in ("cranking", "ramping", "winding", "revving")
        for p in ("its", "the", "her", "his")},
+    # a Londoner's coloured 'motor' is a car ('it prangs the red motor'; 'its motor' is its engine), a pit wall's
+    # 'flying at full pace' a speed (not floating)
+    **{(c, "motor"): (c, "car") for c in (*COLOR_NAMES, "grey")},
+    **{(*fly, "at", "full", p): (*(("moving",) if fly else ()), "fast") for fly in ((), ("flying",))
+       for p in ("pace", "speed", "tilt", "throttle", "pelt", "chat")},
+    # a briefing's 'kinetic contact' (its hour, 'at H-hour', is read by `tokenize`), a pit wall's 'lights out', 'after
+    # the chequered flag', 'carrying less pace than', 'down on pace versus'
+    ("kinetic", "contact"): ("contact",),
+    ("lights", "out", ",", "and"): ("at", "the", "start", ","), ("lights", "out", ","): ("at", "the", "start", ","),
+    **{("after", "the", flag, "flag"): ("after", "the", "video", "ends") for flag in ("chequered", "checkered")},
+    **{("carrying", *d, "pace", *than): said for d, than, said in (
+        (("less",), ("than",), ("moving", "slower", "than")), (("more",), ("than",), ("moving", "faster", "than")),
+        *(((d,), (), ("moving", "fast")) for d in ("big", "serious", "real", "good", "proper", "huge")))},
+    **{(*lacking, "compared", "to"): ("slower", "than") for lacking in (("lacking", "pace"), ("down", "on", "pace"))},
+    **{("down", "on", "pace", v): ("slower", "than") for v in ("versus", "vs", "to", "against", "on")},
+    # a Londoner's 'have a butcher's at' (a look), 'd'ya reckon', 'bang at the start' (exactly); 'straight off'; a
+    # bump one gets 'caught up in'; Gen-Alpha's 'no cap'
+    ("have", "a", "butcher", "'", "s", "at"): ("at",), ("have", "a", "butcher", "'", "s"): (),
+    **{(*c, "d", "'", y, "reckon"): () for c in ((), (",",)) for y in ("ya", "you", "yer")},
+    ("bang", "at", "the"): ("right", "at", "the"), ("straight", "off", "at"): ("at",),
+    ("straight", "off", ","): ("at", "the", "start", ","),
+    **{(g, *itself, caught, "up", "in"): (g, "involved", "in") for g in ("get", "gets", "got", "getting")
+       for itself in ((), ("itself",)) for caught in ("caught", "mixed", "tangled")},
+    ("no", "cap"): (),
     # a Scot's 'no' of a motion ('the one that's no movin at aw')
     **{(be, "no", v): (be, "not", v) for be in ("is", "s", "was") for v in (
         "moving", "going", "driving", "flying", "floating", "speeding", "accelerating", "hovering")},

@@ -26,7 +26,9 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  "hey", "anyway", "anyways", "yo", "hi", "hello", "dear", "greetings", "good", "morning", "afternoon",
                  "evening", "sure", "roger", "copy", "dude", "bro",
                  # a fan's Japanese ('yabai, was the cyan one ...', 'sugoi!')
-                 "yabai", "sugoi", "nani", "kawaii", "ara", "hontou", "desu", "uwu", "owo"} | CHAT
+                 "yabai", "sugoi", "nani", "kawaii", "ara", "hontou", "desu", "uwu", "owo",
+                 # and Gen-Alpha's ('gyatt when the bike smashes into ...')
+                 "gyatt", "bruh", "skibidi"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
@@ -43,7 +45,7 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
                          "affirmative", "roger", "ne", "desu", "nani",
                          # ... and a streamer's chat's emotes ('does it hit anything KEKW')
                          "kekw", "monkas", "pog", "pogchamp", "poggers", "lul", "omegalul", "kappa", "sadge", "pepega",
-                         "copium"} | CHAT
+                         "copium", "gyatt", "bruh", "skibidi", "ong"} | CHAT
 
 
 SENTENCE_ENDS = {".", "!", "?"}
