@@ -4325,3 +4325,20 @@ def test_a_clause_of_a_collision_is_never_dropped_to_read_at_the_start():
     assert "Counterfactual_static" in assumed
     assert_refused(parser, {"lol when the blue bicycle smashes into the green airliner is it going fast?":
                             "asks at a collision"})
+
+
+def test_a_market_s_words_kenyan_ama_and_newfoundland_s_tag():
+    parser = QuestionParser.load()
+    outperforming, ama, offered, tag, drifting = parser.parse_batch([
+        "Is the cyan school bus outperforming the brown bicycle at the open?",
+        "Is the red car fast ama slow at the start?",
+        "When the chopper becomes visible, is it stationary, slow ama fast?",
+        "Would ya say the sedan is stock still at the start of the video, b'y?",
+        "Early on, is the red car drifting along slowly?"])
+    assert outperforming[-2:] == ["start", "faster_velocity"] and outperforming[2] == "filter_attributes[school_bus]"
+    # 'ama' is 'or' before the choices are read: 'fast ama slow' read as 'fast' when a synonym stood in for it
+    assert ama[-1] == "query_moving_velocity" and offered[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert tag[-2:] == ["start", "is_static"]
+    assert drifting[-1] == "is_moving_velocity[slow]"                 # (refused as a turn)
+    # a stop's 'in' alone is no time after the video ('at any point in the session' was read after it)
+    assert_refused(parser, ["Is the gray chopper exposed to a crash at any point in the session?"])

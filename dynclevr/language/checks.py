@@ -1135,6 +1135,11 @@ def _future_said(words: list[str]) -> str:
                                                   words[k + 2] in FILM_WORDS)), "")
 
 
+# words of a stop's phrases ('cut off', 'has stopped', 'ended early') that say nothing of it alone ('at any point in
+# the session' was read after the video: its 'in' was taken for a stop's); 'the frames still to come' says the future
+_WEAK_STOP_CUES = {"in", "has", "been", "were", "out", "off", "between", "early", "short"}
+
+
 def future_unread(words: list[str], program: list[str], context: list[str] = ()) -> str:
     """Why a reading of the video's collisions is not the question's ('' when it is): the question asks after the
     video ('what colour is the vehicle that hits the red car after the video?': no family asks a partner there); or
@@ -1162,7 +1167,8 @@ def future_unread(words: list[str], program: list[str], context: list[str] = ())
                 "it collides in the video")
     # 'can we get clarity on whether the pickup and the purple thing bump into each other?' read after the video
     # (nor in the sentences read as its context: 'The clip's been cut short. Is the jet headed for a crash ...?')
-    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES).intersection([*words, *context]):
+    if "futureEvents" in program and not (FUTURE_CUES | STOP_CUES - _WEAK_STOP_CUES).intersection(
+            [*words, *context]) and not any(words[k:k + 2] == ["to", "come"] for k in range(len(words))):
         return ("the question says nothing of the time after the video, but its nearest reading asks after it: ask "
                 "whether they collide in the video, or will after it ends")
     if "Events" not in program or "futureEvents" in program:

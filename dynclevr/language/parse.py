@@ -97,13 +97,13 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
                                         clause_comma_added, choices_as_which, class_as_asked, cleft_as_asked,
                                         comparative_as_said, condition_named_as_said, contact_made_as_active,
                                         contest_as_compared, drive_on_as_hit, floating_plane_as_vehicle,
-                                        fronted_value_as_asked, fronted_whether_as_asked, heading_as_direction,
-                                        height_as_aloft, idioms_as_said, imperative_as_stated, inverted_as_asked,
-                                        let_dropped, negative_question_as_asked, noun_phrase_as_question,
-                                        opposed_dropped, request_after_setting, request_as_imperative, restated_dropped,
-                                        similes_dropped, speed_as_subject, struck_as_active, tail_as_question,
-                                        trajectory_as_collision, type_as_said, type_of_category_as_vehicle,
-                                        verbless_comparison_asked)
+                                        pair_colour_shared, fronted_value_as_asked, fronted_whether_as_asked,
+                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
+                                        inverted_as_asked, let_dropped, negative_question_as_asked,
+                                        noun_phrase_as_question, opposed_dropped, request_after_setting,
+                                        request_as_imperative, restated_dropped, similes_dropped, speed_as_subject,
+                                        struck_as_active, tail_as_question, trajectory_as_collision, type_as_said,
+                                        type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -281,7 +281,7 @@ class QuestionParser:
             or what_happens(read, c.program) or attribute_unsaid(said, read, c.program)
             or own_attribute_asked(said, c.program)
             or collision_unread(said, c.program) or uncompared(read, c.program)
-            or future_unread(said, c.program, cut_said(tokenize(text), said).split())
+            or future_unread(said, c.program, cut_said(tokenize(text), said).split() + read)
             or both_imagined(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
             or comparison_unread(read, c.program)
@@ -402,9 +402,10 @@ class QuestionParser:
         words, opened = interjections_dropped(words)
         words, inverted = inverted_as_asked(words)
         opened += inverted
+        words, shared_colour = pair_colour_shared(words)
         words, similes = similes_dropped(words)
         words, idioms = idioms_as_said(words)
-        idioms = similes + idioms
+        idioms = shared_colour + similes + idioms
         words, meant = restatements_read(words)
         idioms += meant
         words, contest = contest_as_compared(words)

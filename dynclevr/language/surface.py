@@ -520,8 +520,8 @@ CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "
                 # Jamaican's 'wid' is 'with' (a Scot's 'would', synonyms.txt), 'neva', 'anodda', 'seh'
                 "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me"}
 CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
-                  "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva", "anodda",
-                  "seh"}
+                  "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva",
+                  "anodda", "seh"}
 CREOLE_PHRASES = phrase_table([
     (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
     (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
@@ -614,6 +614,8 @@ SWITCH_PHRASES = phrase_table([
     # Taglish: 'yung' is 'the', its particles of politeness and emphasis say nothing ('At the start po, is yung yellow
     # fighter slower than the cyan scooter?', 'Sige, do ...', 'Ano, if ...')
     (("yung",), ("the",)), *(((w,), ()) for w in TAGALOG_PARTICLES), (("sige", ","), ()), (("ano", ","), ()),
+    # Kenyan English: 'ama' (or: 'static, slow ama fast?'), before the rules that read choices offered; its fillers
+    (("ama",), ("or",)), *(((w,), ()) for w in ("sasa", "aki", "manze", "kwani")),
     # Hong Kong English: Cantonese particles, and 'hai mai' (is it or not) as a yes-or-no tag
     (("hai", "mai"), ()), *(((w,), ()) for w in CANTONESE_PARTICLES)])
 SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis", "desde", "genre", "tipo", "du",
@@ -621,7 +623,8 @@ SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis
                   "ya3ni", "wallah", "yalla", "khalas", "oder", "halt", "dans", "apres", "depois", "hui", "qual",
                   "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio",
                   "cuando", "chocar", "chocan", "chocaron", "choco", "chocado", "choca", "chocaria", "inicio",
-                  "principio", "yung", *TAGALOG_PARTICLES, "ar", "ga", "wor", "hai"}
+                  "principio", "yung", *TAGALOG_PARTICLES, "ar", "ga", "wor", "hai", "ama", "sasa", "aki", "manze",
+                  "kwani"}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

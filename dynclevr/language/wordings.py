@@ -653,6 +653,13 @@ IDIOMS = phrase_table({
     **{(g, *itself, caught, "up", "in"): (g, "involved", "in") for g in ("get", "gets", "got", "getting")
        for itself in ((), ("itself",)) for caught in ("caught", "mixed", "tangled")},
     ("no", "cap"): (),
+    # Newfoundland's tag ('..., b'y?', '..., me son?'); a market's open and opening bell (the start); drifting along
+    # (slowly moving, not turning)
+    **{(*c, *t): () for c in ((), (",",)) for t in (("b", "'", "y"), ("me", "son"))},
+    **{(p, "the", *o): ("at", "the", "start") for p in ("at", "from") for o in (("open",), ("opening", "bell"))},
+    **{(d, "along"): (m,) for d, m in (("drifting", "moving"), ("drifts", "moves"), ("drifted", "moved"))},
+    # a dialect's 'right' before a speed says it more ('goin' right fast'), no direction
+    **{("right", s): (s,) for s in ("fast", "slow", "slowly")},
     # a Scot's 'no' of a motion ('the one that's no movin at aw')
     **{(be, "no", v): (be, "not", v) for be in ("is", "s", "was") for v in (
         "moving", "going", "driving", "flying", "floating", "speeding", "accelerating", "hovering")},
@@ -1483,6 +1490,23 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         read.append((" ".join(words[k:end]), "nothing, a simile"))
         k = end
     return out, tuple(read)
+
+
+def pair_colour_shared(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'two cyan creatures collide , the minivan and the cruiser ; ...' -> '... , the cyan minivan and the cyan
+    cruiser ; ...': a colour said of two vehicles together is each one's (read alone, 'the cruiser' was any cruiser).
+    With the words read so, or the words as they are and ()."""
+    k = next((k for k in range(len(words) - 2) if words[k] in ("two", "both") and words[k + 1] in COLOR_NAMES), None)
+    if k is None:
+        return words, ()
+    colour = words[k + 1]
+    for j in range(k + 3, len(words) - 6):
+        if words[j] == "," and words[j + 1] == "the" and words[j + 2] in OBJECT_WORDS and \
+                words[j + 3:j + 5] == ["and", "the"] and words[j + 5] in OBJECT_WORDS and \
+                not {w for w in words[j + 2:j + 6]} & set(COLOR_NAMES):
+            out = [*words[:j + 2], colour, words[j + 2], "and", "the", colour, *words[j + 5:]]
+            return out, ((" ".join(words[k:k + 2]), f"the {colour} one and the {colour} one"),)
+    return words, ()
 
 
 def idioms_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
