@@ -4342,3 +4342,20 @@ def test_a_market_s_words_kenyan_ama_and_newfoundland_s_tag():
     assert drifting[-1] == "is_moving_velocity[slow]"                 # (refused as a turn)
     # a stop's 'in' alone is no time after the video ('at any point in the session' was read after it)
     assert_refused(parser, ["Is the gray chopper exposed to a crash at any point in the session?"])
+
+
+def test_irish_english_s_yer_man_and_a_traffic_report_s_times():
+    parser = QuestionParser.load()
+    yer_man, socks, budged, off_air, top = parser.parse_batch([
+        "As the video starts, is yer man the brown bendy bus going faster than the red yoke?",
+        "Ah here, if the gray truck had started off giving it socks, would it have collided with the blue double-decker?",
+        "Picture it now: if the green tandem bike hadn't budged an inch right at the start, would it have collided with "
+        "the blue utility bike?",
+        "Are we expecting the yellow motorbike to smash into the regular bus once we come off air?",
+        "Reports coming in on the green regular bus: is it going fast as we hit the top of the hour?"])
+    # 'yer man' was a person, 'budged' was read as 'bumped'
+    assert yer_man[-2:] == ["start", "faster_velocity"] and yer_man[2] == "filter_attributes[articulated_bus]"
+    assert "Counterfactual_moving_fast" in socks
+    assert "Counterfactual_static" in budged
+    assert off_air[0] == "futureEvents"
+    assert top[-2:] == ["start", "is_moving_velocity[fast]"]

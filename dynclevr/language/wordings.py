@@ -647,12 +647,28 @@ IDIOMS = phrase_table({
     # a Londoner's 'have a butcher's at' (a look), 'd'ya reckon', 'bang at the start' (exactly); 'straight off'; a
     # bump one gets 'caught up in'; Gen-Alpha's 'no cap'
     ("have", "a", "butcher", "'", "s", "at"): ("at",), ("have", "a", "butcher", "'", "s"): (),
-    **{(*c, "d", "'", y, "reckon"): () for c in ((), (",",)) for y in ("ya", "you", "yer")},
+    **{(*c, "d", "'", y, v): () for c in ((), (",",)) for y in ("ya", "you", "yer") for v in ("reckon", "think")},
     ("bang", "at", "the"): ("right", "at", "the"), ("straight", "off", "at"): ("at",),
     ("straight", "off", ","): ("at", "the", "start", ","),
     **{(g, *itself, caught, "up", "in"): (g, "involved", "in") for g in ("get", "gets", "got", "getting")
        for itself in ((), ("itself",)) for caught in ("caught", "mixed", "tangled")},
     ("no", "cap"): (),
+    # Irish English: 'yer man' and 'yer one' point at a vehicle ('is yer man the brown bicycle going to ...', 'would
+    # yer man have run into ...'), 'giving it socks' (going fast), 'c'mere till I ask ya', a tag ', would ya say',
+    # 'all the same'
+    **{("yer", m, "the"): ("the",) for m in ("man", "one", "wan", "woman")},
+    **{("yer", m): ("it",) for m in ("man", "woman")}, ("yer", "one"): ("the", "one"), ("yer", "wan"): ("the", "one"),
+    **{(g, "it", s): ("going", "fast") for g in ("giving", "givin") for s in ("socks", "welly", "loads", "holly")},
+    **{("c", "'", "mere", *till): () for till in ((), ("till", "i", "ask", "you"), ("till", "i", "ask", "ya"),
+                                                   ("till", "i", "ask", "ye"))},
+    **{(",", "would", y, "say", "?"): ("?",) for y in ("you", "ya", "ye")}, (",", "all", "the", "same"): (),
+    ("all", "the", "same", "?"): ("?",),
+    # a traffic report's 'once we come off air' (after the video), 'as we hit the top of the hour' (the start), 'any
+    # word on whether'
+    **{(w, "we", c, "off", "air"): ("after", "the", "video", "ends") for w in ("once", "when", "after")
+       for c in ("come", "go", "are")},
+    **{("as", "we", h, "the", "top", "of", "the", "hour"): ("at", "the", "start") for h in ("hit", "reach", "start")},
+    ("any", "word", "on", "whether"): ("tell", "me", "whether"),
     # Newfoundland's tag ('..., b'y?', '..., me son?'); a market's open and opening bell (the start); drifting along
     # (slowly moving, not turning)
     **{(*c, *t): () for c in ((), (",",)) for t in (("b", "'", "y"), ("me", "son"))},
