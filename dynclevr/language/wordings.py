@@ -669,6 +669,7 @@ IDIOMS = phrase_table({
        for c in ("come", "go", "are")},
     **{("as", "we", h, "the", "top", "of", "the", "hour"): ("at", "the", "start") for h in ("hit", "reach", "start")},
     ("any", "word", "on", "whether"): ("tell", "me", "whether"),
+    ("budged",): ("moved",), ("budges",): ("moves",),   # (not 'bumped', which the typo fix made of them)
     # Newfoundland's tag ('..., b'y?', '..., me son?'); a market's open and opening bell (the start); drifting along
     # (slowly moving, not turning)
     **{(*c, *t): () for c in ((), (",",)) for t in (("b", "'", "y"), ("me", "son"))},
