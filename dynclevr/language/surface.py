@@ -576,7 +576,7 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 # A bilingual speaker's other language between English words (French, German, Portuguese, Mandarin in pinyin,
 # Arabizi): its words of time, joining and comparing as English says them, its tags and fillers dropped; read only
 # in a question that has one of its own words (`SWITCH_MARKERS`), so English 'also', 'ma' or 'que' stay as they are
-CANTONESE_PARTICLES = ("ar", "ga", "wor", "la", "lor", "meh")
+CANTONESE_PARTICLES = ("ar", "ga", "wor", "meh")   # ("la" and "lor" are read before: Spanish and Singlish)
 TAGALOG_PARTICLES = ("po", "ba", "lang", "naman", "nga", "pala", "talaga", "diba", "kasi", "sige")
 SWITCH_PHRASES = phrase_table([
     *(((*p,), ("at", "the", "start")) for p in (
