@@ -16,10 +16,10 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
-from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLOSING_INTERJECTIONS,
-                                     COMES_IN_WORDS, COMMA_INTERJECTIONS, COMPARING, CONDITION_LABELS,
-                                     CONDITION_OPENERS, CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS, DURATIONS,
-                                     END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS,
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLAUSE_CONJUNCTIONS,
+                                     CLOSING_INTERJECTIONS, COMES_IN_WORDS, COMMA_INTERJECTIONS, COMPARING,
+                                     CONDITION_LABELS, CONDITION_OPENERS, CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS,
+                                     DURATIONS, END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS,
                                      HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS, INTERJECTIONS,
                                      LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
                                      NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PLURALS, QUERY_NOUNS,
@@ -138,18 +138,20 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 
 
+# A clause of time said first is never a digression, whatever its verb ('As they bash, is the wagon slower ...?' was
+# read at the start)
+CLAUSES_OF_TIME = (*([c] for c in sorted(CLAUSE_CONJUNCTIONS)), ["as", "they"], ["as", "it"], ["the", "moment"],
+                   ["at", "the", "moment"], ["the", "instant"], ["at", "the", "instant"])
+
+
 # A digression between commas, or before the first, that says nothing the question could need ('So, Jen, and this
 # is the part I love, was the red sedan ...', 'at what speed, I wonder, was it moving?'): no vehicle, motion,
 # collision, time, place, condition, negation or asking in it.
-# a clause of time said first is never a digression, whatever its verb ('As they bash, is the wagon slower ...?' was
-# read at the start)
-TIME_CLAUSE_OPENERS = (["when"], ["whenever"], ["once"], ["while"], ["as", "they"], ["as", "it"], ["the", "moment"],
-                       ["at", "the", "moment"], ["the", "instant"], ["at", "the", "instant"])
 
 
 def _says_something(span: list[str]) -> bool:
     # (an impact's word misspelt too: 'wen they colide ,')
-    return bool(set(span) & SAYING) or asks_impact(span) or any(span[:len(t)] == t for t in TIME_CLAUSE_OPENERS) or any(
+    return bool(set(span) & SAYING) or asks_impact(span) or any(span[:len(t)] == t for t in CLAUSES_OF_TIME) or any(
         w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() or len(w) > 4 and impact_like(w)
         for w in span)
 

@@ -35,13 +35,13 @@ from dynclevr.language.references import OBJECT_WORDS, coordinated, generalises,
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
 from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
-                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, COMES_IN_WORDS, COMPARING, COMPARISONS,
-                                     CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES, END_WORDS, ENGINE_WORDS,
-                                     FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS, IMAGINING_LABELS, INDEFINITES,
-                                     MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS, NAMING, NEGATIONS, NUMBERS,
-                                     PARTNER_SAID, QUERY_NOUNS, RESTING, REST_WORDS, REVERSERS, SPEED_CLASS_WORDS,
-                                     START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS,
-                                     _head, asks_impact)
+                                     ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, CLAUSE_CONJUNCTIONS, COMES_IN_WORDS,
+                                     COMPARING, COMPARISONS, CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES,
+                                     END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS,
+                                     IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS,
+                                     NAMING, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, RESTING, REST_WORDS,
+                                     REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES,
+                                     UNMOVED, VIEWER, YES_NO_OPENERS, _head, asks_impact)
 from dynclevr.questions.programs import OPS
 
 
@@ -516,7 +516,7 @@ def start_speed_at_collision(words: list[str], program: list[str]) -> str:
 
 
 # a clause of a collision's time: its conjunction, then an impact's words before the clause ends
-_COLLISION_CLAUSE = {"when", "whenever", "once", "while", "as"}
+_COLLISION_CLAUSE = CLAUSE_CONJUNCTIONS | {"as"}
 _CLAUSE_ENDS = {",", "?", ".", "!", ":", ";", "is", "was", "are", "were", "does", "did", "will", "would", "what",
                 "which", "how"}
 

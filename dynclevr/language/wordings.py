@@ -19,11 +19,11 @@ from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, CLASS_NOUNS,
-                                     COMPARISONS, DEFINITE, DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES,
-                                     MOTION_NOUNS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS,
-                                     QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES,
-                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, TIME_OPENERS, YES_NO_OPENERS,
-                                     _head, asks_impact)
+                                     CLAUSE_CONJUNCTIONS, COMPARISONS, DEFINITE, DETERMINERS, DIRECTION_CHOICES,
+                                     IMAGINING, IMPERATIVES, MOTION_NOUNS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID,
+                                     QUERY_NOUNS, QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS, SHAPE_ASKED,
+                                     SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, TIME_OPENERS,
+                                     YES_NO_OPENERS, _head, asks_impact)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -270,16 +270,11 @@ def fronted_whether_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[s
     return words, ()
 
 
-# the conjunctions of a clause of time whose end a speaker may not mark ('when the red car hits the bus is the bus
-# fast ?')
-_UNMARKED_CLAUSE_OPENERS = {"when", "once", "while", "whenever"}
-
-
 def clause_comma_added(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A clause of time said first without its comma, the comma put where the question starts: 'once the red car
     hits the bus is the bus fast ?' -> 'once the red car hits the bus , is the bus fast ?' (read without it, the
     clause's subject was taken for the question's). With the words read so, or the words as they are and ()."""
-    if not words or words[0] not in _UNMARKED_CLAUSE_OPENERS or "," in words:
+    if not words or words[0] not in CLAUSE_CONJUNCTIONS or "," in words:
         return words, ()
     k = next((k for k in range(3, len(words) - 1) if words[k] in ("how", "what", "which", "where") or words[k] in
               YES_NO_OPENERS and (words[k + 1] in SUBJECT_STARTS or words[k + 1] in COLOR_NAMES)), None)

@@ -292,6 +292,8 @@ SPEED_NOUNS = {"speed", "velocity", "pace", "momentum"}
 
 # Words that open a clause saying when: 'At the moment the bus hits it, is the bike parked?'.
 TIME_OPENERS = {"at", "when", "during", "in", "as", "on", "upon", "while", "just", "right", "once"}
+# the conjunctions that open a clause of time ('when it hits the bus , ...', 'once the bike shows up , ...')
+CLAUSE_CONJUNCTIONS = {"when", "whenever", "once", "while"}
 # ... unless it is a counterfactual's condition ('In case X had stopped, would it hit Y?'), whose 'it' must follow it
 CONDITION_WORDS = {"had", "were", "case", "world", "if", "suppose"}
 
