@@ -4359,3 +4359,73 @@ def test_irish_english_s_yer_man_and_a_traffic_report_s_times():
     assert "Counterfactual_static" in budged
     assert off_air[0] == "futureEvents"
     assert top[-2:] == ["start", "is_moving_velocity[fast]"]
+
+
+def test_northern_english_elisions_and_trinidadian_de_read_as_articles():
+    parser = QuestionParser.load()
+    assert tokenize("at t' start o' the video, would it 'ave hit the purple 'un?") == [
+        "at", "the", "start", "of", "the", "video", ",", "would", "it", "have", "hit", "the", "purple", "one", "?"]
+    assert tokenize("de t'ing dat smash into somet'in'") == ["de", "thing", "dat", "smash", "into", "something"]
+    yorkshire, trinidad, buss = parser.parse_batch([
+        "Is t' red mountain bike gannin' quicker than the red bendy bus at first, our kid?",
+        "Right at de start, de red plane going faster than de yellow wagon or not?",
+        "De gray school bus going slow just as it buss into de bicycle?"])
+    # 't'' was refused as a time named by a symbol, 'de' as an unknown word
+    assert yorkshire[-2:] == ["start", "faster_velocity"] and yorkshire[1] == "filter_attributes[red]"
+    assert trinidad[-2:] == ["start", "faster_velocity"] and trinidad[2] == "filter_attributes[aeroplane]"
+    assert buss[-1] == "is_moving_velocity[slow]" and "filter_attributes[bicycle]" in buss
+    # a symbol's t' stays one
+    assert_refused(parser, {"At t' > t_c, does the red car hit the bus?": "symbol"})
+
+
+def test_a_bare_holding_is_refused_and_a_pilot_s_block_in_and_sight_are_read():
+    parser = QuestionParser.load()
+    # read as standing still, where its writer meant a holding pattern (in the air)
+    assert_refused(parser, {"Say the green one had been holding from the start, would it have made contact with the "
+                            "blue SUV?": "'holding'", "Did the red car hold on when it hit the bus?": "'holding'"})
+    pattern, position, airborne, block_in, sight, hold_on = parser.parse_batch([
+        "Is the red plane in a holding pattern at the start?",
+        "Suppose the red one had been holding in position right from the beginning: does it still run into the bus?",
+        "Confirm the biplane is holding, airborne, at first?",
+        "After block-in, do we expect contact between the blue tandem bike and the gray truck?",
+        "Blue jet, as soon as it's in sight, say its speed: stationary, slow or fast?",
+        "hold on was the purple minivan just sitting there at the start??"])
+    assert pattern[-1] == "is_floating" and "Counterfactual_static" in position and airborne[-1] == "is_floating"
+    assert block_in[0] == "futureEvents"                               # (read within the video)
+    assert sight[-2:] == ["come_in_frame", "query_moving_velocity"]    # (read at the start)
+    assert hold_on[-1] == "is_static"
+
+
+def test_a_heading_s_post_and_a_statement_asked_by_its_tag_are_kept():
+    parser = QuestionParser.load()
+    los, rollout, check, tagged, scene = parser.parse_batch([
+        "Post-LOS projection: does the cyan regular bus smash into the blue wagon?",
+        "Post-rollout, does the SUV get into any contact event?",
+        "After the video ends: does the red car hit the bus?",
+        "At the moment it dashes with the purple car, the blue truck is simply not moving, is it?",
+        "By the time the scene ends, has the cyan aeroplane run into something?"])
+    # the headings were dropped (read within the video), the statement taken for an aside
+    assert los[0] == rollout[0] == check[0] == "futureEvents"
+    assert tagged[-1] == "is_static" and tagged[2] == "filter_attributes[truck]"
+    assert scene[0] == "Events"                                         # (read after the video)
+    assert parser.parse("Per the post-mortem: had the bus stayed parked from the beginning, would the bus and the "
+                        "grey car have collided?")[1] == "filter_attributes[bus]"
+
+
+def test_a_race_caller_a_cook_a_skater_and_spanglish():
+    parser = QuestionParser.load()
+    gates, standing, simmer, choices, spanglish, knots = parser.parse_batch([
+        "Is the blue chopper picking up speed as they come out of the gates?",
+        "Had the blue one been left standing at the break, would it have bumped into the purple bicycle?",
+        "The one sitting at a simmer from the get-go - what kind of vehicle is that, chefs?",
+        "When the bicycle crashes into the car, is it chilling, rolling slow, or shredding?",
+        "How fast va la purple minivan when it crashes into the green mountain bike: stationary, slow o fast?",
+        "As we weigh anchor, is the yellow car making more knots than the brown truck?"])
+    assert gates[-2:] == ["start", "is_accelerating"]
+    assert "Counterfactual_static" in standing
+    assert simmer[:3] == ["Objects", "start", "filter_moving_velocity[slow]"]   # (read as standing still)
+    assert choices[-1] == "query_moving_velocity"                              # (read as whether it is slow)
+    assert spanglish[-1] == "query_moving_velocity" and "filter_attributes[minivan]" in spanglish
+    assert knots[-2:] == ["start", "faster_velocity"]
+    # a place said before 'standing' stays one
+    assert_refused(parser, ["Is the car on the left standing still at the start?"])

@@ -36,7 +36,8 @@ VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "sir
 ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", "dad", "papa", "grandma", "granny",
              "gran", "nana", "grandpa", "grandad", "granddad", "gramps", "sweetie", "sweetheart", "honey", "darling",
              "kiddo", "kids", "children", "class", "teacher", "auntie", "aunty", "uncle", "pal", "guys", "folks",
-             "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam"}
+             "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam",
+             "machan", "pet", "flight"}   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -1237,8 +1238,12 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         opens = k + 1 + (out[k + 1:k + 2] in (["in"], ["at"], ["to"]))
         asked = "?" in out[k:close] or ":" in out[k:close] or out[opens] in ("which", "what", "how") and \
             out[opens + 1:opens + 2] != [] and out[opens + 1] in QUERY_NOUNS | {"way", "fast"} if close else False
+        # (nor the statement a tag asks about: '..., the blue truck is not moving , is it ?')
+        tag = out[close + 1:] if close else []
+        tagged = 3 <= len(tag) <= 4 and tag[0] in AUXILIARIES and tag[-1] == "?" and \
+            set(tag[1:-1]) <= {"not", "it", "they"}
         if close and not asked and rest - ASKING_ONLY and not ("or" in rest and rest <= SPEED_OFFERED) \
-                and not own_impact and not timed:
+                and not own_impact and not timed and not tagged:
             read.append((" ".join(out[k:close + 1]), "nothing, an aside"))
             out[k:close + 1] = []
             continue
@@ -1366,7 +1371,8 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")]
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
-        STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom"}) & set(said) or set(pre) <= TAGGING
+        STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
+        set(pre) <= TAGGING
     if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
                                                   or named):
         return words, ()

@@ -34,7 +34,7 @@ from dynclevr.language.context import _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, generalises, mentions, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
-from dynclevr.language.words import (ACCELERATION_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
+from dynclevr.language.words import (ACCELERATION_SAID, AFLOAT_SAID, ASKED_QUERIES, ASKING, ASKING_FOR, ATTRIBUTE_NOUNS,
                                      ATTRIBUTE_SAID, AUXILIARIES, CATEGORY_OF, CLAUSE_CONJUNCTIONS, COMES_IN_WORDS,
                                      COMPARING, COMPARISONS, CONDITION_LABELS, DETERMINERS, DIRECTION_WORDS, END_TIMES,
                                      END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS,
@@ -254,6 +254,25 @@ def direction_unsaid(said: list[str], read: list[str], program: list[str]) -> st
         return ""
     return ("the question says no direction, but its nearest reading asks which way a vehicle moves: ask 'which way "
             "is it moving' (or how fast)")
+
+
+# 'holding' alone is a vehicle holding still to a driver and one in a holding pattern (in the air) to a pilot
+# ('Say the green one had been holding from the start, ...' was read as standing still); said with what is held
+# ('holding still', 'holding a hover', 'in a holding pattern') the idioms read it first
+HOLDING = {"holding", "holds", "held", "hold"}
+HOLDING_READ = {"is_static", "filter_static", "Counterfactual_static", "is_floating", "filter_floating",
+                "Counterfactual_floating"}
+
+
+def holding_unsaid(said: list[str], program: list[str]) -> str:
+    """Why a reading of rest or floating is not the question's ('' when it is): it turns on a bare 'holding'."""
+    if not HOLDING_READ.intersection(map(operation, program)) or (AFLOAT_SAID | REST_WORDS) & set(said) or not any(
+            w in HOLDING and said[k + 1:k + 2] in ([], ["?"], [","], ["."], ["from"], ["at"], ["when"], ["on"])
+            and not (w == "hold" and (k == 0 or said[k - 1] in (",", ".", "!", "?")))   # 'hold on, was ...'
+            for k, w in enumerate(said)):
+        return ""
+    return ("the question says 'holding', which may be holding still or holding in the air: say 'standing still' or "
+            "'floating'")
 
 
 # A time that is not the start, said of a motion the program reads at the start: no question asks a vehicle's motion

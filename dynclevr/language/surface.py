@@ -518,10 +518,12 @@ CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "
                 "woulda": "would", "abi": "or", "bumbye": "later", "langgar": "collide", "lick": "hit",
                 "demself": "each other", "e": "it", "bin": "had", "dey": "is",
                 # Jamaican's 'wid' is 'with' (a Scot's 'would', synonyms.txt), 'neva', 'anodda', 'seh'
-                "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me"}
+                "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me",
+                # Trinidadian's ('de', 'yuh', 'buss', 'real fast fast')
+                "de": "the", "yuh": "you", "wha": "what", "buss": "crash", "real": "very"}
 CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
                   "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva",
-                  "anodda", "seh"}
+                  "anodda", "seh", "yuh", "doh"}
 CREOLE_PHRASES = phrase_table([
     (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
     (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
@@ -538,7 +540,13 @@ CREOLE_PHRASES = phrase_table([
                                               ("drive", "drive"))),
     (("same", "time"), ("when",)), (("tell", "mi", "nuh"), ("tell", "me")),
     (("one", "place"), ("still",)), (("mo", "fast"), ("faster",)), (("mo", "slow"), ("slower",)),
-    (("beginning", "time"), ("at", "the", "beginning")), (("kind", "a"), ("kind", "of"))])
+    (("beginning", "time"), ("at", "the", "beginning")), (("kind", "a"), ("kind", "of")),
+    # Trinidadian's 'buss up into' and 'lick up' (crash), 'go' before a verb (will), 'fast fast' (very), its tags
+    # ('or wha', 'or it doh', 'tell me nah') and its 'eh-eh'
+    (("buss", "up"), ("crash",)), (("lick", "up"), ("collide",)), (("lick", "down"), ("hit",)),
+    *((("go", v), ("will", v)) for v in ("crash", "hit", "collide", "buss", "lick", "bump", "smash", "slam", "run")),
+    *(((w, w), (w,)) for w in ("fast", "slow")), (("or", "wha"), ("or", "not")), (("or", "it", "doh"), ("or", "not")),
+    (("or", "doh"), ("or", "not")), (("tell", "me", "nah"), ("tell", "me")), (("eh", "-", "eh"), ()), (("eh",), ())])
 
 
 def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -547,7 +555,10 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     Hawaiian 'wen' is 'when' before its clause's subject and a past tense's mark before a verb, 'stay' before a
     participle is 'is', Pidgin 'jam' before what is hit is 'hit', a coloured 'motor' is a car. With the words read
     so, or the words as they are and ()."""
-    if not CREOLE_MARKERS & set(words):
+    # (Trinidadian 'de' is an article before a vehicle, a colour or the video, not pinyin's 'zhuang de shihou')
+    article = any(w == "de" and (after in NAMING or after in START_WORDS | {"video", "clip", "one", "ting", "first"})
+                  for w, after in zip(words, words[1:]))
+    if not CREOLE_MARKERS & set(words) and not article:
         return words, ()
     out, read = phrases_as_said(words, CREOLE_PHRASES)
     read, said = list(read), []
@@ -565,6 +576,8 @@ def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             w = "collide"
         elif w == "motor" and before in COLOR_NAMES:
             w = "car"
+        elif w == "dey" and before in ("when", "if", "as", "after", "before", "till", "until", "", ","):
+            w = "they"   # a clause's subject (Trinidadian's 'when dey collide'), Jamaican's 'is' after one
         else:
             w = CREOLE_WORDS.get(w, w)
         if w != out[k]:
@@ -595,6 +608,14 @@ SWITCH_PHRASES = phrase_table([
     *(((w,), ("collide",)) for w in ("chocar", "chocan", "chocaron", "choco", "chocado")),
     (("choca",), ("collides",)), (("chocaria",), ("would", "collide")), (("el",), ("the",)), (("la",), ("the",)),
     (("o", "sea"), ()), (("cuando",), ("when",)),
+    # ... and a US Latino's Spanglish ('how fast va la purple minivan', 'slow o fast', 'la cosa que', 'un choque',
+    # 'al mero principio', '¿...?')
+    (("del",), ("of", "the")), (("los",), ("the",)), (("un",), ("a",)), (("una",), ("a",)), (("cosa",), ("thing",)),
+    (("que",), ("that",)), (("que", "tan"), ("how",)), (("es",), ("is",)), (("esta",), ("is",)), (("va",), ("is",)),
+    (("va", "a", "haber"), ("will", "there", "be")), (("se", "mueve"), ("is", "moving")), (("tiene",), ("has",)),
+    (("parado",), ("parked",)), (("bien",), ("very",)), (("mas",), ("more",)), (("en",), ("in",)), (("o",), ("or",)),
+    (("choque",), ("collision",)), (("dime",), ("tell", "me")), (("oye",), ()), (("oye", ","), ()), (("\u00bf",), ()),
+    (("al", "mero", "principio"), ("at", "the", "start")),
     *(((*p, w), ("from", "the", "start")) for p in (("desde", "el"), ("desde", "la")) for w in (
         "inicio", "principio", "comienzo")),
     *(((*p, w), ("at", "the", "start")) for p in (("al",), ("en", "el")) for w in ("inicio", "principio", "comienzo")),
@@ -624,7 +645,8 @@ SWITCH_MARKERS = {"au", "debut", "anfang", "comeco", "kaishi", "shihou", "depuis
                   "welche", "fur", "quelle", "quel", "zai", "zuihou", "fin", "ende", "milieu", "mitte", "meio",
                   "cuando", "chocar", "chocan", "chocaron", "choco", "chocado", "choca", "chocaria", "inicio",
                   "principio", "yung", *TAGALOG_PARTICLES, "ar", "ga", "wor", "hai", "ama", "sasa", "aki", "manze",
-                  "kwani"}
+                  "kwani", "del", "que", "es", "esta", "va", "cosa", "choque", "parado", "mueve", "oye", "dime",
+                  "tiene", "mero", "bien", "\u00bf"}
 
 
 def code_switched_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

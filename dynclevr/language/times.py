@@ -248,7 +248,7 @@ def present_asked_later(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     the words read so, or the words as they are and ()."""
     if not asks_impact(words) or not _at(words, LATER_SAID):
         return words, ()
-    k = next((j for j, w in enumerate(words) if w in ("does", "do") and (j == 0 or words[j - 1] == ",")), None)
+    k = next((j for j, w in enumerate(words) if w in ("does", "do") and (j == 0 or words[j - 1] in (",", ":"))), None)
     if k is None:
         return words, ()
     return words[:k] + ["will"] + words[k + 1:], ((words[k], "will"),)

@@ -38,10 +38,21 @@ _LEAD = re.compile(r"^\s*(?:(?:[-*\u2022>]+|/[a-z]+)\s+)+")
 _HAD = re.compile(r"\b([a-z]+)'d(?= been\b)")
 # a drawl's 'would it've hit' is 'would it have hit', and 'the bit we've seen' 'we have'
 _IT_HAVE = re.compile(r"\b(it|they|we|you|i)'ve\b")
-# a briefing's hour of the start ('at H-hour', 'from T-zero')
+# a briefing's hour of the start ('at H-hour', 'from T-zero'), and mission control's loss of signal, the video's end
+# ('Post-LOS projection: ...', read before a heading's words are weighed)
 _ZERO_HOUR = re.compile(r"\b(?:h-hour|t-zero|t-0|h hour)\b")
+_SIGNAL_LOST = re.compile(r"\b(?:post|after)[- ]?los\b|\bafter (?:the )?loss of signal\b")
 # 'faster an' faster', 'the car an' the bus'
 _AN = re.compile(r"\ban'(?=\s|$)")
+# a Northern English speaker's article and elisions ('at t' start o' the video', 'the purple 'un', 'would it 'ave
+# hit'): 't'' only before a word, so that a symbol's t' ('at t' > t_c') stays one
+_ELIDED = {"t'": "the", "o'": "of", "'un": "one", "'ave": "have", "'ad": "had"}
+_ELISION = re.compile(r"\b[to]'(?= +[a-z])|(?<![a-z])'(?:un|ave|ad)\b")
+# a Cajun's or a Caribbean's 'th' said 't'' ('de t'ing', 'somet'in''), before 't'' could be read as a symbol's
+_TH = re.compile(r"\b(some|any|no|every)?t'in(?:g\b|'|\b)")
+# a Canadian's 'give'r' (go all out: fast), 'givin'r'
+_GIVER = re.compile(r"\bgiv(e|es|in|ing)'e?r\b")
+_GONE_ALL_OUT = {"e": "go fast", "es": "goes fast", "in": "going fast", "ing": "going fast"}
 # 'the plane that's hovering' is 'that is' (a relative clause's, as the grammar says it)
 _THAT_IS = re.compile(r"\b(that|which|who)'s(?= (?:[a-z]+ing|still|parked|static|stationary|fast|slow|moving)\b)")
 
@@ -73,7 +84,10 @@ def tokenize(text: str) -> list[str]:
     text = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
     text = _AINT.sub(lambda m: "never" if m.group(1) else "is not", text)
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
+    text = _SIGNAL_LOST.sub("after the video ends", text)
+    text = _GIVER.sub(lambda m: _GONE_ALL_OUT[m.group(1)], _TH.sub(lambda m: (m.group(1) or "") + "thing", text))
     text = _DROPPED_G.sub(r"\1g", _AN.sub("and", _ZERO_HOUR.sub("the start", text)))
+    text = _ELISION.sub(lambda m: _ELIDED[m.group(0)], text)
     text = _THAT_IS.sub(r"\1 is", _HAD.sub(r"\1 had", _IT_HAVE.sub(r"\1 have", _LEAD.sub("", text))))
     text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
     text = _MENTION.sub(" ", text)

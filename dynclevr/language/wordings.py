@@ -575,9 +575,13 @@ IDIOMS = phrase_table({
     # 'should we expect the bus to hit ...' as the grammar's 'do you expect'
     **{(aux, who, "expect"): ("do", "you", "expect") for aux in ("should", "would", "can", "could", "do", "might")
        for who in ("we", "you", "one") if (aux, who) != ("do", "you")},
-    # a note's 'post-video:' is after the video
-    **{("post", *dash, film): ("after", "the", "video") for dash in ((), ("-",))
-       for film in ("video", "clip", "footage", "film", "recording", "feed")},
+    # a note's 'post-video:' is after the video, and with a heading's label its end ('Post-rollout check:')
+    **{(*p, *label): ("after", "the", "video", *(("ends",) if label else ())) for p in (
+        *(("post", *dash, film) for dash in ((), ("-",)) for film in (
+            "video", "clip", "footage", "film", "recording", "feed", "rollout", "simulation", "sim", "playback",
+            "sequence", "episode", "tape", "reel", "stream", "broadcast")), ("after", "the", "video"))
+       for label in ((), *((w,) for w in ("check", "prediction", "projection", "forecast", "query", "question")))
+       if p != ("after", "the", "video") or label},
     ("fade", "in"): ("the", "start"), ("fade", "out"): ("the", "end"), ("fade", "-", "in"): ("the", "start"),
     ("fade", "-", "out"): ("the", "end"),
     # the whole of the video is the video ('over the whole clip', 'the entire time')
@@ -606,8 +610,9 @@ IDIOMS = phrase_table({
     # rest of the video: 'In whatever frames are left, is the truck gonna ...')
     **{("how", "far", ",", w): (w,) for w in ("is", "was", "are", "were", "do", "does", "did", "will", "would", "which",
                                                "what", "when", "if", "initially", "at", "in", "right", "suppose")},
-    **{(p, *the, "frames", *that, "are", "left"): ("after", "the", "video", "ends") for p in ("in", "during", "over")
-       for the in (("the",), ("whatever",), ("what", "ever")) for that in ((), ("that",), ("which",))},
+    **{(p, *the, "frames", *that, *are, "left"): ("after", "the", "video", "ends") for p in ("in", "during", "over")
+       for the in (("the",), ("whatever",), ("what", "ever")) for that in ((), ("that",), ("which",))
+       for are in (("are",), ("'", "s"), ("is",))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
     ("pray", "tell", ","): (), ("pray", "tell"): (), ("party", "to"): ("involved", "in"),
     **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
@@ -665,6 +670,144 @@ IDIOMS = phrase_table({
     **{("as", "we", h, "the", "top", "of", "the", "hour"): ("at", "the", "start") for h in ("hit", "reach", "start")},
     ("any", "word", "on", "whether"): ("tell", "me", "whether"),
     ("budged",): ("moved",), ("budges",): ("moves",),   # (not 'bumped', which the typo fix made of them)
+    # a ship's officer's knots (speed), weighing anchor and first light (the start), its directions glossed ('front
+    # (fore)'); a Bostonian's 'wicked fast'; a car vlogger's 'off the line' (the start), 'sitting at the lights'; a
+    # flapper's 'putt-putting along', 'at a higher clip than', 'not moving a lick', 'sitting pretty'; a fan's 'or am I
+    # delulu'
+    **{(m, more, "knots", "than"): ("moving", said, "than") for m in ("making", "doing", "logging")
+       for more, said in (("more", "faster"), ("fewer", "slower"), ("less", "slower"))},
+    **{(*w, "we", weigh, "anchor"): ("at", "the", "start") for w in (("when",), ("as",), ("right", "as"), ("once",))
+       for weigh in ("weigh", "weighed")},
+    ("at", "first", "light"): ("at", "the", "start"),
+    **{(d, "(", n, ")"): (d,) for d, n in (("front", "fore"), ("back", "aft"), ("left", "port"),
+                                             ("right", "starboard"), ("front", "forward"), ("back", "astern"))},
+    **{("wicked", s): (s,) for s in ("fast", "slow", "quick", "slowly", "quickly")},
+    **{(c, "off", "the", "line"): (s,) for c, s in (("come", "started"), ("came", "started"), ("comes", "starts"),
+                                                    ("coming", "starting"))},
+    **{(v, "at", "the", "lights"): (v, "still") for v in ("sitting", "sat", "sits", "waiting", "stopped")},
+    ("putt", "-", "putting", "along"): ("moving", "slowly"), ("putt", "-", "putting"): ("moving", "slowly"),
+    **{("at", "a", h, p, "than"): (f, "than") for h, f in (
+        ("higher", "faster"), ("faster", "faster"), ("greater", "faster"), ("lower", "slower"), ("slower", "slower"))
+       for p in ("clip", "pace", "speed", "rate")},
+    ("moving", "a", "lick"): ("moving", "at", "all"), ("sitting", "pretty"): ("sitting", "still"),
+    **{("or", "am", "i", *w): () for w in (("delulu",), ("tripping",), ("crazy",), ("imagining", "it"),
+                                            ("making", "it", "up"), ("seeing", "things"))},
+    # a cricket commentator's start of play and first ball, stumps (the end), 'a right old collision', 'standing at
+    # the crease' (still), 'picking up pace'
+    **{p: ("start",) for p in (("start", "of", "play"), ("first", "ball"))}, ("after", "stumps"): (
+        "after", "the", "video", "ends"), ("right", "old"): (),
+    **{(s, *like, "at", "the", "crease"): (s, "still") for s in ("standing", "stood", "stands", "stand")
+       for like in ((), ("like", "a", "statue"))},
+    **{(p, "up", "pace"): (p, "up", "speed") for p in ("pick", "picks", "picking", "picked")},
+    # a skater's 'shredding' (fast) and 'chilling' (still), 'drops in' (comes into view), 'wrecks into' (crashes into)
+    ("shredding",): ("moving", "fast"), ("shredding", "harder", "than"): ("moving", "faster", "than"),
+    **{(*j, "chilling", *t): ("standing", "still") for j in ((), ("just",)) for t in ((), ("there",))},
+    **{(d, *i): (c, "into", "view") for d, c in (("drops", "comes"), ("drop", "come"), ("dropped", "came"),
+                                                 ("dropping", "coming")) for i in (("in",), ("into", "view"))},
+    **{(w, "into"): (c, "into") for w, c in (("wrecks", "crashes"), ("wreck", "crash"), ("wrecked", "crashed"),
+                                             ("wrecking", "crashing"))},
+    # a station announcer's 'passengers are requested to tell', 'at the time of departure' (the start), 'after the
+    # final halt' (after the video), 'proceeding' (moving)
+    **{("passengers", "are", *k, "requested", "to", "tell", *c): ("tell", "me") for k in ((), ("kindly",))
+       for c in ((), (",",), (":",))},
+    **{(*a, "the", *v, "time", "of", "departure"): ("at", "the", "start") for a in (("at",), ())
+       for v in ((), ("very",))},
+    ("after", "the", "final", "halt"): ("after", "the", "video", "ends"),
+    ("proceeding",): ("moving",), ("proceeds",): ("moves",),
+    # a starship captain's stardate zero (the start), the log (the video), full impulse (fast), 'Number One'
+    **{(*a, "stardate", "zero"): s for a, s in ((("since",), ("from", "the", "start")), ((), ("the", "start")))},
+    **{(*a, "full", "impulse"): ("fast",) for a in ((), ("at",))},
+    ("after", "the", "log", "ends"): ("after", "the", "video", "ends"), ("the", "log"): ("the", "video"),
+    **{(*c, "number", "one", *e): () for c, e in (((",",), ()), ((), (",",)), ((), (":",)))},
+    # a game master's party watching ('As the scene opens, your party eyes the gray mountain bike - is it ...?',
+    # 'before your party's eyes', 'roll for perception:'), and a video said to be over by a time (within it: 'By the
+    # time the scene ends, has the cyan aeroplane run into something?' was read after it; said of a motion it asks at
+    # the end, refused)
+    **{("your", "party", *v): () for v in (("sees",), ("eyes",), ("spots",), ("tracks",), ("watches",),
+                                            ("notices",), ("sizes", "up"))},
+    **{("before", "your", "party", *e): () for e in ((), ("'", "s", "eyes"))},
+    **{("roll", "for", "perception", *c): () for c in ((), (":",), (",",), ("-",))},
+    **{("by", "the", "time", d, f, e, ",", aux): ("in", "the", "video", ",", aux) for d in ("the", "this") for f in (
+        "video", "clip", "scene", "footage", "film", "recording") for e in ("ends", "finishes", "stops")
+       for aux in ("has", "have", "does", "do", "did")},   # (not of a motion: 'by the time it ends, is it fast?')
+    # a cook's simmer (slow), rolling boil (fast), resting, 'folds into' (crashes into), the dish (the video), out of
+    # the oven (after it)
+    **{("at", "a", *a, "simmer"): ("slowly",) for a in ((), ("low",), ("gentle",), ("lazy",))},
+    **{("at", "a", *a, "boil"): ("fast",) for a in (("rolling",), ("full",))},
+    **{p: ("faster", "than") for p in (("at", "a", "hotter", "boil", "than"), ("on", "a", "hotter", "heat", "than"))},
+    **{p: ("slower", "than") for p in (("at", "a", "lazier", "simmer", "than"), ("on", "a", "gentler", "heat", "than"),
+                                       ("at", "a", "gentler", "simmer", "than"))},
+    **{(f, *r, "into"): (c, "into") for f, c in (("fold", "crash"), ("folds", "crashes"), ("folded", "crashed"),
+                                                 ("folding", "crashing")) for r in ((), ("right",))},
+    **{(f, "together"): (c,) for f, c in (("fold", "collide"), ("folds", "collides"), ("folded", "collided"),
+                                          ("folding", "colliding"))},
+    **{("in", "this", d): ("in", "the", "video") for d in ("recipe", "dish")},
+    **{("once", "it", *b, "out", "of", "the", "oven"): ("after", "the", "video", "ends")
+       for b in (("'", "s"), ("is",))},
+    # a formal writer's 'the aforementioned', 'let it be imagined that', 'in the hypothetical case that', 'with great
+    # speed'
+    ("the", "aforementioned"): ("the",), ("the", "aforesaid"): ("the",),
+    ("let", "it", "be", "imagined", "that"): ("imagine", "that"),
+    ("in", "the", "hypothetical", "case", "that"): ("if",),
+    ("with", "great", "speed"): ("fast",),
+    # a streamer's cutscene and a radio ham's transmission: after the video, its top the start; 'QSL?' asks nothing
+    ("after", "the", "cutscene"): ("after", "the", "video", "ends"),
+    ("after", "qrt"): ("after", "the", "video", "ends"),
+    ("at", "the", "top", "of", "the", "transmission"): ("at", "the", "start"), ("qsl", "?"): (),
+    # a race caller's start ('as they break from the gates', 'and they're off', 'at the break'), its 'left standing'
+    # (not moving), a 'runner' and a 'race' (a vehicle and the video), 'past the post' (after the video)
+    **{("as", "they", *v): ("at", "the", "start") for v in (
+        ("break",), *((b, *f, "the", "gates") for b, f in (
+            ("break", ("from",)), ("break", ("out", "of")), ("come", ("out", "of")), ("leave", ()),
+            ("jump", ("from",)), ("jump", ("out", "of")), ("spring", ("from",)), ("burst", ("out", "of")))))},
+    **{(a, "the", g): ("at", "the", "start") for a in ("at", "from") for g in ("break", "gates")},
+    **{(*a, "they", "'", "re", o, *c): () for a in ((), ("and",)) for o in ("off", "away")
+       for c in ((), (",",), ("-",))},
+    **{(w, "left", "standing"): (w, "standing", "still")
+       for w in (*OBJECT_WORDS, "it", "been", "is", "was", "be", ":")},
+    **{("in", "this", r): ("in", "the", "video") for r in ("race", "running", "run", "heat")},
+    ("from", "the", "gates", "to", "the", "wire"): ("in", "the", "video"),
+    **{(*o, "past", "the", "post"): ("after", "the", "video", "ends") for o in (
+        ("once", "they", "'", "re"), ("once", "they", "are"), ("when", "they", "'", "re"), ("after", "they", "'", "re"),
+        ("after", "they", "are"), ("once",), ())},
+    # South Asian English's 'dash' of a collision ('did the wagon dash into the blue aeroplane', 'it dashes with the
+    # car'; 'dashing' alone stays a speed), and a vehicle that dashes into view (enters it)
+    **{(d, p): (c, p) for d, c in (("dash", "crash"), ("dashes", "crashes"), ("dashed", "crashed"),
+                                   ("dashing", "crashing")) for p in ("into", "with")},
+    **{(d, "into", *t, v): (c, "into", "view") for d, c in (("dash", "come"), ("dashes", "comes"), ("dashed", "came"),
+                                                            ("dashing", "coming"))
+       for t in ((), ("the",)) for v in ("view", "frame", "shot", "scene", "picture", "sight")},
+    # a Victorian's 'moving picture' (a video), 'motor-bicycle', 'grows ever swifter' (accelerates), 'dashes itself
+    # against' (crashes into), 'at a great pace', 'when first it comes into view', 'the frames we are shown'
+    ("moving", "picture"): ("video",), ("of", "the", "picture"): ("of", "the", "video"),
+    **{(*c, "motor", *h, b): (*c, "motorbike" + s) for c in ((), *((k,) for k in (*COLOR_NAMES, "grey")))
+       for h in ((), ("-",)) for b, s in (("bicycle", ""), ("bicycles", "s"))},
+    **{(g, "ever", f): (a,) for g, a in (("grows", "accelerates"), ("grow", "accelerate"), ("grew", "accelerated"),
+                                         ("growing", "accelerating")) for f in ("swifter", "faster", "quicker")},
+    **{(d, "itself", "against"): (c, "into") for d, c in (("dashes", "crashes"), ("dash", "crash"),
+                                                          ("dashed", "crashed"), ("dashing", "crashing"))},
+    **{("at", "a", g, p): ("fast",) for g in ("great", "brisk", "furious", "tremendous", "rapid", "lively", "spanking")
+       for p in ("pace", "clip", "rate", "speed")},
+    ("when", "first", "it"): ("when", "it", "first"),
+    **{("in", "the", "frames", "we", *b, s): ("in", "the", "video") for b in (
+        ("are",), ("were",), ("have",), ("'", "ve"), ("have", "been"), ("'", "ve", "been")) for s in ("shown", "seen")},
+    # mission control's 'on station' (holding still; its 'post-LOS' is read by `tokenize`), its 'go or no-go' (yes or
+    # no), 'carrying more velocity than'
+    ("on", "station"): ("stationary",),
+    ("go", "or", "no", "-", "go"): ("yes", "or", "no"), ("go", "or", "no", "go"): ("yes", "or", "no"),
+    ("velocity", "call"): ("speed",),
+    **{("carrying", d, v, *than): said for v in ("velocity", "speed") for d, than, said in (
+        ("less", ("than",), ("moving", "slower", "than")), ("more", ("than",), ("moving", "faster", "than")),
+        ("high", (), ("moving", "fast")), ("low", (), ("moving", "slowly")))},
+    # a trucker on the CB ('breaker one-nine', 'good buddy', 'hammer down' (fast), 'parked like a bear in the
+    # median', 'on this tape' (the video), 'pulls into view')
+    **{(b, *n): () for b in ("breaker",) for n in (("one", "-", "nine"), ("one", "nine"), ("19",), ("breaker",), ())},
+    **{(*c, "good", "buddy"): () for c in ((), (",",))},
+    **{(*w, "the", "hammer", "down"): ("fast",) for w in (("with",), ())}, ("hammer", "down"): ("fast",),
+    ("like", "a", "bear", "in", "the", "median"): (),
+    **{(p, "this", "tape"): ("in", "the", "video") for p in ("on", "in")},
+    **{(v, "into", "view"): (c, "into", "view") for v, c in (("pulls", "comes"), ("pull", "come"),
+                                                              ("pulled", "came"), ("pulling", "coming"))},
     # Newfoundland's tag ('..., b'y?', '..., me son?'); a market's open and opening bell (the start); drifting along
     # (slowly moving, not turning)
     **{(*c, *t): () for c in ((), (",",)) for t in (("b", "'", "y"), ("me", "son"))},
@@ -857,7 +1000,8 @@ IDIOMS = phrase_table({
     # by', 'left behind by')
     **{(w, *f, "by"): ("slower", "than") for w in (
         "outpaced", "outrun", "outran", "overtaken", "outstripped", "beaten", "outsped", "outdone", "surpassed",
-        "bested", "outdistanced", "outraced") for f in ((), ("for", "speed"), ("in", "speed"), ("on", "speed"))},
+        "bested", "outdistanced", "outraced") for f in ((), ("for", "speed"), ("in", "speed"), ("on", "speed"),
+                                                        ("for", "pace"), ("on", "pace"))},
     ("left", "behind", "by"): ("slower", "than"),
     # putting on speed is speeding up; turning up is appearing ('when it first turns up in the video')
     **{(p, "on", "speed"): (a,) for p, a in (("putting", "accelerating"), ("puts", "accelerates"),
@@ -1234,6 +1378,11 @@ IDIOMS = phrase_table({
     **{(go, hard): (moving, fast) for go, moving in (("going", "going"), ("goes", "goes"), ("went", "went"),
                                                     ("go", "go"), ("gone", "gone"))
        for hard, fast in (("hard", "fast"), ("harder", "faster"))},
+    # a car vlogger's 'launch hard' and 'pulling hard' (speeding up), 'sending it' (going fast)
+    **{(v + e, "hard"): (a,) for v in ("launch", "pull") for e, a in (
+        ("", "accelerate"), ("es" if v == "launch" else "s", "accelerates"), ("ed", "accelerated"),
+        ("ing", "accelerating"))},
+    **{(*a, "sending", "it"): ("going", "fast") for a in ((), ("absolutely",), ("fully",))},
     **{("the", "slowcoach", compared, to): ("slower", "than") for compared in ("compared", "relative")
        for to in ("with", "to")},
     **{(*how, "on", "the", "throttle"): ("accelerating",) for how in (
@@ -1249,10 +1398,21 @@ IDIOMS = phrase_table({
     # an airfield's: ground speed, holding, a slow taxi, the throttle forward, wheels chocked or off the ground, the
     # feed's loss (its end), traffic (what there is to hit), coming off the start
     ("ground", "speed"): ("speed",), ("holding", "static"): ("static",),
+    # ... a holding pattern (in the air), block-in (at the gate: after the flight, the video), a vehicle once in sight
+    # (come into view)
+    **{(*i, "a", "holding", "pattern"): ("floating",) for i in ((), ("in",))},
+    ("holding", "pattern"): ("floating",),
+    **{(h, *i, "position"): (st, "still") for h, st in (("holding", "standing"), ("holds", "stands"), ("held", "stood"))
+       for i in ((), ("its",), ("in",))},
+    **{(a, "block", *h, "in"): ("after", "the", "video", "ends") for a in ("after", "post") for h in ((), ("-",))},
+    **{(*w, "it", *b, "in", v): (*w, "it", "comes", "into", "view") for w in (("as", "soon", "as"), ("once",))
+       for b in (("'", "s"), ("is",)) for v in ("sight", "view")},
     **{(*at, "a", "slow", "taxi"): ("slow",) for at in ((), ("at",))}, ("throttle", "forward"): ("accelerating",),
     ("with", "its", "wheels", "chocked"): (), ("with", "its", "wheels", "off", "the", "ground"): ("in", "the", "air"),
     **{("loss", "of", f): ("the", "video", "ends") for f in ("feed", "signal", "picture")},
-    ("any", "traffic"): ("anything",), ("the", "traffic"): ("the", "vehicle"),
+    ("any", "traffic"): ("anything",), ("the", "traffic"): ("the", "vehicle"), ("some", "traffic"): ("something",),
+    **{(c, "traffic"): (c, "vehicle") for c in (*COLOR_NAMES, "grey", "stationary", "static", "other")},
+    **{("traffic", w): ("the", "vehicle", w) for w in ("that", "which", "striking", "hitting")},
     **{(come, "off", "the", "start"): (start,) for come, start in (("come", "started"), ("came", "started"),
                                                                   ("comes", "starts"))},
     # a biker's: taken out (hit), set off at a crawl (started slow), its foot down (the throttle open)
@@ -1458,7 +1618,9 @@ DESCRIBED = {"speed", "velocity", "direction", "heading", "color", "kind", "type
 SIMILE_SPEEDS = {"still", "motionless", "stationary", "static", "frozen", "parked", "slow", "slowly", "fast", "quick",
                  "quickly", "swift", "swiftly", "fleet", "rapid", "rapidly", "speedy"}
 SIMILE_MOTIONS = {"tearing", "racing", "crawling", "creeping", "zooming", "flying", "going", "moving", "running",
-                  "sitting", "standing", "bombing", "shooting", "charging", "moseying", "plodding", "drifting"}
+                  "sitting", "standing", "bombing", "shooting", "charging", "moseying", "plodding", "drifting",
+                  "air", "aloft", "airborne", "floating", "hovering"}   # 'up in the air like a real high-flier'
+
 _SIMILE_ENDS = {",", "?", ".", "!", ":", ";", "or", "and", "when", "at", "as", "just", "from", "in", "right", "while",
                 "on", "during", "before", "after", "then", "would", "will", "does", "did", "is", "was", "?"}
 _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", "moment", "outset", "opening", "point",
@@ -1493,10 +1655,14 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
             continue
         j = k + 2
         end = j
-        while end < len(words) and end - j < 3 and words[end] not in _SIMILE_ENDS:
+        # (of up to three words, hyphened or possessive: 'a real high-flier', 'the cat's pajamas'; a dash before a
+        # question ends it: 'like a meringue - what colour is it?')
+        while end < len(words) and end - j < 6 and words[end] not in _SIMILE_ENDS and not (
+                words[end] == "-" and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS):
             end += 1
-        phrase = words[j:end]
-        if not phrase or (end < len(words) and words[end] not in _SIMILE_ENDS) or any(
+        phrase = [v for v in words[j:end] if v not in ("-", "'")]
+        if not phrase or len(phrase) > 3 + (words[j:end].count("'") > 0) or \
+                (end < len(words) and words[end] not in _SIMILE_ENDS) or any(
                 v in OBJECT_WORDS or v in COLOR_NAMES or v in _NAMES_NONE or not v.isalpha() for v in phrase):
             continue
         read.append((" ".join(words[k:end]), "nothing, a simile"))

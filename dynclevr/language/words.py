@@ -58,7 +58,8 @@ IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "prete
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
-                    "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate"}
+                    "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate",
+                    "contingency"}   # mission control's ('Contingency: if the cyan aeroplane had been ...')
 # ... of them, a label that makes what follows imagined ('Hypothetical: brown SUV starts slow -> collision with ...?')
 IMAGINING_LABELS = {"assume", "assuming", "hypothetical", "hypothetically", "counterfactual", "cf", "what-if", "whatif",
                     "intervention"}
