@@ -786,8 +786,8 @@ IDIOMS = phrase_table({
                                          ("growing", "accelerating")) for f in ("swifter", "faster", "quicker")},
     **{(d, "itself", "against"): (c, "into") for d, c in (("dashes", "crashes"), ("dash", "crash"),
                                                           ("dashed", "crashed"), ("dashing", "crashing"))},
-    **{("at", "a", g, p): ("fast",) for g in ("great", "brisk", "furious", "tremendous", "rapid", "lively", "spanking")
-       for p in ("pace", "clip", "rate", "speed")},
+    **{("at", "a", g, p): ("fast",) for g in ("great", "brisk", "furious", "tremendous", "rapid", "lively", "spanking",
+                                              "breakneck") for p in ("pace", "clip", "rate", "speed")},
     ("when", "first", "it"): ("when", "it", "first"),
     **{("in", "the", "frames", "we", *b, s): ("in", "the", "video") for b in (
         ("are",), ("were",), ("have",), ("'", "ve"), ("have", "been"), ("'", "ve", "been")) for s in ("shown", "seen")},
@@ -960,13 +960,12 @@ IDIOMS = phrase_table({
     **{p: ("at", "high", "speed") for p in (("at", "a", "great", "speed"), ("at", "great", "speed"))},
     **{p: _START for p in (("at", "the", "commencement"), ("at", "the", "very", "commencement"))},
     ("manner", "of", "vehicle"): ("kind", "of", "vehicle"), ("what", "manner", "of"): ("what", "kind", "of"),
-    # a thesaurus's starts and speeds ('had it set off at a dawdle', 'begun at a breakneck clip', 'embarked with
-    # alacrity'), and comparisons ('dawdling relative to the airliner')
+    # a thesaurus's starts and speeds ('had it set off at a dawdle', 'embarked with alacrity'; 'at a breakneck clip'
+    # is with a Victorian's 'at a great pace'), and comparisons ('dawdling relative to the airliner')
     **{(set, off): (started,) for set, started in (("set", "started"), ("sets", "starts"), ("setting", "starting"))
        for off in ("off", "out")},
     **{("at", "a", slow): ("slowly",) for slow in ("dawdle", "crawl", "snail's", "walk", "amble", "trundle")},
-    **{p: ("fast",) for p in (*(("at", "a", "breakneck", pace) for pace in ("clip", "pace", "speed", "rate")),
-                              ("at", "breakneck", "speed"), ("at", "breakneck", "pace"), ("with", "alacrity"),
+    **{p: ("fast",) for p in (("at", "breakneck", "speed"), ("at", "breakneck", "pace"), ("with", "alacrity"),
                               ("with", "great", "alacrity"))},
     **{(pace, "relative", "to"): (said, "than") for pace, said in (
         *((w, "slower") for w in ("slow", "slower", "dawdling", "crawling", "lagging", "sluggish", "leisurely")),
