@@ -4429,3 +4429,24 @@ def test_a_race_caller_a_cook_a_skater_and_spanglish():
     assert knots[-2:] == ["start", "faster_velocity"]
     # a place said before 'standing' stays one
     assert_refused(parser, ["Is the car on the left standing still at the start?"])
+
+
+def test_a_moment_no_rule_reads_is_refused_and_a_dispatcher_a_trader_and_bajan_are_read():
+    parser = QuestionParser.load()
+    # read at the start: the moment's words were dropped
+    assert_refused(parser, {"At the moment of the 20-30, was the utility bike faster than the gray bus?": "a moment",
+                            "At the point of entry, how fast is the bus?": "a moment"})
+    ten_fifty, call, flat, close, gine = parser.parse_batch([
+        "At the 10-50, was the cyan minivan going faster than the brown bendy bus? Advise.",
+        "At time of call, is the cyan school bus running faster than the brown bicycle, copy?",
+        "If the regular bus had been flat at the open, would it crash into the red one?",
+        "Looking past the close, does the green jet end up in a collision, yes or no?",
+        "Wha gine happen next, cuh: de purple double-decker gine hit de airliner?"])
+    assert ten_fifty[-3:] == ["unique", "get_frame", "faster_velocity"]     # (read at the start)
+    assert call[-2:] == ["start", "faster_velocity"]                         # (read at a collision)
+    assert "Counterfactual_static" in flat                                   # (read as floating)
+    assert close[0] == gine[0] == "futureEvents"                             # (read within the video)
+    for fast in ("Is the red car flat out at the start?", "Was the purple one flat chat right at the beginning?"):
+        assert parser.parse(fast)[-1] == "is_moving_velocity[fast]", fast
+    # 'up in the air' after a preamble's speed word ('gently' read as 'slowly') was read as a speed
+    assert_refused(parser, ["Quick check on the monitor - at the start of the tape, is the gray airliner up in the air?"])

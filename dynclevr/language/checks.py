@@ -535,7 +535,7 @@ def start_speed_at_collision(words: list[str], program: list[str]) -> str:
 
 
 # a clause of a collision's time: its conjunction, then an impact's words before the clause ends
-_COLLISION_CLAUSE = CLAUSE_CONJUNCTIONS | {"as"}
+_COLLISION_CLAUSE = CLAUSE_CONJUNCTIONS | {"as", "moment", "instant"}   # ('rest on the moment they collide; is ...')
 _CLAUSE_ENDS = {",", "?", ".", "!", ":", ";", "is", "was", "are", "were", "does", "did", "will", "would", "what",
                 "which", "how"}
 
@@ -555,6 +555,20 @@ def collision_time_dropped(said: list[str], program: list[str]) -> str:
             return (f"the question asks at a collision ('{' '.join(said[k:end])}'), but its nearest reading asks at "
                     "the start: ask 'when X hits Y, is X ...'")
     return ""
+
+
+def moment_unread(said: list[str], program: list[str]) -> str:
+    """Why a reading at the start is not the question's ('' when it is): the question, as the rules left it, asks at
+    the moment of something it says in words no rule read ('At the moment of the 10-50, was the utility bike running
+    faster ...?', a dispatcher's collision, was read at the start)."""
+    if "start" not in program or START_WORDS.intersection(said):
+        return ""
+    moment = next((" ".join(said[k - 1:k + 4]) for k in range(1, len(said) - 1) if said[k] in (
+        "moment", "instant", "time", "point") and said[k - 1] == "the" and said[k + 1] == "of"), None)
+    if moment is None:
+        return ""
+    return (f"the question asks at a moment ('{moment}'), but its nearest reading asks at the start: ask 'at the start' "
+            "or 'when X hits Y'")
 
 
 def clock_unasked(words: list[str], program: list[str]) -> str:
@@ -739,7 +753,9 @@ AFLOAT_WORDS = {"floating", "float", "floats", "floated", "hovering", "hover", "
 def floating_unread(words: list[str], program: list[str]) -> str:
     """Why a reading is not the question's ('' when it is): the question says a vehicle floats, and the reading
     reads no floating."""
-    said = next((w for w in words if w in AFLOAT_WORDS), None)
+    said = next((w for w in words if w in AFLOAT_WORDS), None) or next((
+        "up in the air" for k in range(len(words)) if words[k:k + 3] == ["in", "the", "air"] and (
+            words[k - 1:k] == ["up"] or words[k + 3:k + 4] in ([], ["?"]))), None)   # (its speed read from 'gently')
     if said is None or FLOATING_OPERATIONS.intersection(map(operation, program)):
         return ""
     return (f"the question says '{said}', but its nearest reading reads no floating: ask whether the vehicle is "

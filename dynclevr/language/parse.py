@@ -63,11 +63,11 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       condition_subject_first, condition_unsaid, cut_said, direction_unasked,
                                       direction_unsaid, end_unread, floating_unread, floating_unsaid, form_unasked,
                                       form_unmatched, future_unread, holding_unsaid, imagining_unread, impact_unsaid,
-                                      motion_foretold, motion_unfiltered, motion_unread, named_attribute, operation,
-                                      own_attribute_asked, pointed_back, property_unread, reversed_reading, size_unread,
-                                      speed_class_turned, speed_unsaid, start_speed_at_collision, still_continuing,
-                                      than_as_said, than_turned, time_symbol_said, time_unasked, uncompared,
-                                      visibility_unread, what_happens)
+                                      moment_unread, motion_foretold, motion_unfiltered, motion_unread, named_attribute,
+                                      operation, own_attribute_asked, pointed_back, property_unread, reversed_reading,
+                                      size_unread, speed_class_turned, speed_unsaid, start_speed_at_collision,
+                                      still_continuing, than_as_said, than_turned, time_symbol_said, time_unasked,
+                                      uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
@@ -274,7 +274,7 @@ class QuestionParser:
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
             or direction_unasked(said, c.program) or direction_unsaid(said, read, c.program)
-            or holding_unsaid(said, c.program)
+            or holding_unsaid(said, c.program) or moment_unread(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))

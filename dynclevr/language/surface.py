@@ -519,11 +519,12 @@ CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "
                 "demself": "each other", "e": "it", "bin": "had", "dey": "is",
                 # Jamaican's 'wid' is 'with' (a Scot's 'would', synonyms.txt), 'neva', 'anodda', 'seh'
                 "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me",
-                # Trinidadian's ('de', 'yuh', 'buss', 'real fast fast')
-                "de": "the", "yuh": "you", "wha": "what", "buss": "crash", "real": "very"}
+                # Trinidadian's ('de', 'yuh', 'buss', 'real fast fast'), Bajan's ('gine', 'wunna', 'lef')
+                "de": "the", "yuh": "you", "wha": "what", "buss": "crash", "real": "very", "gine": "will",
+                "wunna": "you", "lef": "left"}
 CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
                   "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva",
-                  "anodda", "seh", "yuh", "doh"}
+                  "anodda", "seh", "yuh", "doh", "gine", "wunna", "cuh"}
 CREOLE_PHRASES = phrase_table([
     (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
     (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
@@ -546,7 +547,8 @@ CREOLE_PHRASES = phrase_table([
     (("buss", "up"), ("crash",)), (("lick", "up"), ("collide",)), (("lick", "down"), ("hit",)),
     *((("go", v), ("will", v)) for v in ("crash", "hit", "collide", "buss", "lick", "bump", "smash", "slam", "run")),
     *(((w, w), (w,)) for w in ("fast", "slow")), (("or", "wha"), ("or", "not")), (("or", "it", "doh"), ("or", "not")),
-    (("or", "doh"), ("or", "not")), (("tell", "me", "nah"), ("tell", "me")), (("eh", "-", "eh"), ()), (("eh",), ())])
+    (("or", "doh"), ("or", "not")), (("tell", "me", "nah"), ("tell", "me")), (("eh", "-", "eh"), ()), (("eh",), ()),
+    (("cuh", ","), ()), (("cuh",), ()), (("dat", "lef"), ("that", "are", "left"))])
 
 
 def creole_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -719,6 +719,45 @@ IDIOMS = phrase_table({
     **{(*a, "full", "impulse"): ("fast",) for a in ((), ("at",))},
     ("after", "the", "log", "ends"): ("after", "the", "video", "ends"), ("the", "log"): ("the", "video"),
     **{(*c, "number", "one", *e): () for c, e in (((",",), ()), ((), (",",)), ((), (":",)))},
+    # a physicist's translational speed and a collision undergone; a snowboarder's 'bombing' (fast) and 'wipes out
+    # into' (crashes into); a football commentator's kick-off (the start), final whistle (the end) and turn of pace
+    ("translational", "speed"): ("speed",), ("translational", "velocity"): ("velocity",),
+    **{(u, *a, "collision", "with"): (c, "with") for u, c in (("undergoes", "collides"), ("undergo", "collide"),
+                                                            ("underwent", "collided"), ("undergoing", "colliding"))
+       for a in (("a",), ("its",), ("their",))},
+    **{(u, "a", "collision"): (c,) for u, c in (("undergoes", "collides"), ("undergo", "collide"),
+                                                ("underwent", "collided"), ("undergoing", "colliding"))},
+    ("bombing",): ("moving", "fast"),
+    **{("straight", "-", "up", v): (v,) for v in ("bombing", "shredding", "racing", "flying", "zooming", "speeding",
+                                                  "crawling", "flooring")},
+    **{(w, "out", "into"): (c, "into") for w, c in (("wipes", "crashes"), ("wipe", "crash"), ("wiped", "crashed"),
+                                                    ("wiping", "crashing"))},
+    **{(w, "out", "together"): (c,) for w, c in (("wipe", "collide"), ("wiped", "collided"), ("wiping", "colliding"))},
+    **{(f, "kick", *h, "off"): ("from", "the", "start") for f in ("from", "since") for h in ((), ("-",))},
+    ("straight", "from"): ("right", "from"),
+    **{("as", "the", *r, b, "for", "kick", *h, "off"): ("at", "the", "start") for r in (("whistle",), ("ref",))
+       for b in ("goes", "blows") for h in ((), ("-",))},
+    **{(*o, "the", "final", "whistle"): ("after", "the", "video", "ends") for o in (
+        ("past",), ("after",), ("once", "we", "'", "re", "past"), ("once", "we", "are", "past"))},
+    ("a", "quicker", "turn", "of", "pace", "than"): ("faster", "than"),
+    # a trader's 'ripping' (fast), opening so, straight out of the open; Ulster's 'wee' (a little) says nothing
+    ("ripping",): ("racing",), **{(o, "ripping"): (s, "fast") for o, s in (("opened", "started"),
+                                                                                   ("opens", "starts"))},
+    ("straight", "out", "of", "the", "open"): ("at", "the", "start"), ("wee",): (),
+    # a yoga teacher's 'let your attention rest softly on', 'gently notice', 'as the video breathes in' (the start)
+    **{("let", "your", "attention", "rest", *a, "on"): () for a in ((), ("softly",), ("gently",), ("lightly",))},
+    **{(g, v): () for g in ("gently", "softly") for v in ("notice", "observe", "watch")},
+    **{("as", "the", f, "breathes", "in"): ("at", "the", "start") for f in ("video", "clip", "film", "footage")},
+    # a dispatcher's 10-50 (a collision) and time of call (the start); a trader's close (the end: past it, after the
+    # video) and a flat vehicle (still; 'flat out' and 'flat chat' stay fast; 'is the red car flat' was read as
+    # floating, a typo's 'float')
+    **{(*d, "10", "-", "50"): (*d, "collision") for d in ((), ("the",), ("a",))},
+    **{("at", *d, "time", "of", "call"): ("at", "the", "start") for d in ((), ("the",))},
+    **{(*l, p, "the", "close"): ("after", "the", "video", "ends") for l in ((), ("looking",))
+       for p in ("past", "after")},
+    **{(b, "flat", *o): (b, "fast" if o else "static") for b in (
+        "been", "is", "was", "sitting", "stays", "stayed", "remained", "remains", "just", "it", "one", *OBJECT_WORDS)
+       for o in ((), ("out",), ("-", "out"), ("chat",))},
     # a game master's party watching ('As the scene opens, your party eyes the gray mountain bike - is it ...?',
     # 'before your party's eyes', 'roll for perception:'), and a video said to be over by a time (within it: 'By the
     # time the scene ends, has the cyan aeroplane run into something?' was read after it; said of a motion it asks at
@@ -805,7 +844,7 @@ IDIOMS = phrase_table({
     **{(*c, "good", "buddy"): () for c in ((), (",",))},
     **{(*w, "the", "hammer", "down"): ("fast",) for w in (("with",), ())}, ("hammer", "down"): ("fast",),
     ("like", "a", "bear", "in", "the", "median"): (),
-    **{(p, "this", "tape"): ("in", "the", "video") for p in ("on", "in")},
+    **{(p, d, "tape"): ("in", "the", "video") for p in ("on", "in") for d in ("this", "the")},
     **{(v, "into", "view"): (c, "into", "view") for v, c in (("pulls", "comes"), ("pull", "come"),
                                                               ("pulled", "came"), ("pulling", "coming"))},
     # Newfoundland's tag ('..., b'y?', '..., me son?'); a market's open and opening bell (the start); drifting along
