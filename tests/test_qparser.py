@@ -4450,3 +4450,59 @@ def test_a_moment_no_rule_reads_is_refused_and_a_dispatcher_a_trader_and_bajan_a
         assert parser.parse(fast)[-1] == "is_moving_velocity[fast]", fast
     # 'up in the air' after a preamble's speed word ('gently' read as 'slowly') was read as a speed
     assert_refused(parser, ["Quick check on the monitor - at the start of the tape, is the gray airliner up in the air?"])
+
+
+def test_an_auctioneer_s_calls_offer_the_answers_and_a_post_heading_no_rule_reads_is_refused():
+    parser = QuestionParser.load()
+    speed, fast, model, engine = parser.parse_batch([
+        "Lot number seven, the aeroplane, right off the block at the beginning of the video: how fast is it moving, "
+        "do I hear static, do I hear moving slowly, do I hear moving fast?",
+        "Is the brown aeroplane going fast when it bumps into the gray one, do I hear a yes, do I hear a no, going "
+        "once, going twice?",
+        "What model is the vehicle the purple aeroplane crashed into, do I hear a model, going once, going twice, sold!",
+        "Right off the block, is the purple road bike's engine running, gimme a yes or a no, lot twenty-one, going "
+        "once, going twice!"])
+    assert speed[-2:] == ["start", "query_moving_velocity"]
+    assert fast[-3:] == ["unique", "get_frame", "is_moving_velocity[fast]"]
+    assert model[-1] == "query_attributes[shape]" and "get_all_col_partners" in model
+    assert engine[-2:] == ["start", "is_accelerating"]
+    # a lab's 'post-trial' heading is after the video; one no rule reads was read within it
+    assert parser.parse("Post-trial, do we expect contact between the yellow mountain bike and the SUV?")[0] == \
+        "futureEvents"
+    assert_refused(parser, {"Post-haste, do the bus and the car collide?": "post - haste"})
+
+
+def test_a_moment_said_before_a_premise_heard_and_regional_words():
+    parser = QuestionParser.load()
+    tense, rumour, premise, true, lying, subject, tandem = parser.parse_batch([
+        "The green airliner collides with the yellow bus; in that tense moment, what is the green airliner's motion "
+        "state: static, moving slowly or moving fast?",
+        "Rumour has it the green bendy bus smashed into something, darling, so what colour is the item it smashes "
+        "into?",
+        "My sources say one vehicle is getting faster in the first frames, darling; what kind of vehicle is it?",
+        "Rumour has it the airliner is creeping along when the video begins; is that true, darling?",
+        "Had the cyan scooter been lying perfectly still at first, would it have struck the green one?",
+        "Had the red biplane stayed airborne, would it have run into the purple subject?",
+        "Suppose that green bicycle-built-for-two had started out slowly, would it have hit the cyan bicycle?"])
+    assert tense[-3:] == ["unique", "get_frame", "query_moving_velocity"]       # (read at the start)
+    assert rumour[-1] == "query_attributes[color]" and "get_all_col_partners" in rumour   # (read as yes or no)
+    assert premise[-3:] == ["filter_accelerating", "unique", "query_attributes[shape]"]
+    assert true[-2:] == ["start", "is_moving_velocity[slow]"]
+    assert "Counterfactual_static" in lying                                   # ('lying' was read as 'flying')
+    assert subject[-4:] == ["filter_attributes[purple]", "unique", "filter_collision", "exist"]   # (a lab's word)
+    assert "filter_attributes[tandem_bike]" in tandem                          # (read as any bicycle)
+    # a moment said before, that no rule reads, is no start
+    assert_refused(parser, {"The bus is parked; in that quiet moment, is the red car fast?": "a moment"})
+    # ... but one the first sentence says is
+    assert parser.parse("The video starts. The green motorbike is waiting. How fast is it going at that moment: "
+                        "static, slow, or fast?")[-2:] == ["start", "query_moving_velocity"]
+    small, brummie, track, ah, eer = parser.parse_batch([
+        "Da cyan bicycle, at da start it static, moving small-small or moving fast?",
+        "If the car hadn't bin movin' at the beginnin', would it've crashed into the brown regular bus, ar or no?",
+        "Brown tandem bike crashes into somethin' on the track, what colour is that thing?",
+        "The truck ah, does it smash into any other vehicle?",
+        "Do the articulated bus and the purple biplane e'er collide with one another?"])
+    assert small[-2:] == ["start", "query_moving_velocity"]                    # (read as whether it is fast)
+    assert "Counterfactual_static" in brummie
+    assert track[-1] == "query_attributes[color]" and "filter_attributes[truck]" not in track
+    assert ah[:2] == ["Events", "Objects"] and eer[0] == "Events"

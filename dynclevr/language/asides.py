@@ -37,7 +37,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "gran", "nana", "grandpa", "grandad", "granddad", "gramps", "sweetie", "sweetheart", "honey", "darling",
              "kiddo", "kids", "children", "class", "teacher", "auntie", "aunty", "uncle", "pal", "guys", "folks",
              "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam",
-             "machan", "pet", "flight"}   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
+             "machan", "pet", "flight",   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
+             "bab", "darlin", "sugar", "doll"}   # a Brummie's 'bab', a gossip's and a gangster's
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -70,6 +71,83 @@ def _unremarked(remark: list[str]) -> list[str]:
     return out
 
 
+# An auctioneer's calls ('Lot seven, ... is the jet moving fast, do I hear a yes, do I hear a no, going once, going
+# twice, sold?'): the lot's number and the closing count say nothing, the calls for bids offer the answers
+CALLS = (["do", "i", "hear"], ["gimme"], ["give", "me"], ["who", "'", "ll", "say"], ["who", "'", "ll", "give", "me"],
+         ["who", "'", "ll", "name", "me"], ["who", "'", "ll", "name"], ["let", "'", "s", "hear", "it"])
+LOT_NUMBERS = {"number", "no", "-", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
+               "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen",
+               "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"}
+CALLED = {"yes", "no", "static", "slow", "fast", "left", "right", "front", "back", "up", "down"}
+CALLED_FOR = {"answer", "bid", "colour", "color", "direction", "model", "type", "kind", "speed"}
+
+
+def _call(words: list[str], k: int) -> int:
+    """How many words a call for a bid takes at words[k] ('do i hear a', 'gimme an', a second's 'or a'); 0 where
+    none."""
+    n = next((len(c) for c in (*CALLS, ["or"]) if words[k:k + len(c)] == c), 0)
+    if n == 1 and words[k] == "or" and not (k and words[k - 1] in CALLED and words[k + 1:k + 2] in (["a"], ["an"])):
+        return 0
+    return n + (words[k + n:k + n + 1] in (["a"], ["an"])) if n else 0
+
+
+def calls_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'lot nine , is it fast , do i hear a yes , do i hear a no , going once , going twice ?' -> 'is it fast , yes
+    or no ?'. With the calls read so, or the words as they are and ()."""
+    if not any(words[k:k + 3] in (["going", "once", ","], ["do", "i", "hear"]) for k in range(len(words))):
+        return words, ()
+    out, read = list(words), []
+    # the lot's number, first or between commas ('Lot twenty-two , ...', '... , lot fifty-three , going once')
+    for k in [k for k, w in enumerate(out) if w == "lot" and (k == 0 or out[k - 1] == ",")][::-1]:
+        end = next((e for e in range(k + 1, min(len(out), k + 6)) if out[e] in (",", ":", "!", ".", "?")), None)
+        if end and all(w in LOT_NUMBERS or w.isdigit() for w in out[k + 1:end]):
+            start, end = (k, end + 1) if k == 0 else (k - 1, end)
+            read.append((" ".join(out[start:end]), "nothing, a lot's number"))
+            out = out[:start] + out[end:]
+    going = next((k for k in range(len(out)) if out[k:k + 6] == [",", "going", "once", ",", "going", "twice"]), None)
+    if going is not None:
+        end = going + 6 + 2 * (out[going + 6:going + 8] in ([",", "sold"], [",", "gone"]))
+        read.append((" ".join(out[going:end]), "nothing, the closing count"))
+        out = out[:going] + (["?"] if out[end:] == ["!"] else out[end:])   # a question, however loudly closed
+    k = 0
+    while k < len(out):
+        n = _call(out, k)
+        if not n:
+            k += 1
+            continue
+        offered, j = [], k
+        while (n := _call(out, j)) and (end := next((e for e in range(j + n, min(j + n + 4, len(out) + 1))
+                                                     if e == len(out) or out[e] in (",", "?", "!", ".", "or")), None)):
+            offered.append(out[j + n:end])
+            j = end + 1 if out[end:end + 1] == [","] and _call(out, end + 1) else end
+        if not offered:
+            k += 1
+            continue
+        if offered[0] and offered[0][-1] in CALLED_FOR and len(offered) == 1:
+            said = []   # a call for what the question asks ('what colour is it , do i hear a colour ?')
+        elif len(offered) == 1:
+            said = offered[0]   # the answers listed after one call ('do i hear left , right , ... or down')
+        else:
+            said = [w for o in offered[:-2] for w in (*o, ",")] + offered[-2] + ["or"] + offered[-1]
+        read.append((" ".join(out[k:j]), " ".join(said) or "nothing, a call for bids"))
+        out = out[:k] + said + out[j:]
+        k += len(said) + 1
+    return out, tuple(read)
+
+
+HASTE = [["real", q, *there, ","] for q in ("quick", "fast") for there in ((), ("there",))]
+
+
+def _exclaimed(words: list[str], k: int) -> int:
+    """Where an exclamation that names no vehicle, time or property, opening words[k:], ends ('what a smash ,', 'what a
+    day !'); 0 where none opens them."""
+    end = next((e for e in range(k + 3, k + 6) if words[e:e + 1] in ([","], ["!"])), None)
+    if words[k:k + 2] not in (["what", "a"], ["what", "an"]) or end is None or set(words[k + 2:end]) & (
+            OBJECT_WORDS | FILM_WORDS | START_WORDS | QUERY_NOUNS | MOTION_WORDS | {"?", "which", "what", "how"}):
+        return 0
+    return end
+
+
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
@@ -82,13 +160,16 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
         words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
     # a caller's '(now) real quick ,' asks in haste, of no vehicle's speed
-    k = next((j + 3 for j in (0, 1) if words[j:j + 3] in (["real", "quick", ","], ["real", "fast", ","])
-              and (j == 0 or words[0] in INTERJECTIONS | COMMA_INTERJECTIONS)), 0)
-    # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to
-    while k < len(words) and (words[k] in INTERJECTIONS or words[k] in COMMA_INTERJECTIONS | ADDRESSED
+    # (and an Upper Midwesterner's 'real quick there ,')
+    k = next((j + len(h) for j in (0, 1, 2) for h in HASTE if words[j:j + len(h)] == h
+              and (j == 0 or words[0] in INTERJECTIONS | COMMA_INTERJECTIONS and set(words[1:j]) <= {","})), 0)
+    # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to;
+    # an exclamation of no vehicle ('wowee , what a smash , as they collide is ...')
+    while k < len(words) and ((exclaimed := _exclaimed(words, k)) or words[k] in INTERJECTIONS
+                              or words[k] in COMMA_INTERJECTIONS | ADDRESSED
                               and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
                               or k and words[k - 1] in INTERJECTIONS | VOCATIVES and words[k] in VOCATIVES | {"like"}):
-        k += 1
+        k = exclaimed or k + 1
         while k < len(words) and words[k] in INTERJECTION_ENDS:
             k += 1
     end = len(words)
@@ -321,6 +402,14 @@ HUNCHES = ("hunch", "gut", "guess", "bet", "forecast", "prediction", "feeling", 
 # that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
 _AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
 _TAGGED = ([], [",", "would", "not", "you", ","], [",", "do", "not", "you", ","], [",", "will", "not", "you", ","])
+# a report, heard ('Sources tell us the bus was parked; can we confirm that?'; 'Rumour has it the bus hit something,
+# darling, so what colour ...?': a premise, its question after it)
+HEARSAY = {(*said, *that) for said in (
+    ("sources", "tell", "us"), ("sources", "tell", "me"), ("sources", "say"), ("my", "sources", "say"),
+    ("my", "sources", "tell", "me"), ("we", "are", "told"), ("we", "'", "re", "told"), ("i", "am", "told"),
+    ("i", "'", "m", "told"), ("reports", "say"), ("word", "is"), ("word", "has", "it"), ("rumour", "has", "it"),
+    ("rumor", "has", "it"), ("a", "little", "bird", "says"), ("a", "little", "bird", "tells", "me"),
+    ("a", "little", "bird", "told", "me")) for that in ((), ("that",))}
 CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
                 for verb in _AGREE for tag in _TAGGED for that in (["that"], []) if that or not tag),
               # a sceptic's ('Wouldn't you say ...', 'Am I to believe ...', 'Don't tell me ...')
@@ -348,10 +437,7 @@ CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"],
               *(("i", *rather, *verb, *that) for rather in ((), ("rather",)) for verb in (
                   ("do", "not", "suppose"), ("suspect",), ("suppose",), ("gather",)) for that in ((), ("that",))),
               # a report put to be confirmed ('Sources tell us the bus was parked; can we confirm that?')
-              *((*said, *that) for said in (("sources", "tell", "us"), ("sources", "say"), ("we", "are", "told"),
-                                            ("we", "'", "re", "told"), ("i", "am", "told"), ("i", "'", "m", "told"),
-                                            ("reports", "say"), ("word", "is"), ("rumour", "has", "it"),
-                                            ("rumor", "has", "it")) for that in ((), ("that",))),
+              *HEARSAY,
               # ... or someone's ('Someone says the bus was parked. Was it?', 'A friend claims that ...')
               *((*who, said, *that) for who in (["someone"], ["somebody"], ["a", "friend"], ["my", "friend"],
                                                 ["a", "colleague"], ["a", "viewer"], ["a", "witness"], ["people"])
@@ -410,6 +496,17 @@ ATTENTION_TO = sorted({(verb, *whose, "attention", "to") for verb in ("directing
                       key=len, reverse=True)
 
 
+def _asked_after(words: list[str], k: int) -> bool:
+    """Whether a question of its own follows the clause at words[k:] ('..., so what colour is ...', '...; what kind of
+    vehicle is it?'), not a confirmation ('...; can we confirm that?')."""
+    if words[-3:-2] == [","] and words[-2] in ADDRESSED:   # ('...; is that true , darling ?')
+        words = words[:-3] + words[-1:]
+    return any(words[j] in (",", ";", ".", ":", "-") and words[j + 1 + (words[j + 1:j + 2] in (["so"], ["then"]))
+                                                               :][:1] in (["what"], ["which"], ["how"], ["at"], ["will"],
+                                                                          ["is"], ["does"], ["do"], ["did"], ["was"])
+               and words[j:] not in CONFIRM_ENDS for j in range(k, len(words) - 1))
+
+
 def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'i put it to you that the bus was parked . is that correct ?' -> 'is it true that the bus was parked ?';
     'explain to the jury how fast ...' -> 'tell me how fast ...'; 'directing your attention to the start , ...' ->
@@ -433,7 +530,10 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
                  None)
         asks = next((a for a in EXAMINATION_ASKS if tuple(words[k:k + len(a)]) == a), None)
         attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
-        if confirm or asks:
+        if confirm in HEARSAY and _asked_after(words, k + len(confirm)):
+            read.append((" ".join(confirm), "nothing, a premise"))
+            k += len(confirm)
+        elif confirm or asks:
             said = ["is", "it", "true", "that"] if confirm else ["tell", "me"]
             if confirm and out[-2:] == [",", "and"]:   # 'the clip stops early , and my forecast is that ...'
                 out[-2:] = ["."]
@@ -450,6 +550,9 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             out.append(words[k])
             k += 1
     if read and any(c in ("is it true that", "nothing, an aside") for _, c in read):
+        if out[-3:-2] == [","] and out[-2] in ADDRESSED and out[-1] == "?":   # '...; is that true , darling ?'
+            read.append((out[-2], "nothing, whom it is asked"))
+            out = out[:-3] + ["?"]
         end = next((e for e in CONFIRM_ENDS if out[-len(e):] == e), None)
         if end:
             read.append((" ".join(end), "?"))
@@ -1145,6 +1248,12 @@ def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     return words[end + 1:], (*read, (" ".join(words[:end + 1]), "nothing, a teaser"))
 
 
+def _then_said(words: list[str]) -> bool:
+    """Whether words point back at a time said before ('then', 'at that moment', 'in this instant')."""
+    return "then" in words or any(a in ("that", "this") and b in ("moment", "instant", "point")
+                                  for a, b in zip(words, words[1:]))
+
+
 def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question without its label, the remarks before it and its asides ('q1 : there are many vehicles here .
     how fast is this red sedan ( the car ) ...' -> 'how fast is the red sedan ...'). A remark is a first sentence,
@@ -1171,12 +1280,13 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                 _video_end(words[:end + 1]):
             break   # one that says what is asked stays, and one that says the video stopped ('video stops here .')
         # and so does a heading that says when or how to answer ('at the start :', 'true or false :'), and a first
-        # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?')
+        # sentence that says when the question's 'then' is ('Think about the last moment of the clip. ... then?', 'The
+        # video starts. ... at that moment?')
         # (and the property asked before a colon: 'Which colour: the thing that is accelerating at the start?')
         if words[end] == ":" and set(words[:end]) & (HEADING_KEPT | START_WORDS | FILM_WORDS) or \
                 words[end] == ":" and words[:1] in (["which"], ["what"]) and end <= 4 and \
                 set(words[1:end]) & {"colour", "color", "type", "kind", "model", "vehicle"} or \
-                words[end] == "." and "then" in words[end + 1:] and \
+                words[end] == "." and _then_said(words[end + 1:]) and \
                 set(words[:end]) & (HEADING_KEPT | START_WORDS) - {"true", "false", "yes", "no"}:
             break
         read.append((" ".join(words[:end + 1]), "nothing, a remark"))

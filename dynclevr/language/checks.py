@@ -560,15 +560,29 @@ def collision_time_dropped(said: list[str], program: list[str]) -> str:
 def moment_unread(said: list[str], program: list[str]) -> str:
     """Why a reading at the start is not the question's ('' when it is): the question, as the rules left it, asks at
     the moment of something it says in words no rule read ('At the moment of the 10-50, was the utility bike running
-    faster ...?', a dispatcher's collision, was read at the start)."""
+    faster ...?', a dispatcher's collision, was read at the start), or at a moment said before ('X hits Y ; in that
+    tense moment , ...')."""
     if "start" not in program or START_WORDS.intersection(said):
         return ""
     moment = next((" ".join(said[k - 1:k + 4]) for k in range(1, len(said) - 1) if said[k] in (
-        "moment", "instant", "time", "point") and said[k - 1] == "the" and said[k + 1] == "of"), None)
+        "moment", "instant", "time", "point") and said[k - 1] == "the" and said[k + 1] == "of"), None) or next(
+        # ... or at a moment said before, that no rule read ('X hits Y ; in that tense moment , ...')
+        (" ".join(said[k - 2:k + 1]) for k in range(2, len(said)) if said[k] in ("moment", "instant")
+         and {"that", "this"} & set(said[k - 2:k])), None)
     if moment is None:
         return ""
     return (f"the question asks at a moment ('{moment}'), but its nearest reading asks at the start: ask 'at the start' "
             "or 'when X hits Y'")
+
+
+def heading_unread(said: list[str], program: list[str]) -> str:
+    """Why a reading within the video is not the question's ('' when it is): the question opens on a 'post-'
+    heading no rule read ('Post-trial, do we expect contact ...?' was read within the video)."""
+    if any(t.startswith("future") for t in program) or said[:1] != ["post"]:
+        return ""
+    heading = " ".join(said[:3] if said[1:2] == ["-"] else said[:2])
+    return (f"the question opens on '{heading}', which the parser does not read: ask 'after the video ends, ...' or "
+            "'in the video, ...'")
 
 
 def clock_unasked(words: list[str], program: list[str]) -> str:

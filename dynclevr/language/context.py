@@ -57,10 +57,13 @@ AFTER_PLACE = {"?", ",", ".", "at", "when", "in", "during", "as", "and", "or", "
 # 'it' that points forward, not back ('is it true that ...', 'is it possible ...')
 IT_FORWARD = {"true", "possible", "likely", "the", "that", "so", "right", "correct", "fair", "safe", "clear", "all"}
 NAMELESS = {"some", "a", "an", "another", "one"}
+# a moment's words of feeling ('in that tense moment', 'at that fateful instant')
+MOMENT_ADJECTIVES = ("very", "exact", "precise", "same", "tense", "fateful", "fatal", "critical", "crucial", "decisive",
+                     "dramatic", "split", "key", "awful", "terrible", "unlucky", "unfortunate", "thrilling", "shocking")
 THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
              ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
              *((p, d, *very, m) for p in ("at", "in", "during") for d in ("this", "that", "the")
-               if (p, d) != ("at", "the") for very in ((), ("very",), ("exact",), ("precise",))
+               if (p, d) != ("at", "the") for very in ((), *((v,) for v in MOMENT_ADJECTIVES))
                for m in ("moment", "instant", "point", "event", "collision", "crash", "impact")),
              *((w, d, h) for w in ("when", "as") for d in ("that", "this", "it") for h in ("happens", "happened")),
              # a signer's gloss ('... BUMP. THAT TIME SCHOOL BUS STAND STILL, TRUE?')

@@ -50,24 +50,24 @@ import torch
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
-                                      distractors_dropped, ramble_dropped, dislocated_as_asked, examination_as_asked,
-                                      framing_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
-                                      interjections_dropped, owners_dropped, preamble_dropped, prompt_dropped,
-                                      radio_as_asked, requested_as_asked, restatements_read, ticket_fields_read,
-                                      wagers_read)
+from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_read, corrections_dropped,
+                                      digressions_dropped, dislocated_as_asked, distractors_dropped,
+                                      examination_as_asked, framing_dropped, hedges_dropped, hooks_dropped,
+                                      hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
+                                      prompt_dropped, radio_as_asked, ramble_dropped, requested_as_asked,
+                                      restatements_read, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
                                       comparison_imagined, comparison_unread, comparison_unsaid,
                                       condition_subject_first, condition_unsaid, cut_said, direction_unasked,
                                       direction_unsaid, end_unread, floating_unread, floating_unsaid, form_unasked,
-                                      form_unmatched, future_unread, holding_unsaid, imagining_unread, impact_unsaid,
-                                      moment_unread, motion_foretold, motion_unfiltered, motion_unread, named_attribute,
-                                      operation, own_attribute_asked, pointed_back, property_unread, reversed_reading,
-                                      size_unread, speed_class_turned, speed_unsaid, start_speed_at_collision,
-                                      still_continuing, than_as_said, than_turned, time_symbol_said, time_unasked,
-                                      uncompared, visibility_unread, what_happens)
+                                      form_unmatched, future_unread, heading_unread, holding_unsaid, imagining_unread,
+                                      impact_unsaid, moment_unread, motion_foretold, motion_unfiltered, motion_unread,
+                                      named_attribute, operation, own_attribute_asked, pointed_back, property_unread,
+                                      reversed_reading, size_unread, speed_class_turned, speed_unsaid,
+                                      start_speed_at_collision, still_continuing, than_as_said, than_turned,
+                                      time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
@@ -274,7 +274,7 @@ class QuestionParser:
         return [replace(c, program=None, reason=why) if c.program and (
             why := form_unmatched(said, c.program) or answer_form_unmatched(c.read_as, c.program)
             or direction_unasked(said, c.program) or direction_unsaid(said, read, c.program)
-            or holding_unsaid(said, c.program) or moment_unread(said, c.program)
+            or holding_unsaid(said, c.program) or moment_unread(said, c.program) or heading_unread(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
@@ -330,6 +330,8 @@ class QuestionParser:
         starred += archaic + relayed
         words, transcribed = transcript_as_asked(words)
         words, printed = worksheet_as_said(words)
+        words, called = calls_read(words)
+        printed += called
         printed = transcribed + printed
         words, pictured_words = emoji_as_said(words)
         words, shorthand = shorthand_as_said(words)

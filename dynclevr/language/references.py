@@ -218,7 +218,8 @@ DESCRIBED_AFTER = {
                            "to school") +
     _options(("that", "which"), "picks", ("kids", "children", "pupils"), "up", ("for school", "")) +
     _options("for", ("school kids", "schoolkids", "school children", "schoolchildren", "school")),
-    "tandem_bike": _options(("built", "made", "meant", ""), "for", "two", ("riders", "people", "")),
+    "tandem_bike": _options(("built", "made", "meant", ""), "for", "two", ("riders", "people", "")) +
+    _options("-", ("built", "made", "meant"), "-", "for", "-", "two"),   # 'that bicycle-built-for-two'
     "mountain_bike": _options("with", _THE, ("big", ""), ("knobbly", "knobby", "chunky", "fat", "thick"),
                               ("tyres", "tires"), ("for hills", "")) + [("for", "hills")],
     "utility_bike": _options("with", _THE, ("big", ""), ("cargo", "luggage", "delivery", ""),

@@ -364,10 +364,18 @@ def quoted_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     return quoted + ["?"] * (quoted[-1] not in ("?", ".")), ((" ".join(around), "nothing, the question relayed"),)
 
 
+# verse's elisions ('do they e'er collide': its 'er' was dropped as a speaker's filler)
+ELIDED = {("e", "'", "er"): "ever", ("ne", "'", "er"): "never", ("o", "'", "er"): "over"}
+
+
 def archaic_as_said(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A verb's Early Modern '-eth' as its '-s' ('floateth' -> 'floats', 'goeth' -> 'goes', 'stoppeth' -> 'stops'),
-    where the parser reads that form; with the words read so."""
+    where the parser reads that form, and verse's elisions ('e'er' -> 'ever'); with the words read so."""
     out, read = list(words), []
+    for k in reversed(range(len(out) - 2)):
+        if (said := ELIDED.get(tuple(out[k:k + 3]))):
+            read.append((" ".join(out[k:k + 3]), said))
+            out[k:k + 3] = [said]
     for k, w in enumerate(out):
         if w in readable or len(w) < 5 or not w.endswith("eth"):
             continue
@@ -756,7 +764,8 @@ SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pic
                                             "motorcycle"}
 # ... and never from a word that names what no vehicle is ('white', 'tractor'), nor from a real word said like a
 # vehicle's ('the plain red car')
-NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky"}
+# (a place said is no vehicle heard: 'crashes into something on the track' was read as 'on the truck')
+NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky", "track", "tracks"}
 NAME_SAID = SPELT_BY_EAR - set(COLOR_NAMES)
 BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
 NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS
@@ -792,8 +801,10 @@ HER_NOUNS = {"speed", "velocity", "direction", "heading", "engine", "pace", "way
 
 
 def she_as_it(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'was she fast' -> 'was it fast', 'her speed' -> 'its speed', 'hit her' -> 'hit it'. (After the words heard
-    as others: 'chop her' is a chopper.) With the words read so, or the words as they are and ()."""
+    """'was she fast' -> 'was it fast', 'her speed' -> 'its speed', 'hit her' -> 'hit it'; the West Country's 'he'
+    ('would he have hit the bus', 'the one with his engine running'). (After the words heard as others: 'chop her'
+    is a chopper.) With the words read so, or the words as they are and ()."""
     out = [("its" if w == "her" and words[k + 1:k + 2] and words[k + 1] in HER_NOUNS else "it")
-           if w in ("she", "her", "hers") else w for k, w in enumerate(words)]
-    return (out, (("she", "it"),)) if out != words else (words, ())
+           if w in ("she", "her", "hers", "he", "him") else "its" if w == "his" else w for k, w in enumerate(words)]
+    read = tuple(dict.fromkeys((w, k) for w, k in zip(words, out) if w != k))
+    return (out, read) if read else (words, ())

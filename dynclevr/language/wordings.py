@@ -442,7 +442,7 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
 
 # a class a vehicle falls into ('into which speed class does the red sedan fall : static , slow or fast ?')
 FALLING_INTO = (["fall", "into"], ["fall", "in"], ["fall"], ["fit", "into"], ["fit", "in"], ["fit"], ["belong", "to"],
-                ["belong", "in"], ["belong"])
+                ["belong", "in"], ["belong"], ["land", "in"], ["land", "into"])
 
 
 def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -579,7 +579,8 @@ IDIOMS = phrase_table({
     **{(*p, *label): ("after", "the", "video", *(("ends",) if label else ())) for p in (
         *(("post", *dash, film) for dash in ((), ("-",)) for film in (
             "video", "clip", "footage", "film", "recording", "feed", "rollout", "simulation", "sim", "playback",
-            "sequence", "episode", "tape", "reel", "stream", "broadcast")), ("after", "the", "video"))
+            "sequence", "episode", "tape", "reel", "stream", "broadcast", "run", "trial", "test", "session",
+            "experiment", "capture", "shoot", "race", "match", "game")), ("after", "the", "video"))
        for label in ((), *((w,) for w in ("check", "prediction", "projection", "forecast", "query", "question")))
        if p != ("after", "the", "video") or label},
     ("fade", "in"): ("the", "start"), ("fade", "out"): ("the", "end"), ("fade", "-", "in"): ("the", "start"),
@@ -627,8 +628,10 @@ IDIOMS = phrase_table({
        for seen in (("seen",), ("watched",), ("been", "shown"))},
     **{("after", "this", part): ("after", "the", "video", "ends") for part in ("bit", "part")},
     **{(d, "guy"): (d, "one") for d in ("this", "that")},
-    **{(c, "up", p, "speed"): ("accelerating",) for c in ("cranking", "ramping", "winding", "revving")
-       for p in ("its", "the", "her", "his")},
+    **{(c, "up", *p, "speed"): ("accelerating",) for c in ("cranking", "ramping", "winding", "revving", "scaling",
+                                                            "stepping", "amping", "jacking", "dialing", "dialling")
+       for p in (("its",), ("the",), ("her",), ("his",), ())},
+    **{("upping", *p, "speed"): ("accelerating",) for p in (("its",), ("the",), ("her",), ("his",), ())},
     # a Londoner's coloured 'motor' is a car ('it prangs the red motor'; 'its motor' is its engine), a pit wall's
     # 'flying at full pace' a speed (not floating)
     **{(c, "motor"): (c, "car") for c in (*COLOR_NAMES, "grey")},
@@ -647,7 +650,8 @@ IDIOMS = phrase_table({
     # a Londoner's 'have a butcher's at' (a look), 'd'ya reckon', 'bang at the start' (exactly); 'straight off'; a
     # bump one gets 'caught up in'; Gen-Alpha's 'no cap'
     ("have", "a", "butcher", "'", "s", "at"): ("at",), ("have", "a", "butcher", "'", "s"): (),
-    **{(*c, "d", "'", y, v): () for c in ((), (",",)) for y in ("ya", "you", "yer") for v in ("reckon", "think")},
+    **{(*c, "d", "'", y, v): () for c in ((), (",",)) for y in ("ya", "you", "yer", "yinz", "youse")
+       for v in ("reckon", "think", "know", "suppose")},
     ("bang", "at", "the"): ("right", "at", "the"), ("straight", "off", "at"): ("at",),
     ("straight", "off", ","): ("at", "the", "start", ","),
     **{(g, *itself, caught, "up", "in"): (g, "involved", "in") for g in ("get", "gets", "got", "getting")
@@ -1637,6 +1641,66 @@ IDIOMS = phrase_table({
     # a moment asked of as a time ('Is there any moment when the yellow car crashes with ...?')
     **{(be, "there", a, moment, when): (be, "there", "any", "time", "when") for be in ("is", "was")
        for a in ("a", "any", "ever", "some") for moment in ("moment", "instant") for when in ("when", "where")},
+    # Upper Midwest and Pittsburgh tags ('..., don'tcha know?', '..., n'at?': 'and that'), a rapper's closing
+    # lines (', don't lie?', ', tell me true?', ', know what I mean?'), a nature film's 'in its path' of what a
+    # vehicle hits (not its route), a racetrack's 'on the track' (read as 'on the truck'), the starting blocks
+    **{(*c, *dont, "know"): () for c in ((), (",",)) for dont in (("don", "'", "tcha"), ("dontcha",), ("doncha",))},
+    (",", "n", "'", "at"): (), ("n", "'", "at", "?"): ("?",),
+    **{(",", *t, "?"): ("?",) for t in (("do", "not", "lie"), ("tell", "me", "true"), ("know", "what", "i", "mean"),
+                                        ("you", "feel", "me"), ("what", "you", "got"), ("spit", "it", "back"))},
+    **{(w, "in", p, "path"): (w,) for w in ("anything", "something", "anyone", "everything")
+       for p in ("its", "his", "her", "the")},
+    ("on", "the", "track"): (),
+    # a consultant's look at something ('Let's double-click on the biplane's incident:', 'Circling back on the log,'),
+    # its fillers ('net-net', 'so we're all aligned'), a showman's 'step right up'
+    **{(*d, c, "on"): ("look", "at") for d in ((), ("double", "-")) for c in ("click", "drill", "deep", "dive")},
+    **{(*d, c, "on"): ("looking", "at") for d in ((), ("double", "-")) for c in ("clicking", "drilling")},
+    **{(c, "back", o): (look, "at") for c, look in (("circle", "look"), ("circling", "looking")) for o in ("on", "to")},
+    **{(*w, "we", c, "back", *o): () for w in (("before",), ("when",), ("once",), ("as",)) for c in ("circle", "loop")
+       for o in ((), ("on", "it"))},
+    ("net", "-", "net", ","): (), ("net", "-", "net"): (), (",", "so", "we", "'", "re", "all", "aligned"): (),
+    # a pastiche's 'meet with a crash' (have one), 'tell me true ,'; an audio guide's 'ask yourself :'; a rapper's
+    # ', straight up ,' (truly), 'in its lane', 'with a thud' (how a collision sounds), 'when the clip kicked in' (the
+    # start), its closing lines
+    **{(m, "with", a, c): (h, a, c) for m, h in (("meet", "have"), ("meets", "has"), ("met", "had"))
+       for a in ("a", "an") for c in ("crash", "collision", "accident", "impact", "smash", "bump")},
+    ("tell", "me", "true", ","): (), **{("ask", "yourself", p): () for p in (":", ",")},
+    **{(*c, "and", "ask", "yourself", ":"): (":",) for c in ((), (",",))},
+    (",", "straight", "up", ","): (",",),
+    **{("in", d, "lane"): () for d in ("the", "its", "his", "her", "their", "a")},
+    **{("with", a, t): () for a in ("a", "an") for t in ("thud", "bang", "crunch", "clang", "boom", "wallop", "thump")},
+    **{(w, "the", f, k, "in"): _START for w in ("when", "as") for f in ("video", "clip", "footage", "film")
+       for k in ("kicked", "kicks")},
+    **{(",", *t, "?"): ("?",) for t in (("what", "'", "s", "up"), ("that", "'", "s", "the", "score"),
+                                        ("is", "that", "a", "fact"))},
+    # a West African's 'small-small' (slowly), a chess commentator's tempo (pace), a gangster's tags, 'slug' (hit)
+    **{("small", *d, "small"): ("slowly",) for d in ((), ("-",))},
+    **{(p, "up", "tempo"): (p, "up", "speed") for p in ("pick", "picks", "picking", "picked")},
+    **{(",", t, "?"): ("?",) for t in ("see", "capiche", "capisce", "savvy")}, ("tell", "me", "straight", ","): (),
+    # a Brummie's 'ar' (yes), 'our kid' (whom it is asked), 'the frames what's left', 'tara' (goodbye)
+    ("ar", "or", "no"): ("yes", "or", "no"), (",", "our", "kid"): (), ("our", "kid", ","): (),
+    **{(p, "the", "frames", "what", "'", "s", "left"): ("after", "the", "video", "ends") for p in ("in", "during")},
+    (",", "tara"): (), ("tara", ","): (), ("then", "tara"): (),
+    # Cornwall's 'my 'ansum' (whom it is asked) and a closing ', then'; a question's 'tell me (the truth) ,' said
+    # within it ('At first, tell me, is ...'), 'straight up' (honestly) before or after it; 'goes and hits' (hits)
+    **{(*c, "my", "'", "ansum", *e): () for c, e in (((",",), ()), ((), (",",)))},
+    (",", "then", ",", "my"): (",", "my"), **{(",", "then", e): (e,) for e in ("?", "!")},
+    **{(",", "tell", "me", *t, ","): (",",) for t in ((), ("the", "truth"), ("true",), ("straight",))},
+    ("tell", "me", "the", "truth", ","): (),
+    **{("straight", "up", ",", aux): (aux,) for aux in ("is", "was", "does", "did", "will", "are", "were", "do", "has",
+                                                       "would", "when", "at", "in", "what", "which", "how")},
+    (",", "straight", "up", "?"): ("?",),
+    **{(g, "and", v): (v,) for g in ("go", "goes", "went", "going") for v in (
+        "hit", "hits", "strike", "strikes", "struck", "crash", "crashes", "crashed", "smash", "smashes", "smashed",
+        "bump", "bumps", "bumped", "bang", "bangs", "banged", "slam", "slams", "slammed", "run", "runs", "ran")},
+    # a Londoner's rhyming slang ('the old jam jar', a car; 'no porkies', no lies) and pace ('at a fair old lick',
+    # 'like the clappers'), a New Yorker's 'whaddaya think'
+    ("jam", "jar"): ("car",), ("no", "porkies", "now", ":"): (), ("no", "porkies", ","): (),
+    **{(*a, "fair", "old", "lick"): ("fast",) for a in (("at", "a"), ("a",))}, ("like", "the", "clappers"): ("fast",),
+    **{(",", w, "think", "?"): ("?",) for w in ("whaddaya", "whaddya", "watcha", "whatcha")},
+    ("quick", "level", "-", "set"): ("quick", "note"), ("step", "right", "up", ","): (), ("step", "right", "up"): (),
+    **{(*r, o, "the", b): _START for r in ((), ("right",)) for o in ("off", "out", "outta")
+       for b in ("block", "blocks", "gate", "gates")},
 }.items())
 COMING = ("comes", "come", "came", "coming")
 SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
@@ -1686,10 +1750,12 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         if not (speed or motion) or k >= len(words) or words[k] not in ("as", "like") or (
                 motion and words[k] != "like"):
             continue
-        # a simile has its article ('slow as a snail'; 'as the video begins' is a time, 'like mad' an idiom)
+        # a simile has its article ('slow as a snail'; 'as the video begins' is a time, 'like mad' an idiom, and so
+        # is 'like the clappers')
         article = words[k + 1:k + 2]
         if article not in (["a"], ["an"], ["the"]) or article == ["the"] and words[k] == "as" and \
-                words[k + 2:k + 3] not in (["wind"], ["breeze"], ["grave"]):
+                words[k + 2:k + 3] not in (["wind"], ["breeze"], ["grave"]) or \
+                any(tuple(words[k:k + len(p)]) == p for p, _ in IDIOMS.get(words[k], ())):
             continue
         j = k + 2
         end = j

@@ -28,11 +28,15 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  # a fan's Japanese ('yabai, was the cyan one ...', 'sugoi!')
                  "yabai", "sugoi", "nani", "kawaii", "ara", "hontou", "desu", "uwu", "owo",
                  # and Gen-Alpha's ('gyatt when the bike smashes into ...')
-                 "gyatt", "bruh", "skibidi"} | CHAT
+                 "gyatt", "bruh", "skibidi",
+                 # and a showman's ('Wowee, what a smash, ...')
+                 "wow", "wowee", "whoa", "gosh", "golly", "yikes", "jeez",
+                 # a cab driver's horn, a New Yorker's 'nu' and 'oy'
+                 "honk", "beep", "nu", "oy", "oi"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
-PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po", "sha"}
+PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po", "sha", "ah", "wor"}   # (Hong Kong's 'ah')
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
            "honestly", "quite", "totally", "whatsoever", "indeed", "plumb", "pray"}
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
@@ -40,7 +44,7 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
                          "thanks", "cheers", "tho",
                          # and the particles regional Englishes close with ('they collide or not, lah?', '..., abi?')
                          "lah", "leh", "lor", "abi", "innit", "eh", "mate", "ken", "yeah", "na", "yaar", "diba",
-                         "naman", "po", "sha",
+                         "naman", "po", "sha", "ah", "wor",
                          # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
                          "affirmative", "roger", "ne", "desu", "nani",
                          # ... and a streamer's chat's emotes ('does it hit anything KEKW')
@@ -104,7 +108,7 @@ IMPERATIVES = (["tell", "me"], ["describe"], ["give", "me"], ["state"], ["name"]
 ASKING_FOR = (*IMPERATIVES, ["identify"], ["determine"], ["report"], ["find"], ["give"], ["list"])
 AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"],
                  ["is", "that", "right"], ["is", "that", "correct"], ["am", "i", "right"], ["am", "i", "correct"],
-                 ["would", "you", "say", "so"], ["right", "or", "wrong"],
+                 ["would", "you", "say", "so"], ["right", "or", "wrong"], ["is", "that", "true"], ["is", "it", "true"],
                  ["straight", "up"], ["for", "real"], ["no", "cap"], ["deadass"], ["fr"])   # and slang's
 
 
