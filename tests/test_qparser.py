@@ -4506,3 +4506,31 @@ def test_a_moment_said_before_a_premise_heard_and_regional_words():
     assert "Counterfactual_static" in brummie
     assert track[-1] == "query_attributes[color]" and "filter_attributes[truck]" not in track
     assert ah[:2] == ["Events", "Objects"] and eer[0] == "Events"
+
+
+def test_remarks_on_people_or_vehicles_at_large_are_no_correction_and_a_showman_a_coach_and_a_caster_are_read():
+    parser = QuestionParser.load()
+    tandem, bus, jets, hogs = parser.parse_batch([
+        "Is the blue tandem bike picking up speed at the start? Two people on one bike, I ask you.",
+        "If the regular bus had been speeding up at the start of the clip, would it still have hit the mountain bike? "
+        "Back in my day bus drivers knew better.",
+        "Jets bumping into cars, what's the world coming to - when the gray jet hits the car, is it static, slow, or "
+        "fast?",
+        "Blasted road hogs - is the blue sedan going quicker than the red truck when the two of them collide?"])
+    assert "filter_attributes[tandem_bike]" in tandem                          # (read as any bicycle)
+    assert "filter_attributes[regular_bus]" in bus                             # (read as any bus)
+    assert jets[:3] == ["Objects", "filter_attributes[gray]", "filter_attributes[jet]"]   # (read about the car)
+    assert hogs[-1] == "faster_velocity"
+    # a correction after the question still corrects, and a remark that names a colour is no remark
+    assert parser.parse("Is the sedan fast at the start? The red one, I mean.")[1:3] == [
+        "filter_attributes[red]", "filter_attributes[sedan]"]
+    eyes, unpack, rotates, softly = parser.parse_batch([
+        "Keep your eyes on the blue wagon, friends: at the moment it collides with the cyan regular bus, is it static, "
+        "moving slowly or moving fast?",
+        "Let's unpack this moment of impact: which direction is the car moving when it collides with the bicycle?",
+        "The gray wagon rotates in, how fast is it moving when it first shows up?",
+        "Softly now, in the first frames, which model is the stopped one, if you please?"])
+    assert eyes[-3:] == ["unique", "get_frame", "query_moving_velocity"]
+    assert unpack[-1] == "query_moving_direction" and "get_frame" in unpack
+    assert "come_in_frame" in rotates                                          # (refused as a turn)
+    assert softly[-3:] == ["filter_static", "unique", "query_attributes[shape]"]

@@ -22,8 +22,8 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIA
                                      DURATIONS, END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS,
                                      HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS, INTERJECTIONS,
                                      LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
-                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PLURALS, QUERY_NOUNS,
-                                     QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES,
+                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
+                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES,
                                      SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
                                      TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
 
@@ -38,7 +38,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "kiddo", "kids", "children", "class", "teacher", "auntie", "aunty", "uncle", "pal", "guys", "folks",
              "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam",
              "machan", "pet", "flight",   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
-             "bab", "darlin", "sugar", "doll"}   # a Brummie's 'bab', a gossip's and a gangster's
+             "bab", "darlin", "sugar", "doll",   # a Brummie's 'bab', a gossip's and a gangster's
+             "friends", "people"}   # a showman's ('Now observe the gray airliner, my friends: ...')
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -57,6 +58,33 @@ def _says_nothing(tail: list[str]) -> bool:
     return not asks_impact(tail) and not set(tail) & (
         OBJECT_WORDS | FILM_WORDS | START_WORDS | HEADING_KEPT | MOTION_WORDS | MOTION_DESCRIPTIONS | QUERY_NOUNS
         | {"?", "which", "what", "how"}) and tail[0] not in ("give", "tell", "name", "state", "say")
+
+
+# how the question after a remark's dash opens ('These young bikers never learn - is the yellow motorbike ...'; not
+# a hyphen's second word: 'after block-in')
+AFTER_DASH = QUESTION_OPENERS | CONDITION_OPENERS | {"when", "if", "had", "suppose", "imagine"}
+# whom a remark is about: people and vehicles at large ('Blasted scooters and choppers -', 'Young hooligans -'), never
+# one of the video's ('the one sitting at a simmer from the get-go - what kind of vehicle is that?')
+REMARKED = PEOPLE | {"nobody", "folk", "youngsters", "hooligans", "tearaways", "bikers", "hogs", "fool", "hothead"}
+UNREMARKED = {"one", "ones", "something", "somethin", "thing", "things", "vehicle", "vehicles", "object", "objects",
+              "it", "its", "them", "this", "that"}
+
+
+def _at_large(words: list[str]) -> bool:
+    """Whether words speak of people or vehicles at large and of none of the video's ('Blasted scooters and choppers',
+    'Back in my day bus drivers knew better'; not 'the one sitting at a simmer', 'the white sedan')."""
+    return any(w in REMARKED or w in PLURALS or w[-1:] == "s" and (w[:-1] in OBJECT_WORDS or w[:-2] in OBJECT_WORDS)
+               for w in words) and not set(words) & (set(COLOR_NAMES) | OTHER_COLOURS | UNREMARKED) and \
+        not any(w in OBJECT_WORDS and nxt not in PEOPLE for w, nxt in zip(words, words[1:] + [""]))
+
+
+def _grumbled(tail: list[str]) -> bool:
+    """Whether a sentence after the question is a remark on vehicles or people at large ('? Back in my day bus
+    drivers knew better.'): a statement that names no time, motion, speed or property, asks nothing and says no
+    collision."""
+    return tail[-1:] in ([","], ["."], ["!"]) and len(tail) <= 14 and _at_large(tail) and not asks_impact(tail) and \
+        not set(tail) & (START_WORDS | END_WORDS | FILM_WORDS | MOTION_WORDS | SPEED_CLASS_WORDS | QUERY_NOUNS
+                         | NEGATIONS | {"?", "mean", "meant"}) and tail[0] not in ("give", "tell", "name", "state")
 
 
 def _unremarked(remark: list[str]) -> list[str]:
@@ -155,7 +183,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     said = tuple((words[j], "nothing, a particle") for j in particles)
     words = [w for j, w in enumerate(words) if j not in particles]
     addressed = [j for j in range(1, len(words) - 1) if words[j] in ADDRESSED and words[j - 1] == ","
-                 and words[j + 1] in (",", "?", "!", ".")]
+                 and words[j + 1] in (",", "?", "!", ".", ":")]
     addressees = " ".join(words[j] for j in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
         words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
@@ -180,7 +208,8 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # a vehicle, a time, a motion or a collision
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
-    if tail and (tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail):
+    if tail and ((tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail)
+                 or _grumbled(tail)):
         end = asked + 1
     # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
     thanked = max((j for j in range(k, end - 1) if words[j] == "." and words[j + 1] in THANKING), default=None)
@@ -1246,6 +1275,21 @@ def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     while words[end + 1:end + 2] in (["!"], ["?"]):
         end += 1
     return words[end + 1:], (*read, (" ".join(words[:end + 1]), "nothing, a teaser"))
+
+
+def grumble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'blasted scooters and choppers - are the yellow scooter and the red chopper going to crash ...' -> 'are the
+    yellow scooter and the red chopper going to crash ...': a remark before a dash on vehicles or people at large
+    (plural, or a vehicle's word before its driver's: 'bus drivers'), naming no colour, time or condition. With the
+    remark read as nothing, or the words as they are and ()."""
+    k = next((k for k in range(2, len(words) - 1) if words[k] == "-" and words[k + 1] in AFTER_DASH), None)
+    if k is None:
+        return words, ()
+    head = words[:k]
+    if not _at_large(head) or set(head) & (START_WORDS | END_WORDS | FILM_WORDS | CONDITION_OPENERS | IMAGINING
+                                           | {"?", "if", "had"}):
+        return words, ()
+    return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a remark"),)
 
 
 def _then_said(words: list[str]) -> bool:

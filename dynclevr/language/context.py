@@ -17,9 +17,9 @@ from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_contin
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
                                      COPULAS, DETERMINERS, END_TIMES, FILLERS, GENERIC, GENERIC_NOUNS, HEADING_KEPT,
                                      IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS,
-                                     MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, QUERY_NOUNS, QUESTION_OPENERS,
-                                     SENTENCE_ENDS, SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS,
-                                     TIME_OPENERS, UNMOVED, UNNAMED, asks_impact, _at)
+                                     MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, PEOPLE, QUERY_NOUNS,
+                                     QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS,
+                                     START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED, _at, asks_impact)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -831,8 +831,11 @@ def _remark(said: list[str]) -> bool:
     words = [w for w in said if w not in (".", "!")]
     corrected = any(w == "not" and nxt in {"the", "a", "an", "that", "this", *COLOR_NAMES}
                     for w, nxt in zip(words, words[1:]))   # '..., not the red'
-    return bool(words) and said[-1] != "?" and words[0] in REMARK_OPENERS and not RESTATING & set(words) \
-        and not corrected and not _one_vehicle(words)
+    # (or on people at large, whom no video shows: '? Back in my day bus drivers knew better.', '? Two people on one
+    # bike, I ask you.')
+    people = PEOPLE & set(words) and not set(COLOR_NAMES) & set(words)
+    return bool(words) and said[-1] != "?" and not corrected and (
+        people or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
 
 
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -52,10 +52,10 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_read, corrections_dropped,
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
-                                      examination_as_asked, framing_dropped, hedges_dropped, hooks_dropped,
-                                      hypothesis_as_asked, interjections_dropped, owners_dropped, preamble_dropped,
-                                      prompt_dropped, radio_as_asked, ramble_dropped, requested_as_asked,
-                                      restatements_read, ticket_fields_read, wagers_read)
+                                      examination_as_asked, framing_dropped, grumble_dropped, hedges_dropped,
+                                      hooks_dropped, hypothesis_as_asked, interjections_dropped, owners_dropped,
+                                      preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
+                                      requested_as_asked, restatements_read, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -400,6 +400,8 @@ class QuestionParser:
         owned += spoken_to
         words, teased = hooks_dropped(words)
         words, labelled = asides_dropped(words)
+        words, grumbled = grumble_dropped(words)
+        labelled += grumbled
         labelled = teased + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)

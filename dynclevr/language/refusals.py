@@ -32,8 +32,9 @@ from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTR
                                      COMES_IN_WORDS, COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS,
                                      END_TIMES, ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING,
                                      LATER_TIMES, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS,
-                                     OTHER_VEHICLES, PARTNER_SAID, PLURALS, REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS,
-                                     SPEED_NOUNS, START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS, asks_impact, _head)
+                                     OTHER_VEHICLES, PARTNER_SAID, PEOPLE, PLURALS, REST_WORDS, ROUGHLY,
+                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS,
+                                     _head, asks_impact)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -365,9 +366,6 @@ GROUND = {"ground", "floor"}
 FACING = {"facing", "faces", "pointing", "pointed", "points", "oriented", "orientated", "orientation"}
 KNOCKING = {"knock", "knocks", "knocked", "knocking", "keel", "keels", "keeled"}   # '... over': a pose
 LANES = {"lane", "lanes"}   # 'does it change lanes?': a turn
-# no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
-PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
-          "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
 DRIVING = {"driving", "drives", "drove", "driven", "riding", "rides", "rode", "ridden", "piloting", "pilots",
            "piloted", "flying", "flies", "flew", "steering", "steers", "steered", "operating", "operates",
            "controlling", "controls", "in", "inside", "on", "aboard"}

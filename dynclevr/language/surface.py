@@ -529,10 +529,12 @@ CREOLE_WORDS = {"di": "the", "da": "the", "dat": "that", "dis": "this", "dem": "
                 "wid": "with", "neva": "never", "anodda": "another", "seh": "say", "mi": "me",
                 # Trinidadian's ('de', 'yuh', 'buss', 'real fast fast'), Bajan's ('gine', 'wunna', 'lef')
                 "de": "the", "yuh": "you", "wha": "what", "buss": "crash", "real": "very", "gine": "will",
-                "wunna": "you", "lef": "left"}
+                "wunna": "you", "lef": "left",
+                # Guyanese ('de one dat deh moving fast', 'when de bus bounce de aeroplane')
+                "deh": "is", "bounce": "hit"}
 CREOLE_MARKERS = {"di", "da", "dat", "dey", "wey", "wetin", "inna", "nuh", "dan", "demself", "woulda", "abi", "anot",
                   "langgar", "bumbye", "afta", "wah", "weh", "wen", "lah", "leh", "lor", "abeg", "don", "neva",
-                  "anodda", "seh", "yuh", "doh", "gine", "wunna", "cuh"}
+                  "anodda", "seh", "yuh", "doh", "gine", "wunna", "cuh", "deh"}
 CREOLE_PHRASES = phrase_table([
     (("a", "di"), ("at", "the")), (("did", "a"), ("did",)), (("o", "wat"), ("or", "what")),
     (("anot",), ("or", "not")), *(((p,), ()) for p in ("lah", "leh", "lor", "sia", "meh", "ah", "abeg")),
@@ -547,7 +549,7 @@ CREOLE_PHRASES = phrase_table([
     *(((v, "inna"), (h, "into")) for v, h in (("smash", "smash"), ("crash", "crash"), ("bounce", "crash"),
                                               ("run", "run"), ("slam", "slam"), ("bump", "bump"), ("lick", "hit"),
                                               ("drive", "drive"))),
-    (("same", "time"), ("when",)), (("tell", "mi", "nuh"), ("tell", "me")),
+    (("same", "time"), ("when",)), (("tell", "mi", "nuh"), ("tell", "me")), (("tell", "me", "nuh"), ("tell", "me")),
     (("one", "place"), ("still",)), (("mo", "fast"), ("faster",)), (("mo", "slow"), ("slower",)),
     (("beginning", "time"), ("at", "the", "beginning")), (("kind", "a"), ("kind", "of")),
     # Trinidadian's 'buss up into' and 'lick up' (crash), 'go' before a verb (will), 'fast fast' (very), its tags

@@ -1680,6 +1680,8 @@ IDIOMS = phrase_table({
     # a Brummie's 'ar' (yes), 'our kid' (whom it is asked), 'the frames what's left', 'tara' (goodbye)
     ("ar", "or", "no"): ("yes", "or", "no"), (",", "our", "kid"): (), ("our", "kid", ","): (),
     **{(p, "the", "frames", "what", "'", "s", "left"): ("after", "the", "video", "ends") for p in ("in", "during")},
+    **{(p, "what", "'", "s", "left", "of", "the", v): ("after", "the", "video", "ends") for p in ("in", "during")
+       for v in ("video", "clip", "footage", "film")},
     (",", "tara"): (), ("tara", ","): (), ("then", "tara"): (),
     # Cornwall's 'my 'ansum' (whom it is asked) and a closing ', then'; a question's 'tell me (the truth) ,' said
     # within it ('At first, tell me, is ...'), 'straight up' (honestly) before or after it; 'goes and hits' (hits)
@@ -1698,6 +1700,22 @@ IDIOMS = phrase_table({
     ("jam", "jar"): ("car",), ("no", "porkies", "now", ":"): (), ("no", "porkies", ","): (),
     **{(*a, "fair", "old", "lick"): ("fast",) for a in (("at", "a"), ("a",))}, ("like", "the", "clappers"): ("fast",),
     **{(",", w, "think", "?"): ("?",) for w in ("whaddaya", "whaddya", "watcha", "whatcha")},
+    # a showman's 'my friends' and 'keep your eyes on'; a coach's 'let's unpack this (moment)', 'lean into it'; an
+    # esports caster's 'rotates into view' (comes into it) and 'ramping up', 'land a hit on'; a librarian's 'softly
+    # now'
+    **{(",", "my", f, e): (e,) for f in ("friends", "people", "dear") for e in (",", ":", "?", "!")},
+    **{(k, "your", e, "on"): ("look", "at") for k in ("keep", "fix") for e in ("eyes", "eye", "gaze")},
+    **{(d, "your", g, "to"): ("look", "at") for d in ("direct", "turn", "cast") for g in ("gaze", "eye", "eyes")},
+    **{("let", "'", "s", "unpack", "this", *m, ":"): () for m in ((), ("moment",), ("crash", "moment"), ("one",),
+                                                                  ("moment", "of", "impact"))},
+    **{(*l, "lean", "into", *it, ":"): () for l in ((), ("let", "'", "s")) for it in (
+        ("it",), ("it", "with", "me"), ("this",), ("the", "comparison"))},
+    **{(r, i, *t): (c, "into", "view") for r, c in (("rotates", "comes"), ("rotating", "coming"), ("rotated", "came"),
+                                                    ("rotate", "come")) for i, t in (("into", ("view",)),
+                                                                                    ("into", ("frame",)), ("in", ()))},
+    ("ramping", "up"): ("speeding", "up"), ("ramps", "up"): ("speeds", "up"),
+    **{(l, "a", "hit", "on"): (h,) for l, h in (("land", "hit"), ("lands", "hits"), ("landed", "hit"))},
+    **{("softly", *n, p): () for n in ((), ("now",)) for p in (",", ":")},
     ("quick", "level", "-", "set"): ("quick", "note"), ("step", "right", "up", ","): (), ("step", "right", "up"): (),
     **{(*r, o, "the", b): _START for r in ((), ("right",)) for o in ("off", "out", "outta")
        for b in ("block", "blocks", "gate", "gates")},

@@ -32,7 +32,7 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  # and a showman's ('Wowee, what a smash, ...')
                  "wow", "wowee", "whoa", "gosh", "golly", "yikes", "jeez",
                  # a cab driver's horn, a New Yorker's 'nu' and 'oy'
-                 "honk", "beep", "nu", "oy", "oi"} | CHAT
+                 "honk", "beep", "nu", "oy", "oi", "shh", "shhh", "psst"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
@@ -354,3 +354,6 @@ def _head(words: list[str]) -> list[str]:
     k = 1 + (words[1:2] in ROUGHLY)
     return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
         words[k:k + 1] and words[k] in ASKING) else words
+# no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
+PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
+          "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
