@@ -106,7 +106,7 @@ CALLS = (["do", "i", "hear"], ["gimme"], ["give", "me"], ["who", "'", "ll", "say
 LOT_NUMBERS = {"number", "no", "-", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
                "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen",
                "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"}
-CALLED = {"yes", "no", "static", "slow", "fast", "left", "right", "front", "back", "up", "down"}
+BIDS = {"yes", "no", "static", "slow", "fast", "left", "right", "front", "back", "up", "down"}   # a call offers
 CALLED_FOR = {"answer", "bid", "colour", "color", "direction", "model", "type", "kind", "speed"}
 
 
@@ -114,7 +114,7 @@ def _call(words: list[str], k: int) -> int:
     """How many words a call for a bid takes at words[k] ('do i hear a', 'gimme an', a second's 'or a'); 0 where
     none."""
     n = next((len(c) for c in (*CALLS, ["or"]) if words[k:k + len(c)] == c), 0)
-    if n == 1 and words[k] == "or" and not (k and words[k - 1] in CALLED and words[k + 1:k + 2] in (["a"], ["an"])):
+    if n == 1 and words[k] == "or" and not (k and words[k - 1] in BIDS and words[k + 1:k + 2] in (["a"], ["an"])):
         return 0
     return n + (words[k + n:k + n + 1] in (["a"], ["an"])) if n else 0
 
@@ -163,6 +163,7 @@ def calls_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]
     return out, tuple(read)
 
 
+# a caller's haste ('real quick ,', an Upper Midwesterner's 'real quick there ,')
 HASTE = [["real", q, *there, ","] for q in ("quick", "fast") for there in ((), ("there",))]
 
 
@@ -525,15 +526,21 @@ ATTENTION_TO = sorted({(verb, *whose, "attention", "to") for verb in ("directing
                       key=len, reverse=True)
 
 
+# how a question of its own opens after a premise heard ('..., so what colour ...', '...; is it ...')
+ASKED_AFTER = {"what", "which", "how", "at", "will", "is", "does", "do", "did", "was"}
+
+
 def _asked_after(words: list[str], k: int) -> bool:
     """Whether a question of its own follows the clause at words[k:] ('..., so what colour is ...', '...; what kind of
-    vehicle is it?'), not a confirmation ('...; can we confirm that?')."""
-    if words[-3:-2] == [","] and words[-2] in ADDRESSED:   # ('...; is that true , darling ?')
+    vehicle is it?'), not a confirmation ('...; can we confirm that?', '...; is that true , darling ?')."""
+    if words[-3:-2] == [","] and words[-2] in ADDRESSED:
         words = words[:-3] + words[-1:]
-    return any(words[j] in (",", ";", ".", ":", "-") and words[j + 1 + (words[j + 1:j + 2] in (["so"], ["then"]))
-                                                               :][:1] in (["what"], ["which"], ["how"], ["at"], ["will"],
-                                                                          ["is"], ["does"], ["do"], ["did"], ["was"])
-               and words[j:] not in CONFIRM_ENDS for j in range(k, len(words) - 1))
+    for j in range(k, len(words) - 1):
+        opener = j + 1 + (words[j + 1] in ("so", "then"))
+        if words[j] in (",", ";", ".", ":", "-") and words[opener:opener + 1] and words[opener] in ASKED_AFTER and \
+                words[j:] not in CONFIRM_ENDS:
+            return True
+    return False
 
 
 def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
