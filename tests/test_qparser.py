@@ -4534,3 +4534,17 @@ def test_remarks_on_people_or_vehicles_at_large_are_no_correction_and_a_showman_
     assert unpack[-1] == "query_moving_direction" and "get_frame" in unpack
     assert "come_in_frame" in rotates                                          # (refused as a turn)
     assert softly[-3:] == ["filter_static", "unique", "query_attributes[shape]"]
+
+
+def test_a_call_centre_agent_s_courtesies_and_requests_and_a_butler_s_are_read():
+    parser = QuestionParser.load()
+    confirm, ask, could, enquire = parser.parse_batch([
+        "Thank you for holding; may I confirm whether the yellow truck is zooming along at the start?",
+        "Thanks ever so much for holding; may I ask which direction the car is moving in when it collides with the "
+        "bicycle?",
+        "Thank you for your patience; could you confirm the motion state of the brown mountain bike at the outset?",
+        "What model, if I may enquire, is the thing that is in the air at the start of the video?"])
+    assert confirm[-2:] == ["start", "is_moving_velocity[fast]"]
+    assert ask[-1] == "query_moving_direction" and "get_frame" in ask
+    assert could[-2:] == ["start", "query_moving_velocity"]                    # (read as yes or no)
+    assert enquire[-3:] == ["filter_floating", "unique", "query_attributes[shape]"]

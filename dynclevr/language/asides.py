@@ -39,6 +39,7 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "everyone", "chat", "bro", "dude", "mate", "buddy", "sis", "fam",
              "machan", "pet", "flight",   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
              "bab", "darlin", "sugar", "doll",   # a Brummie's 'bab', a gossip's and a gangster's
+             "sir", "madam", "maam",   # a butler's ('There is an object going ever faster, sir; what colour ...')
              "friends", "people"}   # a showman's ('Now observe the gray airliner, my friends: ...')
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
@@ -512,7 +513,8 @@ EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know
                              *(("correct", "me", "if", *i, "wrong", *but) for i in (("i", "'", "m"), ("i", "am"))
                                for but in ((), (",", "but"), ("but",))),
                              # a formal speaker's ('what kind of vehicle, if one may so ask, is ...')
-                             *(("if", who, may, *so, "ask") for who in ("i", "one", "we") for may in ("may", "might")
+                             *(("if", who, may, *so, ask) for who in ("i", "one", "we") for may in ("may", "might")
+                               for ask in ("ask", "enquire", "inquire")
                                for so in ((), ("so",)))}, key=len, reverse=True)
 # the court said for 'me' ('Tell the court whether ...', 'Explain to the jury how fast ...', 'Walk us through ...')
 AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],

@@ -1716,6 +1716,19 @@ IDIOMS = phrase_table({
     ("ramping", "up"): ("speeding", "up"), ("ramps", "up"): ("speeds", "up"),
     **{(l, "a", "hit", "on"): (h,) for l, h in (("land", "hit"), ("lands", "hits"), ("landed", "hit"))},
     **{("softly", *n, p): () for n in ((), ("now",)) for p in (",", ":")},
+    # a call-centre agent's courtesies ('Thank you for your patience;', 'This call may be recorded for quality
+    # purposes;', 'Just to confirm on my end,') and requests ('may I confirm whether ...', 'may I ask which ...'); a
+    # toastmaster's and a butler's ('Ladies and gentlemen,', 'if I may have your attention:')
+    **{(*t, "for", *h, p): () for t in (("thank", "you"), ("thanks",), ("thanks", "ever", "so", "much"),
+                                         ("thank", "you", "ever", "so", "much"), ("thanks", "so", "much"))
+       for h in (("your", "patience"), ("holding",), ("waiting",), ("calling",)) for p in (";", ",", ":", ".")},
+    **{(*l, "thank", "you", p): () for l in (("lovely", ","), ()) for p in (";", ":")},
+    **{("this", "call", "may", "be", "recorded", "for", "quality", "purposes", p): () for p in (";", ",", ".", ":")},
+    **{("just", "to", c, "on", "my", "end", ","): () for c in ("confirm", "check", "verify")},
+    **{("may", "i", v): ("tell", "me") for v in ("confirm", "ask", "check", "verify")},
+    **{(c, "you", "confirm", "the"): ("tell", "me", "the") for c in ("could", "can", "would")},
+    **{(*c, "ladies", "and", "gentlemen", p): () for c in ((), (",",)) for p in (",", ":", "!")},
+    **{("if", "i", "may", "have", "your", "attention", p): () for p in (",", ":")},
     ("quick", "level", "-", "set"): ("quick", "note"), ("step", "right", "up", ","): (), ("step", "right", "up"): (),
     **{(*r, o, "the", b): _START for r in ((), ("right",)) for o in ("off", "out", "outta")
        for b in ("block", "blocks", "gate", "gates")},
