@@ -4323,8 +4323,9 @@ def test_a_clause_of_a_collision_is_never_dropped_to_read_at_the_start():
     assert bash[-3:] == ["unique", "get_frame", "slower_velocity"]
     assert unmarked[1] == "filter_attributes[bus]" and unmarked[-1] == "is_moving_velocity[fast]"
     assert "Counterfactual_static" in assumed
-    assert_refused(parser, {"lol when the blue bicycle smashes into the green airliner is it going fast?":
-                            "asks at a collision"})
+    # (once read at the start, then refused; a collision told before the question is its time now)
+    assert parser.parse("lol when the blue bicycle smashes into the green airliner is it going fast?")[-3:] == [
+        "unique", "get_frame", "is_moving_velocity[fast]"]
 
 
 def test_a_market_s_words_kenyan_ama_and_newfoundland_s_tag():
@@ -4548,3 +4549,74 @@ def test_a_call_centre_agent_s_courtesies_and_requests_and_a_butler_s_are_read()
     assert ask[-1] == "query_moving_direction" and "get_frame" in ask
     assert could[-2:] == ["start", "query_moving_velocity"]                    # (read as yes or no)
     assert enquire[-3:] == ["filter_floating", "unique", "query_attributes[shape]"]
+
+
+def test_a_collision_told_before_the_question_is_its_time_and_a_teller_s_and_is_no_question():
+    parser = QuestionParser.load()
+    heading, faster, struck, aeroplane = parser.parse_batch([
+        "The yellow car came crashing into the green motorbike, and then... which direction was the yellow car "
+        "heading: left, right, front, back, up or down?",
+        "And lo, the green tandem bike and the blue wagon crash together; is the tandem bike going more rapidly than "
+        "the wagon?",
+        "And then the SUV hit the gray minivan... in what direction was that SUV travelling when it struck?",
+        "And when the brown aeroplane shows up at the crossing, is it static, moving slowly or moving fast, sir?"])
+    assert heading[-3:] == ["unique", "get_frame", "query_moving_direction"]   # (read at the start)
+    assert faster[-3:] == ["unique", "get_frame", "faster_velocity"]          # (read at the start)
+    assert struck[-3:] == ["unique", "get_frame", "query_moving_direction"]    # (refused)
+    assert aeroplane[-2:] == ["come_in_frame", "query_moving_velocity"]      # (read at the start)
+    # a collision of another vehicle leaves the question at the start, and a time of its own stays
+    assert parser.parse("The SUV hit the gray minivan. Is the red car moving fast?")[-2:] == [
+        "start", "is_moving_velocity[fast]"]
+    assert parser.parse("The SUV hit the gray minivan. Was the SUV moving fast at the start?")[-2:] == [
+        "start", "is_moving_velocity[fast]"]
+
+
+def test_a_controller_a_preacher_an_estate_agent_a_teacher_and_a_meditation_guide_are_read():
+    parser = QuestionParser.load()
+    again, flock, home, anyone = parser.parse_batch([
+        "Say again, had the tandem bike been picking up speed from the start, would it have collided with the jet?",
+        "Let us consider the red biplane, dear flock: was it flying aloft in the first frames?",
+        "Is the minivan's engine running at the beginning, as you'd expect in a well-appointed family home?",
+        "Right at the start, can anyone tell me what colour the one that's getting faster is?"])
+    assert again[3] == "Counterfactual_accelerating" and again[-1] == "exist"   # (refused as how often)
+    assert flock[-2:] == ["start", "is_floating"]
+    assert home[-2:] == ["start", "is_accelerating"]
+    assert anyone[-1] == "query_attributes[color]"
+    breathe, rest, nobody = parser.parse_batch([
+        "As the brown truck hits the cyan object, breathe softly and notice: is the truck travelling more slowly "
+        "than that cyan object?",
+        "At the beginning of the video, let your eyes rest on the vehicle that is stationary; what colour is it?",
+        "At the beginning, something was speeding up, nobody knows why... what was the type of that thing?"])
+    assert breathe[-1] == "slower_velocity" and "get_frame" in breathe      # (refused: 'softly' a collision's)
+    assert rest[-3:] == ["filter_static", "unique", "query_attributes[color]"]
+    assert nobody[-1] == "query_attributes[shape]"                           # (refused as asking why)
+    # a description after the last comma that names a vehicle or offers answers is no aside
+    for said in ("which vehicle hits the bus , a car or a truck ?", "is it fast , a yes or a no ?"):
+        assert interjections_dropped(said.split())[0] == said.split()
+
+
+def test_a_news_anchor_a_regency_lady_a_quest_giver_and_a_grandmother_are_read():
+    parser = QuestionParser.load()
+    clips, reports, pray, mark = parser.parse_batch([
+        "The jet comes in and clips the red scooter; what was the jet's speed on that play: stationary, slow or fast?",
+        "Reports are coming in about the yellow minivan: is it involved in a collision?",
+        "I dare say something is keeping itself aloft as the video starts; pray, what colour is that object staying in "
+        "the air?",
+        "Mark well the moment the cyan car and the yellow SUV collide, seeker: is the cyan car going faster than the "
+        "yellow SUV?"])
+    assert clips[-3:] == ["unique", "get_frame", "query_moving_velocity"]     # (read as it came into view)
+    assert reports[:3] == ["Events", "Objects", "filter_attributes[yellow]"] and reports[-1] == "exist"
+    assert pray[-3:] == ["filter_floating", "unique", "query_attributes[color]"]
+    assert mark[-3:] == ["unique", "get_frame", "faster_velocity"]
+    bless, nan, true = parser.parse_batch([
+        "Bless them both, at the beginning is the blue biplane going slower than the yellow biplane?",
+        "Tell your old nan, pet, what colour is the one that's zooming along fast at the very start of the clip?",
+        "Tell me true, Traveller: is the minivan standing still when it bumps into the gray one?"])
+    assert bless[-2:] == ["start", "slower_velocity"]
+    assert nan[-3:] == ["filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+    assert true[-3:] == ["unique", "get_frame", "is_static"]
+    # a report of something ('Reports are coming in of ...') is no premise but the context; 'in the clip' is the video
+    assert parser.parse("Reports are coming in of the blue SUV bumping into the brown car; in which direction was the "
+                        "blue SUV travelling at that moment?")[-3:] == ["unique", "get_frame", "query_moving_direction"]
+    assert parser.parse("Does the bus in the clip hit anything?") == [
+        "Events", "Objects", "filter_attributes[bus]", "unique", "filter_collision", "exist"]

@@ -40,7 +40,9 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "machan", "pet", "flight",   # a Sri Lankan's friend, a Geordie's 'pet', mission control's flight director
              "bab", "darlin", "sugar", "doll",   # a Brummie's 'bab', a gossip's and a gangster's
              "sir", "madam", "maam",   # a butler's ('There is an object going ever faster, sir; what colour ...')
-             "friends", "people"}   # a showman's ('Now observe the gray airliner, my friends: ...')
+             "friends", "people",   # a showman's ('Now observe the gray airliner, my friends: ...')
+             "brethren", "flock", "congregation", "contestants", "recruit", "recruits",   # a vicar's, a host's
+             "traveller", "traveler", "seeker", "adventurer", "nan"}   # a quest giver's, a grandmother's
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -195,7 +197,9 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
               and (j == 0 or words[0] in INTERJECTIONS | COMMA_INTERJECTIONS and set(words[1:j]) <= {","})), 0)
     # 'like' after another interjection needs no comma ('so like does ...'), nor whom the question is addressed to;
     # an exclamation of no vehicle ('wowee , what a smash , as they collide is ...')
+    # (and a teller's 'and' or 'but' opening the question: 'And when the jet shows up , is it ...?')
     while k < len(words) and ((exclaimed := _exclaimed(words, k)) or words[k] in INTERJECTIONS
+                              or k == 0 and words[0] in ("and", "but")
                               or words[k] in COMMA_INTERJECTIONS | ADDRESSED
                               and words[k + 1:k + 2] and words[k + 1] in INTERJECTION_ENDS
                               or k and words[k - 1] in INTERJECTIONS | VOCATIVES and words[k] in VOCATIVES | {"like"}):
@@ -213,6 +217,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     if tail and ((tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail)
                  or _grumbled(tail)):
         end = asked + 1
+    # ... or a description closing it after its last comma (an estate agent's ', a well-kept little runaround ?', ',
+    # as befits such a quiet street ?'; not ', a car or a bus ?')
+    comma = next((j for j in range(max(k, (asked or 0) - 14), asked or 0) if words[j] == "," and (
+        words[j + 1:j + 2] in (["a"], ["an"]) or words[j + 1:j + 3] in (["as", "befits"], ["as", "you"]))), None)
+    described = words[comma + 1:asked] if comma is not None else []
+    if described and _says_nothing(described) and not set(described) & (BIDS | set(COLOR_NAMES) | {"or", "not"}):
+        words, end, asked = words[:comma] + words[asked:], end - len(described) - 1, comma
+        said += ((" ".join(described), "nothing, a description"),)
     # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
     thanked = max((j for j in range(k, end - 1) if words[j] == "." and words[j + 1] in THANKING), default=None)
     if asked is None and thanked is not None and _says_nothing(words[thanked + 1:end]):
@@ -440,7 +452,8 @@ HEARSAY = {(*said, *that) for said in (
     ("my", "sources", "tell", "me"), ("we", "are", "told"), ("we", "'", "re", "told"), ("i", "am", "told"),
     ("i", "'", "m", "told"), ("reports", "say"), ("word", "is"), ("word", "has", "it"), ("rumour", "has", "it"),
     ("rumor", "has", "it"), ("a", "little", "bird", "says"), ("a", "little", "bird", "tells", "me"),
-    ("a", "little", "bird", "told", "me")) for that in ((), ("that",))}
+    ("a", "little", "bird", "told", "me")) for that in ((), ("that",))} | {
+    (*reports, "that") for reports in (("reports", "are", "coming", "in"), ("reports", "come", "in"))}
 CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"], ["you", "'", "d"], ["you", "will"])
                 for verb in _AGREE for tag in _TAGGED for that in (["that"], []) if that or not tag),
               # a sceptic's ('Wouldn't you say ...', 'Am I to believe ...', 'Don't tell me ...')
@@ -967,7 +980,8 @@ OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me 
 TOYS = {"toy", "toys", "model", "little", "wee"}
 # ... and fondness ('that sweet blue tandem bike', 'poor gray mountain bike', 'our trusty old pickup')
 FOND = {"sweet", "poor", "lovely", "old", "grand", "beautiful", "trusty", "beloved", "dear", "brave", "plucky",
-        "faithful", "gorgeous", "cute", "darling", "precious", "adorable", "bonny", "pretty", "mighty", "gallant"}
+        "faithful", "gorgeous", "cute", "darling", "precious", "adorable", "bonny", "pretty", "mighty", "gallant",
+        "charming"}   # (an estate agent's 'the charming cyan double-decker')
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1299,6 +1313,50 @@ def grumble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
                                            | {"?", "if", "had"}):
         return words, ()
     return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a remark"),)
+
+
+# A meditation teacher's instructions to the listener ('breathe softly and notice :', 'Breathing in , breathing out ,',
+# 'relax your jaw and notice the bus ...', 'allow your attention to settle :'): they ask nothing of the video
+SOOTHING = {"breathe", "breathing", "relax", "relaxing", "allow", "settle", "soften", "let"}
+CLAUSE_ENDS = {",", ":", ";", "."}
+
+
+def _soothing(clause: list[str]) -> bool:
+    """Whether a clause is an instruction to the listener's body or breath that names no vehicle, time, motion,
+    property or collision ('let your breath be easy and simply observe'; not 'let the bus go faster')."""
+    return bool(clause) and clause[0] in SOOTHING and (clause[0] != "let" or clause[1:2] == ["your"]) and \
+        not asks_impact(clause) and not set(clause) & (
+            OBJECT_WORDS | set(COLOR_NAMES) | START_WORDS | END_WORDS | FILM_WORDS | FUTURE_CUES | QUERY_NOUNS
+            | SPEED_CLASS_WORDS | MOTION_WORDS | CONDITION_OPENERS | GENERIC | GENERIC_NOUNS | NOUNS_SAID
+            | DETERMINERS | {"?", "if", "had", "ahead", "past", "future", "it", "they", "them", "one"})
+
+
+def soothing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'as the truck hits the van , breathe softly and notice : is the truck ...?' -> 'as the truck hits the van , is
+    the truck ...?': each clause that only soothes the listener, with the mark after it; and the first half of one
+    joined by 'and' to a look at a vehicle ('relax your jaw and notice the bus ...' -> 'notice the bus ...'). With
+    the clauses read as nothing, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_ENDS | {"?"}), len(words))
+        clause = words[k:end]
+        joined = next((j for j in range(k + 2, end) if words[j] == "and" and _soothing(words[k:j])), None)
+        if words[end:end + 1] != ["?"] and _soothing(clause):
+            read.append((" ".join(words[k:end + 1]), "nothing, a soothing word"))
+            k = end + 1
+            continue
+        if joined is not None and words[joined + 1:joined + 2] and words[joined + 1] in ATTENDING_VERBS:
+            read.append((" ".join(words[k:joined + 1]), "nothing, a soothing word"))
+            k = joined + 1
+            continue
+        out += words[k:end + 1]
+        k = end + 1
+    if not read or not QUESTION_OPENERS.intersection(out):
+        return words, ()
+    return out, tuple(read)
+
+
+ATTENDING_VERBS = {"notice", "observe", "watch", "look", "see", "consider", "focus"}
 
 
 def _then_said(words: list[str]) -> bool:

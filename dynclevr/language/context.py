@@ -707,8 +707,19 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
     if not condition and not own_condition:
         timed = START_WORDS | COMES_IN_WORDS | OWN_TIMES
         then = _at(out, THEN_SAID)
-        impact = _at(out, IMPACT_MOMENTS)
+        # ... or the question's own vehicle's impact said with no partner ('... travelling when it struck ?')
+        impact = _at(out, IMPACT_MOMENTS) or next(((k, tuple(out[k:k + 3])) for k in range(len(out) - 3)
+                                                    if out[k] in ("when", "as") and out[k + 1] in ("it", "they")
+                                                    and out[k + 2].startswith(IMPACT_STEMS)
+                                                    and out[k + 3] in ("?", ",")), None)
         own = {next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(out)}
+        # a collision of the question's vehicles (one or both) told just before, the question saying no time of its
+        # own ('The yellow car came crashing into the motorbike, and then ... which direction was the yellow car
+        # heading?', 'the bike and the wagon crash together ; is the bike going faster than the wagon ?')
+        # (not a narrator's 'we meet a green wagon', nor a question of 'those first moments')
+        told = {tuple(_moment(context[-1:], fullest, of=r) or ()) for r in own}
+        told = not then and not impact and not (timed & set(out) or asks_impact(out)) and len(told) == 1 \
+            and not {"first", "we", "i", "us"} & set(out + context[-1]) and list(told.pop())
         # a sentence that is a moment alone ('Think about the moment the bike hits the van.', read 'at the moment
         # the bike hits the van .'; 'Remember when the bus bumped into the car?'): the question's time, where it
         # says none
@@ -719,6 +730,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             moment, (k, p) = _moment(context, fullest), then
         elif pictured:
             moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
+        elif told:
+            moment, k, p = told, out.index("?") if "?" in out else len(out), ()
         elif impact and len(own) == 1:
             moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
         elif not then and not impact and not (timed & set(out) or asks_impact(out)) and len(own) == 1 and \

@@ -55,7 +55,8 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_
                                       examination_as_asked, framing_dropped, grumble_dropped, hedges_dropped,
                                       hooks_dropped, hypothesis_as_asked, interjections_dropped, owners_dropped,
                                       preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
-                                      requested_as_asked, restatements_read, ticket_fields_read, wagers_read)
+                                      requested_as_asked, restatements_read, soothing_dropped, ticket_fields_read,
+                                      wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -401,7 +402,8 @@ class QuestionParser:
         words, teased = hooks_dropped(words)
         words, labelled = asides_dropped(words)
         words, grumbled = grumble_dropped(words)
-        labelled += grumbled
+        words, soothed = soothing_dropped(words)
+        labelled += grumbled + soothed
         labelled = teased + labelled
         words, inserted = inserted_time_last(words)
         words, opened = interjections_dropped(words)

@@ -222,9 +222,13 @@ def _blank_asked(before: list[str]) -> list[str] | None:
 
 # A speech recogniser's words that sound like the ones said ('is the bus faster then the car', 'sitting their',
 # 'weather it hits'), where the words around them say which was said
+CLIPPED = {"clips": "hits", "clipped": "hit", "clipping": "hitting", "clip": "hit"}
+
+
 def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'faster then the' -> 'faster than the', 'sitting their not' -> 'sitting there not', 'weather the bus' ->
-    'whether the bus'; with the words read so."""
+    'whether the bus'; and a verb that sounds like a noun of the footage: 'the jet clips the scooter' -> 'the jet hits
+    the scooter'. With the words read so."""
     out, read = list(words), []
     for k, w in enumerate(out):
         after = out[k + 1] if k + 1 < len(out) else ""
@@ -233,7 +237,9 @@ def homophones_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
                 "there" if w == "their" and after not in NAMING | GENERIC | QUERY_NOUNS and not after.endswith("s")
                 and not asks_impact([after])
                 else "whether" if w == "weather" and after in DETERMINERS | {"it", "they"}
-                else "would" if w == "wood" and after in DETERMINERS | {"it", "they", "that", "this"} else None)
+                else "would" if w == "wood" and after in DETERMINERS | {"it", "they", "that", "this"}
+                else CLIPPED.get(w) if w in CLIPPED and k and out[k - 1] not in DETERMINERS | {"of", "in", "both"}
+                and after in DETERMINERS | {"it", "into", "something", "another", "anything"} else None)
         if said:
             read.append((w, said))
             out[k] = said

@@ -258,7 +258,7 @@ def present_asked_later(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 # 'Imagine that instant when they smash together - at that point, ...'): a time in the video, not a change imagined
 PICTURING = (["imagine"], ["picture"], ["consider"], ["envision"], ["visualise"], ["visualize"], ["take"],
              ["think", "of"], ["think", "about"], ["thinking", "of"], ["thinking", "about"], ["picturing"],
-             ["imagining"], ["considering"])
+             ["imagining"], ["considering"], ["mark", "well"], ["mark"])   # (a quest giver's 'Mark well the moment')
 MOMENTS = {"moment", "instant", "point", "second"}
 NOT_BEFORE_MOMENT = {"at", "from", "since", "until", "till", "by", "to", "in", "on", "of", "for", "that", "this",
                      "the", "what", "which", "after", "before", "during", "just", "right", "exactly", "precisely"}

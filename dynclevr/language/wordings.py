@@ -77,7 +77,11 @@ ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "a
              ["circling", "back", "on"], ["circling", "back", "to"], ["following", "up", "on"],
              ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
-             ["as", "to"])
+             ["as", "to"],
+             # a preacher's ('Let us consider the red biplane, dear flock: ...')
+             *([*us, v, *m, *on] for us in (["let", "us"], ["let", "'", "s"]) for v, ons in (
+                 ("consider", ([],)), ("reflect", (["on"], ["upon"])), ("turn", (["to"],)), ("look", (["at"],)))
+               for m in ([], ["a", "moment"]) for on in ons))
 POINTING_ENDS = {".", ":", ";", ",", "?", "-"}
 POINTING_WORDS = {"this", "that", "it", "is", "s", "'", "am", "m", "are", "i", "we", "you", "my", "our", "me", "one",
                   "question", "questions", "about", "regarding", "concerning", "concerns", "interested", "in", "have",
@@ -300,6 +304,9 @@ def request_as_imperative(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         return words, ()
     rest = " ".join(words)[m.end():].split()
     said = " ".join(words[:len(words) - len(rest)]).replace(" ' ", "'")
+    # ('Our last caller wants to know: is the bike ...?': the question after the colon)
+    if rest[:1] in ([":"], ["-"]) and rest[1:2] and rest[1] in YES_NO_OPENERS | QUESTION_OPENERS:
+        return rest[1:], ((f"{said} {rest[0]}", "nothing, a request"),)
     # 'I'd like to know, is the bus fast?', '... , at the start, is it fast?': the question itself
     asked = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS and "," in rest else \
         next((j for j in range(2, 12) if rest[:1] and rest[0] in TIME_OPENERS and rest[j:j + 1] and rest[j] in
@@ -819,6 +826,11 @@ IDIOMS = phrase_table({
                                    ("dashing", "crashing")) for p in ("into", "with")},
     **{(d, "into", *t, v): (c, "into", "view") for d, c in (("dash", "come"), ("dashes", "comes"), ("dashed", "came"),
                                                             ("dashing", "coming"))
+       for t in ((), ("the",)) for v in ("view", "frame", "shot", "scene", "picture", "sight")},
+    # ... or rolls into the scene ('The brown cruiser rolls into the scene, recruit: is it ... at that moment?')
+    **{(f"{r}{e}", "into", *t, v): (c, "into", "view") for r in ("roll", "cruis", "trundl", "glid")
+       for e, c in (("s" if r == "roll" else "es", "comes"), ("ed", "came"), ("ing", "coming"),
+                    ("" if r == "roll" else "e", "come"))
        for t in ((), ("the",)) for v in ("view", "frame", "shot", "scene", "picture", "sight")},
     # a Victorian's 'moving picture' (a video), 'motor-bicycle', 'grows ever swifter' (accelerates), 'dashes itself
     # against' (crashes into), 'at a great pace', 'when first it comes into view', 'the frames we are shown'
@@ -1729,6 +1741,45 @@ IDIOMS = phrase_table({
     **{(c, "you", "confirm", "the"): ("tell", "me", "the") for c in ("could", "can", "would")},
     **{(*c, "ladies", "and", "gentlemen", p): () for c in ((), (",",)) for p in (",", ":", "!")},
     **{("if", "i", "may", "have", "your", "attention", p): () for p in (",", ":")},
+    # a teacher's 'can anyone tell me'; a controller's 'say again' (read as how often) and ', over?'; a preacher's
+    # and a host's forms of address; a ghost story's 'and nobody knows why ...' (read as asking why); 'do we think?'
+    **{(c, who, "tell", "me"): ("tell", "me") for c in ("can", "could", "will", "would")
+       for who in ("anyone", "anybody", "someone", "somebody", "everyone", "everybody")},
+    **{(*c, "say", "again", p): () for c in ((), ("roger", ",")) for p in (",", ":", ";")},
+    **{(",", "say", "again", "?"): ("?",), (",", "over", "?"): ("?",)},
+    **{(",", d, a, p): (p,) for d in ("dear", "good", "my") for a in ("flock", "people", "brethren", "children",
+                                                                     "friends", "listeners", "contestants")
+       for p in (",", ":", "?", ";", "!")},
+    **{(",", "ma", "'", "am", p): (p,) for p in (",", ":", "?", ";", "!")},
+    **{(*c, *a, *n, "why"): () for c in ((",",), ()) for a in (("and",), ()) for n in (
+        ("nobody", "knows"), ("no", "one", "knows"), ("none", "can", "say"), ("who", "knows"))},
+    **{(",", w, "we", t, "?"): ("?",) for w in ("do", "would") for t in ("think", "reckon", "know", "say")},
+    **{("perfectly", s): (s,) for s in ("still", "static", "stationary", "motionless")},
+    # a commentator's 'on that play'; a news anchor's 'Reports are coming in about X:'; a Regency lady's 'I dare say',
+    # 'pray,', ', I should like to know,'; a quest giver's 'what manner of vehicle', 'Tell me true,'; a grandmother's
+    # 'Bless them both,', 'Tell your old nan,'
+    ("on", "that", "play"): ("at", "that", "moment"),
+    ("reports", "are", "coming", "in", "about"): ("about",),
+    **{(*s, "i", *d): () for s in ((), (",",)) for d in (("dare", "say"), ("daresay",))},
+    **{(p, "pray", ","): (p,) for p in (",", ";", ":", ".")}, ("pray", ","): (),
+    **{(",", "i", w, "like", "to", "know", ","): () for w in ("should", "would")},
+    **{("tell", "me", *t, ":"): () for t in (("true",), ("the", "truth"), ("straight",))},
+    **{("tell", "me", "true", ","): ()},
+    ("what", "manner", "of"): ("what", "kind", "of"),
+    **{(w, "that", "be", "?"): ("is", "that", "?") for w in ("would", "might", "could")},
+    **{("bless", *b, p): () for b in (("them", "both"), ("them",), ("it",), ("him",), ("her",), ("its", "heart"))
+       for p in (",", "!")},
+    **{("tell", "your", *o, n, ","): ("tell", "me", ",") for o in ((), ("old",)) for n in ("nan", "gran", "granny",
+                                                                                        "grandma", "nana")},
+    # a border officer's 'Anything to declare about the red one:'; a Briton's 'early doors' (early on)
+    **{(a, "to", "declare", "about"): ("about",) for a in ("anything", "something")},
+    ("early", "doors"): _START,
+    # a meditation teacher's ('let your eyes rest on the vehicle that is stationary;', 'simply notice the minivan')
+    **{("let", "your", e, v, *g, on): ("look", "at") for e in ("eyes", "eye", "gaze", "awareness", "attention", "mind")
+       for v in ("rest", "soften", "settle", "fall") for g in ((), ("gently",), ("softly",)) for on in ("on", "upon")},
+    **{(q, v): (v,) for q in ("simply", "gently", "just") for v in ("notice", "observe")},
+    **{(",", "without", j, p): (p,) for j in ("judgement", "judgment") for p in (",", ":", ";", "?")},
+    **{(",", "and", *i, "want", "to", "know", p): (".",) for i in (("i",), ("we",)) for p in (":", ",")},
     ("quick", "level", "-", "set"): ("quick", "note"), ("step", "right", "up", ","): (), ("step", "right", "up"): (),
     **{(*r, o, "the", b): _START for r in ((), ("right",)) for o in ("off", "out", "outta")
        for b in ("block", "blocks", "gate", "gates")},
