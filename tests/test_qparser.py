@@ -4620,3 +4620,52 @@ def test_a_news_anchor_a_regency_lady_a_quest_giver_and_a_grandmother_are_read()
                         "blue SUV travelling at that moment?")[-3:] == ["unique", "get_frame", "query_moving_direction"]
     assert parser.parse("Does the bus in the clip hit anything?") == [
         "Events", "Objects", "filter_attributes[bus]", "unique", "filter_collision", "exist"]
+
+
+def test_a_safari_guide_a_lifeguard_a_submarine_captain_and_a_fitness_influencer_are_read():
+    parser = QuestionParser.load()
+    magnificent, heads, building, somebody = parser.parse_batch([
+        "Look there, a magnificent red double-decker! At the beginning, is it stationary, slow or fast?",
+        "Heads up, swimmers: at the beginning, what type is the object that's up in the air?",
+        "Real talk squad, if the brown cruiser had been building up speed from the very start, would it bump into the "
+        "dirt bike?",
+        "Somebody strikes the mountain bike in this scene — tell me, what colour is the one that hits it?"])
+    assert magnificent == ["Objects", "filter_attributes[red]", "filter_attributes[double_bus]", "unique", "start",
+                           "query_moving_velocity"]
+    assert heads[-3:] == ["filter_floating", "unique", "query_attributes[shape]"]   # (refused: 'heads up' a place)
+    assert building[4] == "Counterfactual_accelerating"                           # (read as 'frame up speed')
+    assert somebody[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]   # (refused: a person)
+    steady, knots, sonar = parser.parse_batch([
+        "Steady as she goes; later in the video, will the purple vehicle strike any other vehicle?",
+        "At the time the scooter and the brown articulated bus collide, is the scooter running at fewer knots than the "
+        "bus?",
+        "Sonar reports something up in the air as the video starts; what colour is that object, over?"])
+    assert steady[0] == "futureEvents"                                           # (refused: 'steady' a kept speed)
+    assert knots[-3:] == ["unique", "get_frame", "slower_velocity"]
+    assert sonar[-3:] == ["filter_floating", "unique", "query_attributes[color]"]
+
+
+def test_set_off_similes_a_conductor_a_sailor_a_bingo_caller_and_a_scribe_are_read():
+    parser = QuestionParser.load()
+    stop, scree, climber, drifting = parser.parse_batch([
+        "Next stop, the future, folks: will the biplane slam into the green utility bike after the clip ends?",
+        "The one creeping along slowly as the video starts, like a tired rope team on the scree: what kind of vehicle "
+        "is it?",
+        "Does the biplane pick up speed at first, like a lead climber breaking trail toward the summit?",
+        "Had the yellow truck been driftin' slow at the beginnin' of the video, would she have crashed into the red "
+        "car, matey?"])
+    assert stop[0] == "futureEvents"                                         # (refused: 'stop' a halt)
+    assert scree[-3:] == ["filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
+    assert climber[-2:] == ["start", "is_accelerating"]                       # (refused: 'toward' a relation)
+    assert drifting[4] == "Counterfactual_moving_slow"                        # (refused: 'drifting' a turn)
+    vessel, scribe, eyes = parser.parse_batch([
+        "What colour be the vessel pickin' up speed at the start of the video, matey?",
+        "The thing that travelleth slowly in the first frames: of what model is it, that it may be inked in the ledger?",
+        "Eyes down for the brown truck, my lovelies: does it make contact with anything at all in the frames we've "
+        "got?"])
+    assert vessel[-3:] == ["filter_accelerating", "unique", "query_attributes[color]"]
+    assert scribe[-3:] == ["filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
+    assert eyes == ["Events", "Objects", "filter_attributes[brown]", "filter_attributes[truck]", "unique",
+                    "filter_collision", "exist"]
+    # a simile of a vehicle is no aside
+    assert parser.parse("Is the red car fast, like a bus?") is None

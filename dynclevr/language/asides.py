@@ -42,7 +42,9 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "sir", "madam", "maam",   # a butler's ('There is an object going ever faster, sir; what colour ...')
              "friends", "people",   # a showman's ('Now observe the gray airliner, my friends: ...')
              "brethren", "flock", "congregation", "contestants", "recruit", "recruits",   # a vicar's, a host's
-             "traveller", "traveler", "seeker", "adventurer", "nan"}   # a quest giver's, a grandmother's
+             "traveller", "traveler", "seeker", "adventurer", "nan",   # a quest giver's, a grandmother's
+             "squad", "crew", "swimmers",   # a cheer captain's, a lifeguard's
+             "man", "matey", "lovelies"}   # a beat poet's, a sailor's, a bingo caller's ('my lovelies')
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -166,6 +168,12 @@ def calls_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]
     return out, tuple(read)
 
 
+# how a description or a purpose closing the question opens (', as befits such a quiet street ?', a scribe's ', that
+# it may be inked in the ledger ?', ', as far as thine eyes can tell ?')
+DESCRIPTION_OPENERS = (["as", "befits"], ["as", "you"], ["as", "i"], ["as", "far"], ["that", "i"], ["that", "it"],
+                       ["so", "that"])
+
+
 # a caller's haste ('real quick ,', an Upper Midwesterner's 'real quick there ,')
 HASTE = [["real", q, *there, ","] for q in ("quick", "fast") for there in ((), ("there",))]
 
@@ -220,7 +228,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # ... or a description closing it after its last comma (an estate agent's ', a well-kept little runaround ?', ',
     # as befits such a quiet street ?'; not ', a car or a bus ?')
     comma = next((j for j in range(max(k, (asked or 0) - 14), asked or 0) if words[j] == "," and (
-        words[j + 1:j + 2] in (["a"], ["an"]) or words[j + 1:j + 3] in (["as", "befits"], ["as", "you"]))), None)
+        words[j + 1:j + 2] in (["a"], ["an"]) or words[j + 1:j + 3] in DESCRIPTION_OPENERS)), None)
     described = words[comma + 1:asked] if comma is not None else []
     if described and _says_nothing(described) and not set(described) & (BIDS | set(COLOR_NAMES) | {"or", "not"}):
         words, end, asked = words[:comma] + words[asked:], end - len(described) - 1, comma
@@ -978,10 +986,11 @@ def restatements_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 
 OWNERS = {"my", "our", "your", "yer", "ma", "me"}   # 'yer grey city bike', 'me little bus' as said in Ireland
 TOYS = {"toy", "toys", "model", "little", "wee"}
-# ... and fondness ('that sweet blue tandem bike', 'poor gray mountain bike', 'our trusty old pickup')
+# ... and fondness ('that sweet blue tandem bike', 'poor gray mountain bike', 'our trusty old pickup'; an estate
+# agent's 'the charming cyan double-decker', a safari guide's 'a magnificent red double-decker')
 FOND = {"sweet", "poor", "lovely", "old", "grand", "beautiful", "trusty", "beloved", "dear", "brave", "plucky",
         "faithful", "gorgeous", "cute", "darling", "precious", "adorable", "bonny", "pretty", "mighty", "gallant",
-        "charming"}   # (an estate agent's 'the charming cyan double-decker')
+        "charming", "magnificent", "splendid", "majestic"}
 
 
 def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

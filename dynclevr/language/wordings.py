@@ -1748,7 +1748,7 @@ IDIOMS = phrase_table({
     **{(*c, "say", "again", p): () for c in ((), ("roger", ",")) for p in (",", ":", ";")},
     **{(",", "say", "again", "?"): ("?",), (",", "over", "?"): ("?",)},
     **{(",", d, a, p): (p,) for d in ("dear", "good", "my") for a in ("flock", "people", "brethren", "children",
-                                                                     "friends", "listeners", "contestants")
+                                                                     "friends", "listeners", "contestants", "lovelies")
        for p in (",", ":", "?", ";", "!")},
     **{(",", "ma", "'", "am", p): (p,) for p in (",", ":", "?", ";", "!")},
     **{(*c, *a, *n, "why"): () for c in ((",",), ()) for a in (("and",), ()) for n in (
@@ -1771,6 +1771,26 @@ IDIOMS = phrase_table({
        for p in (",", "!")},
     **{("tell", "your", *o, n, ","): ("tell", "me", ",") for o in ((), ("old",)) for n in ("nan", "gran", "granny",
                                                                                         "grandma", "nana")},
+    # 'building up speed' (read as 'frame up'); a lifeguard's 'Heads up,'; a safari guide's 'Look there,'; a caller's
+    # 'You heard it here first:'
+    **{(b, "up", *i, "speed"): (s, "up") for b, s in (("building", "speeding"), ("builds", "speeds"),
+                                                     ("built", "sped"), ("build", "speed"))
+       for i in ((), ("its",), ("some",), ("a", "bit", "of"))},
+    **{(h, "up", p): () for h in ("heads", "head") for p in (",", ":", "!")},
+    **{("look", "there", p): () for p in (",", "!")},
+    **{("you", "heard", "it", "here", "first", p): () for p in (":", ",", ";", "-", "!", ".")},
+    # a train conductor's 'Next stop,'; a bingo caller's 'Eyes down,'; a sailor's 'driftin' slow' (not a turn); a
+    # scribe's 'of what colour', 'Tell me truly,'
+    ("next", "stop", ","): (), **{("eyes", "down", p): () for p in (",", ":", "!")},
+    ("eyes", "down", "for"): ("look", "at"),
+    **{(d, s): (m, "slowly") for d, m in (("drifting", "moving"), ("drifts", "moves"), ("drift", "move"),
+                                          ("drifted", "moved")) for s in ("slow", "slowly")},
+    **{("of", "what", q): ("what", q) for q in ("colour", "color", "model", "kind", "type", "shape", "sort", "speed")},
+    ("tell", "me", "truly", ","): (),
+    # a submarine captain's 'Steady as she goes;', 'Sonar reports ...', 'at fewer knots than'
+    **{("steady", "as", s, "goes", p): () for s in ("she", "it") for p in (";", ",", ".", ":", "!")},
+    **{(d, r): () for d in ("sonar", "radar") for r in ("reports", "shows", "says")},
+    **{("at", m, "knots", "than"): (c, "than") for m, c in (("fewer", "slower"), ("more", "faster"))},
     # a border officer's 'Anything to declare about the red one:'; a Briton's 'early doors' (early on)
     **{(a, "to", "declare", "about"): ("about",) for a in ("anything", "something")},
     ("early", "doors"): _START,
@@ -1812,12 +1832,38 @@ _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", 
 _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
 
 
+CLAUSE_MARKS = {",", "?", ".", "!", ":", ";"}
+SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning"}   # ('from the start , like ...')
+
+
+def _set_off_simile(words: list[str], k: int) -> int | None:
+    """Where a simile set off by a comma at words[k] ends (', like a tired rope team on the scree :'): the clause
+    mark after it, where the simile names no vehicle, colour, time or collision and asks nothing; else None."""
+    if words[k:k + 2] != [",", "like"] or words[k + 2:k + 3] not in (["a"], ["an"]):
+        return None
+    end = next((e for e in range(k + 3, min(len(words), k + 14)) if words[e] in CLAUSE_MARKS), None)
+    said = words[k + 3:end] if end else []
+    if not said or asks_impact(said) or any(
+            v in OBJECT_WORDS | set(COLOR_NAMES) | _NAMES_NONE | _TIMES_SAID | FILM_WORDS | START_WORDS
+            | QUESTION_OPENERS | {"if", "had", "would", "not", "never"} for v in said):
+        return None
+    return end
+
+
 def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the suv still as a sleeping stone , slow as a wandering cloud , or fast as a falling star ?' -> 'is the suv
-    still , slow , or fast ?' (`SIMILE_SPEEDS`). With the similes dropped."""
+    still , slow , or fast ?' (`SIMILE_SPEEDS`); and one set off by a comma after a speed or a motion, or closing the
+    question ('... creeping along slowly , like a tired rope team on the scree : ...', '... pick up speed at first ,
+    like a lead climber breaking trail ?'). With the similes dropped."""
     out, read, k = [], [], 0
     while k < len(words):
         w = words[k]
+        end = _set_off_simile(words, k)
+        if end is not None and (out and out[-1] in SIMILE_SPEEDS | SIMILE_MOTIONS | SIMILE_AFTER
+                                or end == len(words) - 1):
+            read.append((" ".join(words[k:end]), "nothing, a simile"))
+            k = end
+            continue
         # 'tractor-slow', 'snail - slow' (not a dash before the choices: 'for the first time - static, slow or fast')
         if words[k + 1:k + 2] == ["-"] and words[k + 2:k + 3] and words[k + 2] in SIMILE_SPEEDS and w.isalpha() \
                 and w not in OBJECT_WORDS | set(COLOR_NAMES) | SIMILE_SPEEDS | FILM_WORDS | _TIMES_SAID:
