@@ -4669,3 +4669,27 @@ def test_set_off_similes_a_conductor_a_sailor_a_bingo_caller_and_a_scribe_are_re
                     "filter_collision", "exist"]
     # a simile of a vehicle is no aside
     assert parser.parse("Is the red car fast, like a bus?") is None
+
+
+def test_a_war_correspondent_a_rodeo_announcer_a_birdwatcher_a_lecturer_and_a_helpdesk_are_read():
+    parser = QuestionParser.load()
+    front, chute, binoculars, week = parser.parse_batch([
+        "Reporting from the front as the green bicycle collides with the gray bendy bus: at that instant, is the "
+        "bicycle static, slow or fast?",
+        "Right out of the chute at the start of the clip, is the blue one stationary, slow or fast?",
+        "How fast is the blue SUV driving when the video starts, by what I can make out through the binoculars?",
+        "A counterfactual, as we covered last week: if the articulated bus had started slowly, would it have "
+        "collided with the cyan mountain bike?"])
+    assert front[-3:] == ["unique", "get_frame", "query_moving_velocity"]     # (refused: 'front' a direction)
+    assert chute == ["Objects", "filter_attributes[blue]", "unique", "start", "query_moving_velocity"]
+    assert binoculars[-2:] == ["start", "query_moving_velocity"]
+    assert week[3] == "Counterfactual_moving_slow"
+    turning, drifts, spot, somebody = parser.parse_batch([
+        "Turning to the fighter jet: did it crash into anything at any point in the video?",
+        "When the blue tandem bike drifts into view, what do the cards reveal: is it static, slow, or fast?",
+        "As the clip begins I spot one going fast through my binoculars; what type of vehicle is it?",
+        "Somebody tangles with the brown plane: what colour is the one that hits the brown plane?"])
+    assert turning == ["Events", "Objects", "filter_attributes[fighter]", "unique", "filter_collision", "exist"]
+    assert drifts[-2:] == ["come_in_frame", "query_moving_velocity"]          # (refused: 'drifts' a turn)
+    assert spot[-3:] == ["filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]   # ('spot' as 'slow')
+    assert somebody[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]

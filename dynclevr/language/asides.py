@@ -44,12 +44,13 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "brethren", "flock", "congregation", "contestants", "recruit", "recruits",   # a vicar's, a host's
              "traveller", "traveler", "seeker", "adventurer", "nan",   # a quest giver's, a grandmother's
              "squad", "crew", "swimmers",   # a cheer captain's, a lifeguard's
-             "man", "matey", "lovelies"}   # a beat poet's, a sailor's, a bingo caller's ('my lovelies')
+             "man", "matey", "lovelies", "love"}   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
              "yours", "ta", "appreciate", "appreciated", "respectfully", "looking", "hope", "have", "i", "all", "much",
-             "greetings", "with"}
+             "greetings", "with",
+             "just", "asking", "need", "let"}   # a helpdesk's ('? Just need a yes or no for the ticket.')
 THANKING = {"thanks", "thank", "cheers", "ta", "many"}
 # how a caller's remark after the question opens: the speaker or the question itself ('that's my question')
 SPEAKER_REMARKS = (("i",), ("that", "'", "s"), ("that", "is"), ("'", "cause"), ("cause",), ("cos",), ("because", "i"),

@@ -541,7 +541,7 @@ SOMEONE = {"someone", "somebody"}
 def someone_as_something(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'someone 's up in the air ! what kind of vehicle is it ?' -> 'something 's up in the air ! ...'. With the
     words read so, or the words as they are and ()."""
-    end = max((k for k, w in enumerate(words[:-1]) if w in (".", "!", ";", "-")), default=None)
+    end = max((k for k, w in enumerate(words[:-1]) if w in (".", "!", ";", "-", ":")), default=None)
     said = [k for k, w in enumerate(words[:end or 0]) if w in SOMEONE]
     asked = words[end + 1:] if end is not None else []
     asked = asked[2 + (asked[2:3] == [","]):] if asked[:2] == ["tell", "me"] else asked   # ('... - tell me, what ...')

@@ -77,7 +77,7 @@ ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "a
              ["circling", "back", "on"], ["circling", "back", "to"], ["following", "up", "on"],
              ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
-             ["as", "to"],
+             ["as", "to"], ["turning", "to"], ["turning", "now", "to"], ["now", "turning", "to"],
              # a preacher's ('Let us consider the red biplane, dear flock: ...')
              *([*us, v, *m, *on] for us in (["let", "us"], ["let", "'", "s"]) for v, ons in (
                  ("consider", ([],)), ("reflect", (["on"], ["upon"])), ("turn", (["to"],)), ("look", (["at"],)))
@@ -827,10 +827,13 @@ IDIOMS = phrase_table({
     **{(d, "into", *t, v): (c, "into", "view") for d, c in (("dash", "come"), ("dashes", "comes"), ("dashed", "came"),
                                                             ("dashing", "coming"))
        for t in ((), ("the",)) for v in ("view", "frame", "shot", "scene", "picture", "sight")},
-    # ... or rolls into the scene ('The brown cruiser rolls into the scene, recruit: is it ... at that moment?')
-    **{(f"{r}{e}", "into", *t, v): (c, "into", "view") for r in ("roll", "cruis", "trundl", "glid")
-       for e, c in (("s" if r == "roll" else "es", "comes"), ("ed", "came"), ("ing", "coming"),
-                    ("" if r == "roll" else "e", "come"))
+    # ... or rolls or drifts into the scene ('The brown cruiser rolls into the scene, recruit: is it ... at that
+    # moment?'; 'drifts' was read as a turn)
+    **{(verb, "into", *t, v): (c, "into", "view") for forms in (
+        ("rolls", "rolled", "rolling", "roll"), ("cruises", "cruised", "cruising", "cruise"),
+        ("trundles", "trundled", "trundling", "trundle"), ("glides", "glided", "gliding", "glide"),
+        ("drifts", "drifted", "drifting", "drift"), ("slides", "slid", "sliding", "slide"))
+       for verb, c in zip(forms, ("comes", "came", "coming", "come"))
        for t in ((), ("the",)) for v in ("view", "frame", "shot", "scene", "picture", "sight")},
     # a Victorian's 'moving picture' (a video), 'motor-bicycle', 'grows ever swifter' (accelerates), 'dashes itself
     # against' (crashes into), 'at a great pace', 'when first it comes into view', 'the frames we are shown'
@@ -1748,7 +1751,8 @@ IDIOMS = phrase_table({
     **{(*c, "say", "again", p): () for c in ((), ("roger", ",")) for p in (",", ":", ";")},
     **{(",", "say", "again", "?"): ("?",), (",", "over", "?"): ("?",)},
     **{(",", d, a, p): (p,) for d in ("dear", "good", "my") for a in ("flock", "people", "brethren", "children",
-                                                                     "friends", "listeners", "contestants", "lovelies")
+                                                                     "friends", "listeners", "contestants", "lovelies",
+                                                                     "love")
        for p in (",", ":", "?", ";", "!")},
     **{(",", "ma", "'", "am", p): (p,) for p in (",", ":", "?", ";", "!")},
     **{(*c, *a, *n, "why"): () for c in ((",",), ()) for a in (("and",), ()) for n in (
@@ -1786,7 +1790,18 @@ IDIOMS = phrase_table({
     **{(d, s): (m, "slowly") for d, m in (("drifting", "moving"), ("drifts", "moves"), ("drift", "move"),
                                           ("drifted", "moved")) for s in ("slow", "slowly")},
     **{("of", "what", q): ("what", q) for q in ("colour", "color", "model", "kind", "type", "shape", "sort", "speed")},
-    ("tell", "me", "truly", ","): (),
+    ("tell", "me", "truly", ","): (), ("tell", "me", "honestly", ","): (), ("honestly", ",", "tell", "me", "-"): (),
+    # a war correspondent's 'Reporting from the front' and 'front line' (no direction); a rodeo announcer's 'Right out
+    # of the chute'; a birdwatcher's 'through my binoculars'; a lecturer's 'as we saw last week'
+    **{(*c, "reporting", "from", "the", "front", *line): () for c in ((), (",",)) for line in ((), ("line",))},
+    **{(p, "the", "front", "line"): () for p in ("from", "at", "on")},
+    **{(*r, "out", "of", "the", "chute", *a): t for r in ((), ("right",)) for a, t in (
+        ((",",), ("at", "the", "start", ",")), (("at",), ("at",)))},
+    **{(*a, t, d, "binoculars"): () for a in ((), ("as", "seen")) for t in ("through", "in")
+       for d in ("my", "the", "our")},
+    **{(*c, "as", "we", v, *last, "week", *p): () for c, p in (((",",), ()), ((), (",",)), ((), (":",)))
+       for v in ("saw", "discussed", "covered", "learned", "learnt", "said") for last in (("last",), ("in", "last"))},
+    **{(",", "please", p): (p,) for p in (":", ";")},
     # a submarine captain's 'Steady as she goes;', 'Sonar reports ...', 'at fewer knots than'
     **{("steady", "as", s, "goes", p): () for s in ("she", "it") for p in (";", ",", ".", ":", "!")},
     **{(d, r): () for d in ("sonar", "radar") for r in ("reports", "shows", "says")},
