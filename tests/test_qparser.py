@@ -4693,3 +4693,23 @@ def test_a_war_correspondent_a_rodeo_announcer_a_birdwatcher_a_lecturer_and_a_he
     assert drifts[-2:] == ["come_in_frame", "query_moving_velocity"]          # (refused: 'drifts' a turn)
     assert spot[-3:] == ["filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]   # ('spot' as 'slow')
     assert somebody[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]
+
+
+def test_a_statement_joined_by_but_is_context_and_a_salesman_a_presenter_and_a_jazz_host_are_read():
+    parser = QuestionParser.load()
+    but, praise, cats, boys = parser.parse_batch([
+        "The purple double-decker hits the minivan in a twist nobody saw coming, but is the double-decker quicker than "
+        "the minivan at that moment?",
+        "In a world where the purple motorbike had started off slow, would she have collided with the green one? Real "
+        "smooth ride, that bike.",
+        "Which direction does the bendy bus drive at the beginning, cats: left, right, front, back, up or down?",
+        "Ooh, boys and girls, after the video stops, will the gray one get into a bump with anything? What do you "
+        "think?"])
+    assert but[-3:] == ["unique", "get_frame", "faster_velocity"]
+    assert "filter_attributes[bicycle]" not in praise and praise[-1] == "exist"   # (read the green one as a bike)
+    assert cats[-2:] == ["start", "query_moving_direction"]                    # ('cats' read as 'car')
+    assert boys[0] == "futureEvents"
+    # two questions joined by 'but' stay two; a dash before the choices is no '-slow' compound
+    assert parser.parse("Is the car fast, but is the bus slow?") is None
+    assert parser.parse("How fast is the brown jet going when the brown jet and the red car collide - static, slow, "
+                        "or fast?")[-3:] == ["unique", "get_frame", "query_moving_velocity"]

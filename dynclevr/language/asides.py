@@ -221,6 +221,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         end -= 1
     # ... and a letter's sign-off or a short remark after the question ('? couldn't see'), where it says nothing of
     # a vehicle, a time, a motion or a collision
+    # ... and a question after it about the asking itself ('? Sorry, is that okay to ask?', '? That's a fair thing to
+    # ask, right?')
+    first = next((j for j in range(k, end) if words[j] == "?"), None)
+    about = words[first + 1:end] if first is not None else []
+    if about[-1:] == ["?"] and "?" not in about[:-1] and {"ask", "asking", "question"} & set(about) and \
+            _says_nothing(about[:-1]):
+        said += ((" ".join(about), "nothing, a question about the asking"),)
+        words, end = words[:first + 1], first + 1
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
     if tail and ((tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail)

@@ -19,7 +19,7 @@ from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, 
                                      IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS,
                                      MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, PEOPLE, QUERY_NOUNS,
                                      QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS,
-                                     START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED, _at, asks_impact)
+                                     START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED, YES_NO_OPENERS, _at, asks_impact)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -558,12 +558,31 @@ def _turned_to(sentence: list[str], runs: list) -> list:
     return runs if turn is None else [r for r in runs if r[0] > turn] + [r for r in runs if r[0] <= turn]
 
 
+# A statement joined to the question by ', but' or ', so' (a narrator's 'The brown aeroplane bumps into the gray
+# vehicle in a scene nobody will forget, but is the aeroplane going fast at that moment?'): its context
+JOINING = ("but", "so")
+NOT_STATED = {"if", "had", "suppose", "imagine", "when", "as", "after", "before", "once", "while", "whenever"}
+
+
+def joined_as_context(words: list[str]) -> list[str]:
+    """'X hits Y , but is X fast ?' -> 'X hits Y . is X fast ?', where what comes before is one statement without a
+    comma and what comes after a whole question; the words as they are elsewhere ('Is the car fast, but is the bus
+    slow?' asks twice; '..., but was it really?' asks whether the statement is so)."""
+    k = next((k for k in range(3, len(words) - 3) if words[k] == "," and words[k + 1] in JOINING
+              and words[k + 2] in QUESTION_OPENERS | YES_NO_OPENERS), None)
+    if k is None or words[-1] != "?" or SENTENCE_ENDS & set(words[:k]) or "," in words[:k] or len(words) - k < 8 or \
+            words[0] in QUESTION_OPENERS | YES_NO_OPENERS | CONDITION_OPENERS | TIME_OPENERS | NOT_STATED:
+        return words
+    return [*words[:k], ".", *words[k + 2:]]
+
+
 def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after its context, what it refers back to read from the context; with the context read as
     what it gave. The words as they are and () where there is no context; where the question needs more than the
     vehicles, a condition, a moment or the start (a vehicle the context describes: 'Something is speeding up. What
     colour is it?'; a vehicle said with a word the parser does not know, of `known`: 'the pink scooter'); or where
     the context asks a question of its own, or imagines otherwise than as a condition."""
+    words = joined_as_context(words)
     spans = _sentence_spans(words)
     asked_at = max((j for j, (a, b) in enumerate(spans) if words[b - 1] == "?"), default=None)
     if not spans or len(spans) > 1 and not asked_at:
@@ -848,8 +867,11 @@ def _remark(said: list[str]) -> bool:
     # (or on people at large, whom no video shows: '? Back in my day bus drivers knew better.', '? Two people on one
     # bike, I ask you.')
     people = PEOPLE & set(words) and not set(COLOR_NAMES) & set(words)
+    # (or praise of a vehicle named last: '? Real smooth ride, that bike.')
+    praised = len(words) > 3 and words[-3] == "," and words[-2] in ("that", "this") and \
+        not mentions(words[:-3]) and not set(COLOR_NAMES) & set(words) and words[0] not in AFTER_OPENERS
     return bool(words) and said[-1] != "?" and not corrected and (
-        people or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
+        people or praised or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
 
 
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:

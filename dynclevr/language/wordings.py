@@ -1758,7 +1758,14 @@ IDIOMS = phrase_table({
     **{(*c, *a, *n, "why"): () for c in ((",",), ()) for a in (("and",), ()) for n in (
         ("nobody", "knows"), ("no", "one", "knows"), ("none", "can", "say"), ("who", "knows"))},
     **{(",", w, "we", t, "?"): ("?",) for w in ("do", "would") for t in ("think", "reckon", "know", "say")},
-    **{("perfectly", s): (s,) for s in ("still", "static", "stationary", "motionless")},
+    **{(q, s): (s,) for q in ("perfectly", "utterly") for s in ("still", "static", "stationary", "motionless")},
+    **{("hang", "onto", "your", "hats", p): () for p in (":", ",", "!", ";")},
+    # a children's presenter's 'boys and girls' and '? What do you think?'; a jazz host's 'cool cats' (read as 'car');
+    # a soap narrator's 'Previously on 'Fast Hearts':'
+    **{(",", "boys", "and", "girls", p): (p,) for p in (",", "?", ":", "!")}, ("boys", "and", "girls", ","): (),
+    **{("?", "what", "do", "you", t, "?"): ("?",) for t in ("think", "imagine", "reckon")},
+    **{(",", *c, "cats", p): (p,) for c in ((), ("cool",)) for p in (",", "?", ":", ";")},
+    ("previously", "on"): (),
     # a commentator's 'on that play'; a news anchor's 'Reports are coming in about X:'; a Regency lady's 'I dare say',
     # 'pray,', ', I should like to know,'; a quest giver's 'what manner of vehicle', 'Tell me true,'; a grandmother's
     # 'Bless them both,', 'Tell your old nan,'
@@ -1766,7 +1773,7 @@ IDIOMS = phrase_table({
     ("reports", "are", "coming", "in", "about"): ("about",),
     **{(*s, "i", *d): () for s in ((), (",",)) for d in (("dare", "say"), ("daresay",))},
     **{(p, "pray", ","): (p,) for p in (",", ";", ":", ".")}, ("pray", ","): (),
-    **{(",", "i", w, "like", "to", "know", ","): () for w in ("should", "would")},
+    **{(",", "i", w, "like", "to", "know", ","): () for w in ("should", "would")}, (",", "i", "must", "ask", ","): (),
     **{("tell", "me", *t, ":"): () for t in (("true",), ("the", "truth"), ("straight",))},
     **{("tell", "me", "true", ","): ()},
     ("what", "manner", "of"): ("what", "kind", "of"),
@@ -1879,9 +1886,11 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
             read.append((" ".join(words[k:end]), "nothing, a simile"))
             k = end
             continue
-        # 'tractor-slow', 'snail - slow' (not a dash before the choices: 'for the first time - static, slow or fast')
+        # 'tractor-slow', 'snail - slow' (not a dash before the choices: 'for the first time - static, slow or fast',
+        # '... when the jet and the car collide - static, slow, or fast?')
         if words[k + 1:k + 2] == ["-"] and words[k + 2:k + 3] and words[k + 2] in SIMILE_SPEEDS and w.isalpha() \
-                and w not in OBJECT_WORDS | set(COLOR_NAMES) | SIMILE_SPEEDS | FILM_WORDS | _TIMES_SAID:
+                and w not in OBJECT_WORDS | set(COLOR_NAMES) | SIMILE_SPEEDS | FILM_WORDS | _TIMES_SAID \
+                and words[k + 3:k + 4] not in ([","], ["or"]) and not asks_impact([w]):
             read.append((" ".join(words[k:k + 3]), words[k + 2]))
             out.append(words[k + 2])
             k += 3
