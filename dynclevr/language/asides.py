@@ -17,12 +17,12 @@ from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLAUSE_CONJUNCTIONS,
-                                     CLOSING_INTERJECTIONS, COMES_IN_WORDS, COMMA_INTERJECTIONS, COMPARING,
-                                     CONDITION_LABELS, CONDITION_OPENERS, CONDITION_WORDS, DETERMINERS, DIRECTION_WORDS,
-                                     DURATIONS, END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES, GENERIC, GENERIC_NOUNS,
-                                     HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS, INTERJECTIONS,
-                                     LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
-                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
+                                     CLAUSE_MARKS, CLOSING_INTERJECTIONS, COMES_IN_WORDS, COMMA_INTERJECTIONS,
+                                     COMPARING, CONDITION_LABELS, CONDITION_OPENERS, CONDITION_WORDS, DETERMINERS,
+                                     DIRECTION_WORDS, DURATIONS, END_WORDS, FILLERS, FLOATING_WORDS, FUTURE_CUES,
+                                     GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS,
+                                     INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS,
+                                     NAMING, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
                                      QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES,
                                      SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
                                      TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
@@ -1336,7 +1336,7 @@ def grumble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 # A meditation teacher's instructions to the listener ('breathe softly and notice :', 'Breathing in , breathing out ,',
 # 'relax your jaw and notice the bus ...', 'allow your attention to settle :'): they ask nothing of the video
 SOOTHING = {"breathe", "breathing", "relax", "relaxing", "allow", "settle", "soften", "let"}
-CLAUSE_ENDS = {",", ":", ";", "."}
+ATTENDING_VERBS = {"notice", "observe", "watch", "look", "see", "consider", "focus"}
 
 
 def _soothing(clause: list[str]) -> bool:
@@ -1356,7 +1356,7 @@ def soothing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     the clauses read as nothing, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
-        end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_ENDS | {"?"}), len(words))
+        end = next((j for j in range(k, len(words)) if words[j] in CLAUSE_MARKS - {"!"}), len(words))
         clause = words[k:end]
         joined = next((j for j in range(k + 2, end) if words[j] == "and" and _soothing(words[k:j])), None)
         if words[end:end + 1] != ["?"] and _soothing(clause):
@@ -1372,9 +1372,6 @@ def soothing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     if not read or not QUESTION_OPENERS.intersection(out):
         return words, ()
     return out, tuple(read)
-
-
-ATTENDING_VERBS = {"notice", "observe", "watch", "look", "see", "consider", "focus"}
 
 
 def _then_said(words: list[str]) -> bool:

@@ -19,11 +19,11 @@ from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, CLASS_NOUNS,
-                                     CLAUSE_CONJUNCTIONS, COMPARISONS, DEFINITE, DETERMINERS, DIRECTION_CHOICES,
-                                     IMAGINING, IMPERATIVES, MOTION_NOUNS, MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID,
-                                     QUERY_NOUNS, QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS, SHAPE_ASKED,
-                                     SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, TIME_OPENERS,
-                                     YES_NO_OPENERS, _head, asks_impact)
+                                     CLAUSE_CONJUNCTIONS, CLAUSE_MARKS, COMPARISONS, DEFINITE, DETERMINERS,
+                                     DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS, MOTION_WORDS, NAMING,
+                                     NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS,
+                                     SHAPE_ASKED, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS,
+                                     TIME_OPENERS, YES_NO_OPENERS, _head, asks_impact)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1854,7 +1854,6 @@ _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", 
 _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
 
 
-CLAUSE_MARKS = {",", "?", ".", "!", ":", ";"}
 SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning"}   # ('from the start , like ...')
 
 

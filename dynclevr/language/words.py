@@ -53,6 +53,7 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
 
 
 SENTENCE_ENDS = {".", "!", "?"}
+CLAUSE_MARKS = {",", ":", ";"} | SENTENCE_ENDS
 # a sentence of context that imagines something otherwise, but not as a condition read here: the question is left
 # whole ('if' only where a clause of it imagines: 'I can't tell if it's moving' asks whether); said alone, it makes
 # the next sentence the condition ('ok weird what-if. the biplane is accelerating from the beginning instead.')
