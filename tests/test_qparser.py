@@ -4713,3 +4713,52 @@ def test_a_statement_joined_by_but_is_context_and_a_salesman_a_presenter_and_a_j
     assert parser.parse("Is the car fast, but is the bus slow?") is None
     assert parser.parse("How fast is the brown jet going when the brown jet and the red car collide - static, slow, "
                         "or fast?")[-3:] == ["unique", "get_frame", "query_moving_velocity"]
+
+
+def test_a_lighthouse_keeper_s_scene_a_fisherman_s_similes_and_a_therapist_s_colon_are_read():
+    parser = QuestionParser.load()
+    glow, sees, patient, sure = parser.parse_batch([
+        "Which colour is the one that's speeding up as the video starts, by the old lamp's glow?",
+        "When the video begins, in which direction is the purple bendy bus travelling, as the old lamp sees it?",
+        "When the green motorbike and the green bus collide, was the green motorbike standing still, patient as an "
+        "old angler?",
+        "When the clip begins, is the car going slower than the blue one, sure as the tide turns?"])
+    assert glow == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert sees[-2:] == ["start", "query_moving_direction"]
+    assert patient[-3:] == ["unique", "get_frame", "is_static"]
+    assert sure[-2:] == ["start", "slower_velocity"]                          # (refused: 'turns' a turn)
+    # a clause of time closed by a colon is read as by a comma: its 'it' is the question's vehicle
+    sit = parser.parse("Let's sit with the moment it collides with the yellow tandem bike: was the car standing still "
+                       "then?")
+    assert sit[:3] == ["Objects", "filter_attributes[car]", "unique"]        # (read the bike colliding with itself)
+    # a scene's clause names no vehicle; one that does, or asks, stays
+    assert parser.parse("Is the red car moving fast, with the blue bus?") is None
+
+
+def test_a_forecaster_s_look_ahead_a_ringmaster_a_wizard_and_a_gangster_are_read():
+    parser = QuestionParser.load()
+    paths, casting, feast, boys = parser.parse_batch([
+        "Projecting the paths forward past the end of the recording, will the red double-decker strike the yellow "
+        "bus?",
+        "Casting an eye past the line: will the green one go on to hit another object later?",
+        "Feast your eyes on the one soaring in the air at the opening of our show: what colour is it?",
+        "Which direction is the double-decker travellin' at the start of the video? The boys need to know."])
+    assert paths[0] == "futureEvents" and "filter_attributes[double_bus]" in paths   # (refused: 'paths' a shape)
+    assert casting[0] == "futureEvents"
+    assert feast == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]   # ('feast': fast)
+    assert boys[1] == "filter_attributes[double_bus]"                         # ('boys' heard as 'bus')
+    runes, glass, stalls, behold = parser.parse_batch([
+        "By the ancient runes, was the green airliner caught up in a collision?",
+        "My scrying glass shows the car as the clip begins; at what speed does it go: static, moving slowly or moving "
+        "fast?",
+        "Had the gray minivan come out of the stalls slowly, would it have crashed into the blue one?",
+        "Behold the bus, children of all ages: once the observed frames are over, will it crash into something?"])
+    assert runes == ["Events", "Objects", "filter_attributes[green]", "filter_attributes[airliner]", "unique",
+                     "filter_collision", "exist"]
+    assert glass == ["Objects", "filter_attributes[car]", "unique", "start", "query_moving_velocity"]
+    assert stalls[4] == "Counterfactual_moving_slow"
+    assert behold[:3] == ["futureEvents", "Objects", "filter_attributes[bus]"]
+    # 'accelerating steadily' is accelerating, not a speed kept; a look that names a vehicle is no look ahead
+    assert parser.parse("Suppose the cyan scooter had been accelerating steadily from the very start: would it bump "
+                        "into the green SUV?")[4] == "Counterfactual_accelerating"
+    assert parser.parse("Is the red car moving at a steady speed?") is None

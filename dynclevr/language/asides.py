@@ -44,7 +44,9 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "brethren", "flock", "congregation", "contestants", "recruit", "recruits",   # a vicar's, a host's
              "traveller", "traveler", "seeker", "adventurer", "nan",   # a quest giver's, a grandmother's
              "squad", "crew", "swimmers",   # a cheer captain's, a lifeguard's
-             "man", "matey", "lovelies", "love"}   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
+             "man", "matey", "lovelies", "love",   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
+             "apprentice", "angler"}   # a wizard's, a fisherman's
+ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -195,11 +197,14 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     particles = [j for j in range(1, len(words) - 1) if words[j] in PARTICLES and words[j + 1] in (",", "?", "!", ".")]
     said = tuple((words[j], "nothing, a particle") for j in particles)
     words = [w for j, w in enumerate(words) if j not in particles]
-    addressed = [j for j in range(1, len(words) - 1) if words[j] in ADDRESSED and words[j - 1] == ","
-                 and words[j + 1] in (",", "?", "!", ".", ":")]
-    addressees = " ".join(words[j] for j in addressed)
+    # (with its adjectives: ', old friend ,', ', young apprentice :')
+    addressed = [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
+                 and words[j + 1] in (",", "?", "!", ".", ":", "-") for n in (0, 1, 2)
+                 if j - n > 0 and words[j - n - 1] == "," and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
+    addressees = " ".join(" ".join(words[j] for j in a) for a in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
-        words = [w for j, w in enumerate(words) if j not in addressed and j + 1 not in addressed]
+        dropped = {k for a in addressed for k in (a.start - 1, *a)}
+        words = [w for j, w in enumerate(words) if j not in dropped]
     # a caller's '(now) real quick ,' asks in haste, of no vehicle's speed
     # (and an Upper Midwesterner's 'real quick there ,')
     k = next((j + len(h) for j in (0, 1, 2) for h in HASTE if words[j:j + len(h)] == h
@@ -318,16 +323,26 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         start = c + 1
     # ... and after the last comma, before the question mark ('..., my dear fellow?'), where it asks nothing itself
     # (', is it crawlig?' is the question, its slip not yet read)
+    # (or a longer one that sets the scene: a lighthouse keeper's ', by the old lamp's glow ?', ', with the old lamp
+    # burning ?', ', as the old lamp sees it ?'; its possessive "'s" asks nothing)
     end = len(words) - (words[-1:] in (["?"], ["."]))
-    if words[start:end] and end - start <= 4 and not _says_something(words[start:end]) and not _offers_speed(
-            words[start:end]) and \
-            not (YES_NO_OPENERS | QUESTION_OPENERS | {"it", "they"}).intersection(words[start:end]):
+    closing = words[start:end]
+    # (a clause of time whose subject is the scene's: ', while the old lamp kept its watch ?')
+    scene = closing[1:] if closing[:1] in (["while"], ["as"]) and closing[1:2] == ["the"] and \
+        not {"it", "they"} & set(closing) else closing
+    if scene and (len(closing) <= 4 or len(closing) <= 12 and closing[0] in SCENE_OPENERS) and \
+            not _says_something(scene) and not _offers_speed(closing) and \
+            not (YES_NO_OPENERS | QUESTION_OPENERS | ({"it", "they"} if len(closing) <= 4 else set())).intersection(
+                w for k, w in enumerate(closing) if ["'", "s"] not in (closing[k - 1:k + 1], closing[k:k + 2])):
         drop |= set(range(start - 1, end))
         read.append(" ".join(words[start:end]))
     rest = [w for k, w in enumerate(words) if k not in drop]
     if not read or not _says_something(rest):
         return words, ()
     return rest, tuple((r, "nothing, a digression") for r in read)
+
+
+SCENE_OPENERS = {"by", "under", "beneath", "below", "beside", "near", "with", "while", "on", "in", "amid", "as"}
 
 
 DISLOCATED_ASKS = {"are", "were", "will", "would", "did", "do", "does", "is", "was", "have", "had"}
@@ -544,7 +559,7 @@ EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know
                                for but in ((), (",", "but"), ("but",))),
                              # a formal speaker's ('what kind of vehicle, if one may so ask, is ...')
                              *(("if", who, may, *so, ask) for who in ("i", "one", "we") for may in ("may", "might")
-                               for ask in ("ask", "enquire", "inquire")
+                               for ask in ("ask", "enquire", "inquire", "confirm", "check", "clarify")
                                for so in ((), ("so",)))}, key=len, reverse=True)
 # the court said for 'me' ('Tell the court whether ...', 'Explain to the jury how fast ...', 'Walk us through ...')
 AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],
@@ -1588,6 +1603,29 @@ def framing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
 REASONS = (["because"], ["cause"], ["cos"], ["since"], ["as", "if"], ["given", "how"])
 TAGGING = {"right", "yeah", "innit", "eh"}
 PLACE_OPENERS = {"at", "in", "on", "during", "upon", "by", "from", "over", "throughout", "near", "around"}
+
+
+# A forecaster's look past the video before a question about the future ('Plotting the trajectories forward beyond
+# the recording , will ...', 'Looking ahead , beyond what we've seen together , will ...', 'Casting an eye past the
+# line : will ...'): the question's 'will' already asks after the video, and the look's words ('paths') ask nothing
+LOOKING_AHEAD = {"projecting", "project", "plotting", "plot", "extrapolating", "extrapolate", "forecasting", "looking",
+                 "look", "peering", "peer", "gazing", "gaze", "casting", "cast", "peeking", "peek", "beyond", "past",
+                 "thinking", "think", "running"}
+AHEAD = {"beyond", "past", "ahead", "forward", "forwards", "onward", "onwards", "future", "after", "later", "on"}
+
+
+def forecast_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'projecting the paths forward past the end of the recording , will the bus hit the car ?' -> 'will the bus
+    hit the car ?'. With the look ahead read as nothing, or the words as they are and ()."""
+    if not words or words[0] not in LOOKING_AHEAD:
+        return words, ()
+    k = next((k for k in range(2, min(len(words) - 2, 20)) if words[k] in (",", ":", ";", "-")
+              and (words[k + 1] in ("will", "shall") or words[k + 1] in ("is", "are")
+                   and ["going", "to"] in (words[j:j + 2] for j in range(k + 2, len(words) - 1)))), None)
+    if k is None or not AHEAD.intersection(words[:k]) or "?" in words[:k] or \
+            (OBJECT_WORDS | set(COLOR_NAMES) | GENERIC | GENERIC_NOUNS).intersection(words[:k]):
+        return words, ()
+    return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a look past the video"),)
 
 
 def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

@@ -52,9 +52,9 @@ from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_read, corrections_dropped,
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
-                                      examination_as_asked, framing_dropped, grumble_dropped, hedges_dropped,
-                                      hooks_dropped, hypothesis_as_asked, interjections_dropped, owners_dropped,
-                                      preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
+                                      examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
+                                      hedges_dropped, hooks_dropped, hypothesis_as_asked, interjections_dropped,
+                                      owners_dropped, preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
                                       requested_as_asked, restatements_read, soothing_dropped, ticket_fields_read,
                                       wagers_read)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
@@ -90,7 +90,7 @@ from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switc
                                        homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
                                        telegram_as_said, worksheet_as_said)
 from dynclevr.language.times import (first_frames_as_said, inserted_time_last, moment_pictured, present_asked_later,
-                                     video_end_as_said)
+                                     time_clause_closed, video_end_as_said)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
@@ -421,7 +421,8 @@ class QuestionParser:
         words, struck = struck_as_active(words)
         idioms += contest + active + named_condition + struck
         words, digressed = digressions_dropped(words)
-        idioms += digressed
+        words, closed = time_clause_closed(words)
+        idioms += digressed + closed
         words, described = description_as_said(words)
         words, typed = type_as_said(words)
         words, afloat = floating_plane_as_vehicle(words)
@@ -429,7 +430,9 @@ class QuestionParser:
         words, later = present_asked_later(words)
         end += later
         words, framing = framing_dropped(words)
+        words, forecast = forecast_dropped(words)
         words, preamble = preamble_dropped(words)
+        preamble = forecast + preamble
         framing += preamble
         words, attended = attention_as_subject(words)
         words, request = request_as_imperative(words)

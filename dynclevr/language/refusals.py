@@ -864,6 +864,7 @@ def slowing_down(words: list[str]) -> bool:
 
 STEADY = {"constant", "steady", "steadily", "unchanged", "unchanging", "same", "uniform", "uniformly"}
 SPEEDING_UP = {"speeding", "accelerating", "gaining", "picking", "increasing", "building"}
+ACCELERATING_SAID = {"up", "speed", "accelerate", "accelerates", "accelerated", "faster"}
 TIME_NOUNS = {"time", "instant", "moment", "point", "frame", "second"}
 
 
@@ -876,9 +877,10 @@ def reversed_as_said(words: list[str]) -> str:
     if any(w.startswith("decelerat") for w in words) or slowing_down(words):
         return ("the question asks whether an object slows down, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")
-    # (not 'steadily speeding up', a speed that changes steadily, nor 'at that same instant', a time said before;
-    # 'at the same time' may be two events at once)
+    # (not 'steadily speeding up' nor 'accelerating steadily', a speed that changes steadily, nor 'at that same
+    # instant', a time said before; 'at the same time' may be two events at once)
     if any(w in STEADY and after not in SPEEDING_UP and not (w == "same" and before == "that" and after in TIME_NOUNS)
+           and not (w == "steadily" and before in SPEEDING_UP | ACCELERATING_SAID)
            for before, w, after in zip([""] + words, words, words[1:] + [""])):
         return ("the question asks whether an object keeps its speed, which no question here asks: ask whether it is "
                 "accelerating and take the opposite answer")

@@ -773,7 +773,8 @@ SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pic
 # ... and never from a word that names what no vehicle is ('white', 'tractor'), nor from a real word said like a
 # vehicle's ('the plain red car')
 # (a place said is no vehicle heard: 'crashes into something on the track' was read as 'on the truck')
-NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky", "track", "tracks"}
+NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky", "track", "tracks",
+                                                      "boys"}   # a gangster's ('The boys need to know.')
 NAME_SAID = SPELT_BY_EAR - set(COLOR_NAMES)
 BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
 NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS

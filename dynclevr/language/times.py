@@ -2,14 +2,16 @@
 the video is over', 'had the footage continued', 'past the cutoff') as 'after the video ends' in a question about
 collisions (`video_end_as_said`; its clause, `_video_end`, is found for the context, the asides and the refusals too),
 the start by its frame or its clock ('at t = 0') and the first frame that shows an object (`first_frames_as_said`), and
-a time said between commas after the subject put last (`inserted_time_last`). Each is one of `QuestionParser._words`'
+a time said between commas after the subject put last (`inserted_time_last`), and a clause of time closed by a colon
+(`time_clause_closed`). Each is one of `QuestionParser._words`'
 rewrites, `f(words) -> (words, read_as)`."""
 
 from __future__ import annotations
 
 from dynclevr.language.references import OBJECT_WORDS
 from dynclevr.language.tokenize import tokenize
-from dynclevr.language.words import NAMING, QUESTION_OPENERS, START_ADJECTIVES, STOPPED_SAID, asks_impact, _at
+from dynclevr.language.words import (CLAUSE_CONJUNCTIONS, NAMING, QUESTION_OPENERS, START_ADJECTIVES, STOPPED_SAID,
+                                     YES_NO_OPENERS, asks_impact, _at)
 from dynclevr.questions.generate import templates
 
 # A time or a frequency said between commas after the subject ('does the red biplane , at some point , hit ...', 'is
@@ -35,6 +37,24 @@ def inserted_time_last(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
         moved = words[:k] + words[close + 1:end] + words[k + 1:close] + words[end:]
         return moved, ((" ".join(words[k:close + 1]), f"'{' '.join(words[k + 1:close])}' said last"),)
     return words, ()
+
+
+# A clause of time that opens the question, closed by a colon or a semicolon before what it asks ('at the moment it
+# collides with the yellow tandem bike : was the car standing still ?'): a colon there is read as the comma the grammar
+# writes (with it, the clause's 'it' was read as the tandem bike)
+CLAUSE_OPENS = ([c] for c in sorted(CLAUSE_CONJUNCTIONS | {"as"}))
+CLAUSE_OPENERS = (*CLAUSE_OPENS, ["at", "the", "moment"], ["at", "the", "instant"], ["right", "as"], ["just", "as"])
+
+
+def time_clause_closed(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'at the moment it collides with the bus : is the car fast ?' -> '... with the bus , is the car fast ?'. With the
+    words read so, or the words as they are and ()."""
+    if not any(words[:len(c)] == c for c in CLAUSE_OPENERS):
+        return words, ()
+    k = next((k for k in range(2, min(len(words) - 1, 16)) if words[k] in (":", ";", ",", "?", ".", "-")), None)
+    if k is None or words[k] not in (":", ";") or words[k + 1] not in YES_NO_OPENERS | QUESTION_OPENERS:
+        return words, ()
+    return [*words[:k], ",", *words[k + 1:]], ((words[k], ","),)
 
 
 # A time said by its frame or its clock ('at t = 0', 'at frame 0'), and the first frame that shows an object ('in

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 
 from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.asides import ADDRESS_ADJECTIVES, ADDRESSED, VOCATIVES, _says_something
 from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
@@ -129,8 +130,11 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     # after pointing words a sentence ends ('this is about X .'); the object alone is set off by a comma too ('X , is
     # it ...')
     ends = POINTING_ENDS if verb or start == 0 and j == named else POINTING_ENDS - {",", "?"}
+    # (or a clause of time first: 'look at the bus : once the frames are over , will it crash into something ?')
+    timed = words[j + 1:j + 2] and words[j + 1] in CLAUSE_CONJUNCTIONS | {"as", "after"} and any(
+        words[c] == "," and words[c + 1:c + 2] and words[c + 1] in QUESTION_OPENERS for c in range(j + 2, len(words)))
     if not first or words[j:j + 1] == [] or words[j] not in ends or not words[j + 1:j + 2] or \
-            words[j + 1] not in QUESTION_OPENERS:
+            words[j + 1] not in QUESTION_OPENERS and not (verb and timed):
         return words, ()
     thing, question = first + (["and", *second] if second else []), words[j + 1:]
     pronouns = ("they", "them") if second else ("it", "its")
@@ -248,7 +252,9 @@ def request_after_setting(words: list[str]) -> list[str]:
                 not (OBJECT_WORDS | FILM_WORDS) & set(words[:k]) or SUPPOSING & set(words[:k]):
             continue
         said = " ".join(words[k + 1 + (words[k + 1] in ("and", "so", "but")):]) + " "
-        if (m := REQUEST.match(said)) and len(rest := said[m.end():].split()) >= 3:
+        # (not a closing address: '... than the motorbike , tell me , old friend ?')
+        if (m := REQUEST.match(said)) and len(rest := said[m.end():].split()) >= 3 and \
+                not set(rest) <= ADDRESSED | VOCATIVES | ADDRESS_ADJECTIVES | {",", "?", ".", "!"}:
             # (the request itself dropped where the question follows it whole: 'i'm asking about the pickup :
             # after the clip stops , will it ...?')
             # (and a question word's, as the grammar's 'tell me how fast ...', so that the scene's moment is
@@ -1589,7 +1595,7 @@ IDIOMS = phrase_table({
     ("on", "the", "grid"): (), ("parked", "up"): ("parked",), ("on", "the", "deck"): ("on", "the", "ground"),
     **{(come, "out", "of", "the", g): (start,) for come, start in (("come", "started"), ("came", "started"),
                                                                   ("comes", "starts"), ("coming", "starting"))
-       for g in ("blocks", "gate", "gates")},
+       for g in ("blocks", "gate", "gates", "stalls")},
     # ... the broadcast and its cameras: the video ('we've paused the tape: ...', 'if we'd kept rolling the cameras')
     **{("the", b): ("the", "video") for b in ("broadcast", "telecast")},
     **{(who, *have, paused, "the", film): ("the", film, "is", "paused") for who in ("we", "i", "they", "you")
@@ -1742,7 +1748,8 @@ IDIOMS = phrase_table({
     **{("just", "to", c, "on", "my", "end", ","): () for c in ("confirm", "check", "verify")},
     **{("may", "i", v): ("tell", "me") for v in ("confirm", "ask", "check", "verify")},
     **{(c, "you", "confirm", "the"): ("tell", "me", "the") for c in ("could", "can", "would")},
-    **{(*c, "ladies", "and", "gentlemen", p): () for c in ((), (",",)) for p in (",", ":", "!")},
+    **{(*c, "ladies", "and", "gentlemen", p): (p,) * (c != () and p == ":") for c in ((), (",",))
+       for p in (",", ":", "!")},
     **{("if", "i", "may", "have", "your", "attention", p): () for p in (",", ":")},
     # a teacher's 'can anyone tell me'; a controller's 'say again' (read as how often) and ', over?'; a preacher's
     # and a host's forms of address; a ghost story's 'and nobody knows why ...' (read as asking why); 'do we think?'
@@ -1825,6 +1832,65 @@ IDIOMS = phrase_table({
     ("quick", "level", "-", "set"): ("quick", "note"), ("step", "right", "up", ","): (), ("step", "right", "up"): (),
     **{(*r, o, "the", b): _START for r in ((), ("right",)) for o in ("off", "out", "outta")
        for b in ("block", "blocks", "gate", "gates")},
+    # a racing commentator's starting stalls and straights ('had it come out of the stalls fast', 'as they break
+    # from the stalls', 'down the home straight'; not the front of a vehicle)
+    **{(*o, "the", "stalls"): _START for o in (("out", "of"), ("from",), ("in",), ("outta",))},
+    **{(*c, *a, "the", "stalls", *f, "open", *e): _START for c in ((), (",",)) for a in (("as",), ("when",))
+       for f in (("fly",), ("flew",), ("swing",), ("burst",), ("spring",)) for e in ((), (",",))},
+    **{(*c, d, "the", h, "straight", *e): ((",",) if c and e else ()) for c in ((), (",",))
+       for d in ("down", "up", "along", "into", "on") for h in ("home", "back", "far") for e in ((), (",",))},
+    # a therapist's ('Let us gently sit with the moment they collide :', 'in your own time', 'there are no wrong
+    # answers here :') and a ringmaster's ('Behold the bus , children of all ages :', 'feast your eyes on')
+    **{(*let, *g, v, "with"): () for let in (("let", "us"), ("let", "'", "s"), ("lets",))
+       for g in ((), ("gently",), ("just",)) for v in ("sit", "rest", "stay", "be")},
+    **{(*c, *a, "in", "your", "own", "time", *e): () for c, e in (((), (",",)), ((",",), ()), ((), (":",)), ((), ()))
+       for a in ((), ("and",))},
+    **{(*c, *a, "there", *are, "no", "wrong", "answers", *h, e): () for c in ((), (",",)) for a in ((), ("and",))
+       for are in (("are",), ("'", "re")) for h in ((), ("here",)) for e in (",", ":", ";", ".", "-")},
+    **{(f, "your", "eyes", "on"): ("look", "at") for f in ("feast", "cast", "rest")},
+    ("behold",): ("look", "at"),
+    **{(*c, "children", "of", "all", "ages", *e): () for c, e in (((), (",",)), ((",",), ()))},
+    **{(*c, "under", "the", "big", "top", *t, *e): () for c, e in (((), (",",)), ((",",), ()), ((), ()))
+       for t in ((), ("tonight",))},
+    ("death", "-", "defying"): (),
+    # a wizard's ('My scrying glass shows the car as the clip begins ;', 'speak truly ,', 'By the ancient runes ,'),
+    # a fortune teller's crystal ball, a gangster's ('No funny business now ,', '..., or is somebody pulling my leg ?')
+    **{(*m, *g, v): () for m in (("my",), ("the",), ("our",)) for g in (("scrying", "glass"), ("scrying", "pool"),
+                                                                      ("crystal", "ball"), ("seeing", "stone"))
+       for v in ("shows", "reveals", "showed", "revealed", "gazes", "looks", "peers", "sees")},
+    **{("speak", "truly", p): () for p in (",", ":", ";", "-")},
+    **{("by", "the", *a, "runes", p): () for a in ((), ("ancient",), ("old",)) for p in (",", ":")},
+    **{("no", "funny", "business", *n, p): () for n in ((), ("now",)) for p in (",", ";", ":", ".", "-")},
+    **{(",", "or", "is", s, v, *w): ("?",) for s in ("somebody", "someone", "anybody", "anyone")
+       for v, w in (("pulling", ("my", "leg", "?")), ("pullin", ("my", "leg", "?")),
+                    ("feeding", ("me", "a", "line", "?")), ("feedin", ("me", "a", "line", "?")))},
+    # an archaeologist's ('..., as found in situ ?', 'Let us record ...') and a wizard's 'come to pass'
+    **{(",", *a, "found", "in", "situ"): () for a in ((), ("as",))},
+    ("come", "to", "pass"): ("happen",),
+    **{("caught", *u, "in"): ("involved", "in") for u in ((), ("up",))},
+    ("steady", "now", ","): (),
+    # a therapist's 'With no pressure at all ,' and 'imagine a gentler world where ...'
+    **{(*w, "no", "pressure", *a, p): () for w in ((), ("with",)) for a in ((), ("at", "all")) for p in (",", ":")},
+    **{("a", g, "world", "where"): ("a", "world", "where") for g in ("gentler", "kinder", "different", "parallel",
+                                                                  "alternate", "alternative", "calmer", "quieter")},
+    # 'going ever faster' (faster and faster), 'right down to the wire' (to the end), 'one of its rivals'
+    **{("ever", c): (c, "and", c) for c in ("faster", "quicker")},
+    **{(*c, *r, "down", "to", "the", "wire", *e): () for c, e in (((), (",",)), ((",",), ()), ((), ()))
+       for r in ((), ("right",))},
+    **{("one", "of", w, r): ("something",) for w in ("its", "the", "their") for r in ("rivals", "competitors",
+                                                                                    "opponents")},
+    # a racing commentator's 'left in the stalls' (static at the start)
+    **{("left", *s, "in", "the", "stalls"): ("stationary", "at", "the", "start") for s in ((), ("standing",))},
+    # a wizard's and an astronomer's instruments ('passes into the view of my scrying glass', 'drifts into the
+    # eyepiece's field'), and 'quickening its pace' (accelerating)
+    **{(*i, "the", *v, *m, *d, *f): ("into", "view") for i in (("into",), ("in",)) for v, f in (
+        (("view", "of"), ()), (("field", "of"), ()), ((), ("'", "s", "field")), ((), ("'", "s", "view")))
+       for m in ((), ("my",), ("our",), ("the",)) if bool(m) == bool(v) for d in (
+        ("scrying", "glass"), ("crystal", "ball"), ("eyepiece",), ("telescope",), ("scope",), ("lens",))},
+    **{(q, w, "pace"): (a,) for q, a in (("quickening", "accelerating"), ("quickens", "accelerates"),
+                                         ("quicken", "accelerate"), ("quickened", "accelerated"))
+       for w in ("its", "her", "the", "his")},
+    **{("tell", d, "old", m): ("tell", "me") for d in ("an", "this", "your") for m in ("man", "woman", "angler")},
 }.items())
 COMING = ("comes", "come", "came", "coming")
 SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
@@ -1854,19 +1920,31 @@ _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", 
 _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
 
 
-SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning"}   # ('from the start , like ...')
+SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames"}   # ('from the start ,
+# like ...')
+SIMILE_OPENERS = {"like", "as"}
+SIMILE_SPEEDS_SAID = SIMILE_SPEEDS | SIMILE_MOTIONS | {"slower", "faster", "quicker", "stopped"}
 
 
 def _set_off_simile(words: list[str], k: int) -> int | None:
-    """Where a simile set off by a comma at words[k] ends (', like a tired rope team on the scree :'): the clause
-    mark after it, where the simile names no vehicle, colour, time or collision and asks nothing; else None."""
-    if words[k:k + 2] != [",", "like"] or words[k + 2:k + 3] not in (["a"], ["an"]):
+    """Where a simile set off by a comma at words[k] ends (', like a tired rope team on the scree :', a fisherman's ',
+    patient as an old angler ?', ', sure as the tide turns ?', ', snagged like a hook on a log ?'): the clause mark
+    after it, where the simile names no vehicle, colour, time or collision and asks nothing; else None. Its
+    likeness (the words before 'like' or 'as') says nothing either, or is a speed the question has said already ('...
+    slower than the bus , slow as the river on a summer's day ?')."""
+    opener = max((j for j in range(k + 1, min(len(words), k + 4)) if words[j] in SIMILE_OPENERS), default=None)
+    if words[k] != "," or opener is None:
         return None
-    end = next((e for e in range(k + 3, min(len(words), k + 14)) if words[e] in CLAUSE_MARKS), None)
-    said = words[k + 3:end] if end else []
+    likeness = [w for w in words[k + 1:opener] if w not in ("as", "just", "same")]
+    if words[opener] == "as" and not words[k + 1:opener] or not all(w.isalpha() for w in likeness) or any(
+            w in SIMILE_SPEEDS and not SIMILE_SPEEDS_SAID.intersection(words[:k]) for w in likeness) or \
+            _says_something([w for w in likeness if w not in SIMILE_SPEEDS]):
+        return None
+    end = next((e for e in range(opener + 1, min(len(words), opener + 12)) if words[e] in CLAUSE_MARKS), None)
+    said = words[opener + 1:end] if end else []
     if not said or asks_impact(said) or any(
-            v in OBJECT_WORDS | set(COLOR_NAMES) | _NAMES_NONE | _TIMES_SAID | FILM_WORDS | START_WORDS
-            | QUESTION_OPENERS | {"if", "had", "would", "not", "never"} for v in said):
+            v in OBJECT_WORDS | set(COLOR_NAMES) | _NAMES_NONE - {"its", "this"} | _TIMES_SAID | FILM_WORDS
+            | START_WORDS | QUESTION_OPENERS | {"if", "had", "would", "not", "never", "he", "she"} for v in said):
         return None
     return end
 
@@ -1880,7 +1958,7 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     while k < len(words):
         w = words[k]
         end = _set_off_simile(words, k)
-        if end is not None and (out and out[-1] in SIMILE_SPEEDS | SIMILE_MOTIONS | SIMILE_AFTER
+        if end is not None and (out and out[-1] in SIMILE_SPEEDS_SAID | SIMILE_AFTER
                                 or end == len(words) - 1):
             read.append((" ".join(words[k:end]), "nothing, a simile"))
             k = end
@@ -1912,11 +1990,12 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         end = j
         # (of up to three words, hyphened or possessive: 'a real high-flier', 'the cat's pajamas'; a dash before a
         # question ends it: 'like a meringue - what colour is it?')
-        while end < len(words) and end - j < 6 and words[end] not in _SIMILE_ENDS and not (
+        while end < len(words) and end - j < 8 and words[end] not in _SIMILE_ENDS and not (
                 words[end] == "-" and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS):
             end += 1
+        # (closing the question, up to six: 'quick as a trout spotting a shadow ?')
         phrase = [v for v in words[j:end] if v not in ("-", "'")]
-        if not phrase or len(phrase) > 3 + (words[j:end].count("'") > 0) or \
+        if not phrase or len(phrase) > (6 if words[end:] == ["?"] else 3 + (words[j:end].count("'") > 0)) or \
                 (end < len(words) and words[end] not in _SIMILE_ENDS) or any(
                 v in OBJECT_WORDS or v in COLOR_NAMES or v in _NAMES_NONE or not v.isalpha() for v in phrase):
             continue
