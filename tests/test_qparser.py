@@ -4762,3 +4762,29 @@ def test_a_forecaster_s_look_ahead_a_ringmaster_a_wizard_and_a_gangster_are_read
     assert parser.parse("Suppose the cyan scooter had been accelerating steadily from the very start: would it bump "
                         "into the green SUV?")[4] == "Counterfactual_accelerating"
     assert parser.parse("Is the red car moving at a steady speed?") is None
+
+
+def test_a_historian_a_pharmacist_a_boxing_announcer_a_scout_leader_and_a_bartender_are_read():
+    parser = QuestionParser.load()
+    later, purpose, corner, troop = parser.parse_batch([
+        "At the opening of the clip, historians would later ask, was the gray aeroplane moving faster than the car?",
+        "When the red vehicle first shows up, is it not moving, slow or fast, just so I have it right?",
+        "In this corner, the red SUV! Had it come out of its corner fast right from the start, would it have crashed "
+        "into the green minivan?",
+        "Right, troop, the brown cruiser bumps into something: what colour is the thing it hits?"])
+    assert later[-2:] == ["start", "faster_velocity"]                    # (refused: 'later' a time)
+    assert purpose[-2:] == ["come_in_frame", "query_moving_velocity"]    # (refused: 'right' a direction)
+    assert corner[4] == "Counterfactual_moving_fast"
+    assert troop[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]
+    pressure, stool, orders, hour = parser.parse_batch([
+        "Just a little pressure now — if the purple fighter had been moving slowly at the start of the video, would "
+        "it have hit the red motorbike?",
+        "Pull up a stool, friend — now, the one that's going slow right at the start, what kind of vehicle would that "
+        "be?",
+        "Last orders, so settle this: when the brown one strikes the gray fighter jet, is the brown one standing "
+        "still?",
+        "At the hour the brown sedan and the red double-decker collided, was the brown sedan the quicker of the two?"])
+    assert pressure[4] == "Counterfactual_moving_slow"                   # (refused: 'pressure' a quantity)
+    assert stool[-3:] == ["filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
+    assert orders[:3] == ["Objects", "filter_attributes[brown]", "unique"] and orders[-1] == "is_static"
+    assert hour[-3:] == ["unique", "get_frame", "faster_velocity"]

@@ -45,7 +45,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "traveller", "traveler", "seeker", "adventurer", "nan",   # a quest giver's, a grandmother's
              "squad", "crew", "swimmers",   # a cheer captain's, a lifeguard's
              "man", "matey", "lovelies", "love",   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
-             "apprentice", "angler"}   # a wizard's, a fisherman's
+             "apprentice", "angler",   # a wizard's, a fisherman's
+             "troop", "scouts", "cubs", "houston"}   # a scout leader's, an astronaut's
 ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
@@ -173,8 +174,10 @@ def calls_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]
 
 # how a description or a purpose closing the question opens (', as befits such a quiet street ?', a scribe's ', that
 # it may be inked in the ledger ?', ', as far as thine eyes can tell ?')
-DESCRIPTION_OPENERS = (["as", "befits"], ["as", "you"], ["as", "i"], ["as", "far"], ["that", "i"], ["that", "it"],
-                       ["so", "that"])
+DESCRIPTION_OPENERS = (["as", "befits"], ["as", "you"], ["as", "i"], ["as", "far"], ["that", "i"], ["that", "it"])
+# ... and the asker's purpose (a pharmacist's ', just so I have it right ?', ', so I can tick the box ?'), whose
+# 'right' is no direction offered
+PURPOSE_OPENERS = (["so", "that"], ["so", "i"], ["so", "we"], ["just", "so"])
 
 
 # a caller's haste ('real quick ,', an Upper Midwesterner's 'real quick there ,')
@@ -199,7 +202,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     words = [w for j, w in enumerate(words) if j not in particles]
     # (with its adjectives: ', old friend ,', ', young apprentice :')
     addressed = [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
-                 and words[j + 1] in (",", "?", "!", ".", ":", "-") for n in (0, 1, 2)
+                 and words[j + 1] in (",", "?", "!", ".", ":") for n in (0, 1, 2)
                  if j - n > 0 and words[j - n - 1] == "," and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
     addressees = " ".join(" ".join(words[j] for j in a) for a in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
@@ -242,9 +245,10 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # ... or a description closing it after its last comma (an estate agent's ', a well-kept little runaround ?', ',
     # as befits such a quiet street ?'; not ', a car or a bus ?')
     comma = next((j for j in range(max(k, (asked or 0) - 14), asked or 0) if words[j] == "," and (
-        words[j + 1:j + 2] in (["a"], ["an"]) or words[j + 1:j + 3] in DESCRIPTION_OPENERS)), None)
+        words[j + 1:j + 2] in (["a"], ["an"]) or words[j + 1:j + 3] in DESCRIPTION_OPENERS + PURPOSE_OPENERS)), None)
     described = words[comma + 1:asked] if comma is not None else []
-    if described and _says_nothing(described) and not set(described) & (BIDS | set(COLOR_NAMES) | {"or", "not"}):
+    offered = set() if described[:2] in PURPOSE_OPENERS else BIDS
+    if described and _says_nothing(described) and not set(described) & (offered | set(COLOR_NAMES) | {"or", "not"}):
         words, end, asked = words[:comma] + words[asked:], end - len(described) - 1, comma
         said += ((" ".join(described), "nothing, a description"),)
     # ... or after a request closed by a full stop ('I should like to know whether ... . Thank you kindly.')
@@ -277,10 +281,12 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
         words, end = kept + words[end:], len(kept)
     closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
-    # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...')
-    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS | {"tell"} and \
-            not ADDRESSED & set(words[:k]) and not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"}
-                                                    and FILLERS & set(words[:k])):
+    # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...';
+    # and whom it is asked after the interjection: 'Right , troop , the cruiser crashes into something : ...')
+    if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS \
+            | CONDITION_OPENERS | {"tell", "let"} and not ADDRESSED & set(words[:k]) and \
+            not any(a.start - 1 < k for a in addressed) and \
+            not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"} and FILLERS & set(words[:k])):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
 

@@ -143,7 +143,7 @@ def attention_as_subject(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             question = question[:n] + thing + (["'", "s"] if w == "its" else []) + question[n + 1:]
             break
     else:
-        if second or verb is None:
+        if second or verb is None or words[j + 1] not in QUESTION_OPENERS:
             return words, ()
     return question, ((" ".join(words[:j + 1]), f"nothing; '{pronouns[0]}' as " + " ".join(thing)),)
 
@@ -1869,12 +1869,63 @@ IDIOMS = phrase_table({
     ("come", "to", "pass"): ("happen",),
     **{("caught", *u, "in"): ("involved", "in") for u in ((), ("up",))},
     ("steady", "now", ","): (),
+    # a historian's ('..., historians would later ask, was the minivan ...', 'as historians are wont to do ,', 'when
+    # they met in collision', 'at the hour they collided')
+    **{(*c, *who, m, *a, v, e): (",",) * bool(c) for c in ((), (",",))
+       for who in (("historians",), ("scholars",), ("people",), ("some",), ("many",), ("one",), ("you",), ("critics",),
+                   ("viewers",), ("fans",), ("someone",), ("somebody",))
+       for m in ("would", "might", "may", "will", "could", "must") for a in ((), ("later",), ("well",), ("rightly",))
+       for v in ("ask", "wonder") for e in (",", ":", ";", "-")},
+    **{(",", "as", who, "are", *wont, "to", "do", ","): (",",) for who in ("historians", "scholars", "people", "we",
+                                                                          "they") for wont in (("wont",), ("will", "not"))},
+    **{("met", "in", *a, "collision"): ("collided",) for a in ((), ("a",))},
+    ("at", "the", "hour"): ("at", "the", "moment"),
+    # a pharmacist's ('Just to be on the safe side ,') and an astronaut's ('From up here in orbit ,')
+    **{(*j, "to", "be", "on", "the", "safe", "side", p): () for j in ((), ("just",)) for p in (",", ":")},
+    **{(*f, "up", "here", *o, p): () for f in ((), ("from",)) for o in ((), ("in", "orbit"), ("in", "space"))
+       for p in (",", ":")},
+    # a boxing announcer's ('In this corner , the red SUV !', 'had it come out of its corner fast', 'Let's get ready
+    # to rumble !', 'when round one began', 'as the bus lands its hit on the bike', 'that challenger')
+    **{("in", t, "corner", p): () for t in ("this", "that", "the", "blue", "red") for p in (",", ":")},
+    **{(*o, w, "corner"): () for o in (("in",), ("out", "of"), ("from",)) for w in ("its", "her", "their", "the")},
+    **{(come, "out", "of", w, "corner"): (start,) for come, start in (("come", "started"), ("came", "started"),
+                                                                     ("comes", "starts"), ("coming", "starting"))
+       for w in ("its", "her", "their")},
+    **{(*l, "get", "ready", "to", "rumble", p): () for l in (("let", "'", "s"), ("lets",)) for p in ("!", ",", ".")},
+    **{(w, "round", "one", b): (w, "the", "video", b) for w in ("when", "as") for b in (
+        "began", "begins", "starts", "started", "kicks", "kicked")},
+    **{(v, *a, h, "on"): (hits,) for v, hits in (("lands", "hits"), ("landed", "hit"), ("landing", "hitting"),
+                                                 ("land", "hit")) for a in ((), ("its",), ("a",), ("her",))
+       for h in ("hit", "blow", "punch")},
+    ("introducing",): ("look", "at"),
+    # a dentist's ('Just a little pressure here —') and a bartender's ('What'll it be ?', 'Last orders ,', 'Pull up
+    # a stool , friend —', 'while you're thinking ,', 'Have this one on the house and tell me :')
+    **{(*a, "pressure", *h, p): () for a in (("just", "a", "little"), ("a", "little"), ("gentle",), ("little",),
+                                           ("just", "a", "bit", "more"), ("a", "bit", "more"), ("a", "bit", "of"))
+       for h in ((), ("here",), ("now",)) for p in ("-", ",", ";", ":")},
+    **{("open", "wide", p): () for p in (",", "-", ";", ":", "!")},
+    **{("what", "'", "ll", "it", "be", *m, p, *a): () for m in ((), (",", "mate"), (",", "friend"), (",", "pal"))
+       for p in ("?", ",") for a in ((), ("and",))},
+    **{(*a, "while", *you, v, p): () for a in ((), ("and",)) for you, v in (
+        (("you", "'", "re"), "thinking"), (("you", "are"), "thinking"), (("you",), "decide"), (("i",), "pour"),
+        (("you",), "think"), (("you",), "wait")) for p in (",", "-", ";", ":")},
+    **{("last", o, *b, *f, p): () for o in ("orders", "call") for b in ((), ("at", "the", "bar"))
+       for f in ((), (",", "friend"), (",", "folks"), (",", "mate")) for p in (",", ":", "-", ";")},
+    **{("pull", "up", "a", s, *f, p): () for s in ("stool", "chair", "seat") for f in ((), (",", "friend"))
+       for p in (",", "-", ":", ";")},
+    **{("have", "this", "one", "on", "the", "house", *a): a for a in ((",",), ("and",))},
+    ("tell", "me", "straight", "-"): (), ("tell", "me", "straight", ":"): (),
+    # a scout leader's ('eyes peeled ,', 'Think back over the clip , troop :')
+    **{(*k, "eyes", "peeled", *p): () for k in ((), ("keep", "your")) for p in ((), (",",))},
+    **{("think", "back", o, "the", f, p): () for o in ("over", "to", "on") for f in ("clip", "video", "footage")
+       for p in (",", ":")},
     # a therapist's 'With no pressure at all ,' and 'imagine a gentler world where ...'
     **{(*w, "no", "pressure", *a, p): () for w in ((), ("with",)) for a in ((), ("at", "all")) for p in (",", ":")},
     **{("a", g, "world", "where"): ("a", "world", "where") for g in ("gentler", "kinder", "different", "parallel",
                                                                   "alternate", "alternative", "calmer", "quieter")},
     # 'going ever faster' (faster and faster), 'right down to the wire' (to the end), 'one of its rivals'
-    **{("ever", c): (c, "and", c) for c in ("faster", "quicker")},
+    **{(g, "ever", c): (g, c, "and", c) for c in ("faster", "quicker") for g in (
+        "going", "getting", "moving", "growing", "travelling", "traveling", "driving", "flying", "rolling")},
     **{(*c, *r, "down", "to", "the", "wire", *e): () for c, e in (((), (",",)), ((",",), ()), ((), ()))
        for r in ((), ("right",))},
     **{("one", "of", w, r): ("something",) for w in ("its", "the", "their") for r in ("rivals", "competitors",
@@ -1942,6 +1993,13 @@ def _set_off_simile(words: list[str], k: int) -> int | None:
         return None
     end = next((e for e in range(opener + 1, min(len(words), opener + 12)) if words[e] in CLAUSE_MARKS), None)
     said = words[opener + 1:end] if end else []
+    # (not a speed offered among others: 'still as a stone , slow as a cloud , or fast as a star ?'; nor a gloss
+    # without an article: ', like speeding up with the engine on ?')
+    if SIMILE_SPEEDS.intersection(likeness) and "or" in words[end:end + 3] or {"or", "and"} & set(likeness) or \
+            said[:1] not in (["a"], ["an"], ["the"], ["my"]) and any(
+                w in SPEED_CLASS_WORDS | {"engine"} or w.startswith(("speed", "accelerat"))
+                for w in said):
+        return None
     if not said or asks_impact(said) or any(
             v in OBJECT_WORDS | set(COLOR_NAMES) | _NAMES_NONE - {"its", "this"} | _TIMES_SAID | FILM_WORDS
             | START_WORDS | QUESTION_OPENERS | {"if", "had", "would", "not", "never", "he", "she"} for v in said):
