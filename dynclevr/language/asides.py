@@ -46,7 +46,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "squad", "crew", "swimmers",   # a cheer captain's, a lifeguard's
              "man", "matey", "lovelies", "love",   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
              "apprentice", "angler",   # a wizard's, a fisherman's
-             "troop", "scouts", "cubs", "houston"}   # a scout leader's, an astronaut's
+             "troop", "scouts", "cubs", "houston",   # a scout leader's, an astronaut's
+             "gentles", "guv"}   # a herald's ('good gentles'), a cabbie's
 ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
@@ -202,7 +203,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     words = [w for j, w in enumerate(words) if j not in particles]
     # (with its adjectives: ', old friend ,', ', young apprentice :')
     addressed = [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
-                 and words[j + 1] in (",", "?", "!", ".", ":") for n in (0, 1, 2)
+                 and words[j + 1] in (",", "?", "!", ".", ":", ";") for n in (0, 1, 2)
                  if j - n > 0 and words[j - n - 1] == "," and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
     addressees = " ".join(" ".join(words[j] for j in a) for a in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
@@ -284,7 +285,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...';
     # and whom it is asked after the interjection: 'Right , troop , the cruiser crashes into something : ...')
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS \
-            | CONDITION_OPENERS | {"tell", "let"} and not ADDRESSED & set(words[:k]) and \
+            | CONDITION_OPENERS | {"tell", "let", "say"} and not ADDRESSED & set(words[:k]) and \
             not any(a.start - 1 < k for a in addressed) and \
             not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"} and FILLERS & set(words[:k])):
         return words[:end], closing
@@ -1634,6 +1635,15 @@ def forecast_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a look past the video"),)
 
 
+def _remarked(pre: list[str], mark: str) -> bool:
+    """Whether words before a dash are a remark of the speaker's, whatever its manner ('Gently , gently —', a
+    beekeeper's 'Steady with the smoker now —', a dentist's 'Open a touch wider —'): short, naming no vehicle, time or
+    collision, and offering no choice."""
+    return mark == "-" and len(pre) <= 8 and not asks_impact(pre) and not _offers_speed(pre) and not set(pre) & (
+        OBJECT_WORDS | set(COLOR_NAMES) | FILM_WORDS | START_WORDS | TIME_SAID | GENERIC | GENERIC_NOUNS
+        | QUESTION_OPENERS | {"or", "?", "not", "never", "if", "had", "after", "before", "then", "later", "future"})
+
+
 def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'per the brief from leadership , what colour is ...' -> 'what colour is ...'. With the preamble read as
     nothing, or the words as they are and ()."""
@@ -1652,7 +1662,7 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
-        set(pre) <= TAGGING
+        set(pre) <= TAGGING or _remarked(pre, words[k])
     if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
                                                   or named):
         return words, ()

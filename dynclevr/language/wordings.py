@@ -78,6 +78,7 @@ ATTENDING = (["look", "at"], ["look", "closely", "at"], ["look", "carefully", "a
              ["circling", "back", "on"], ["circling", "back", "to"], ["following", "up", "on"],
              ["focus", "on"], ["observe"], ["notice"], ["check"],
              ["how", "about"], ["what", "about"], ["about"], ["regarding"], ["concerning"], ["as", "for"],
+             ["did", "you", "hear", "about"], ["have", "you", "heard", "about"],   # a gossip's
              ["as", "to"], ["turning", "to"], ["turning", "now", "to"], ["now", "turning", "to"],
              # a preacher's ('Let us consider the red biplane, dear flock: ...')
              *([*us, v, *m, *on] for us in (["let", "us"], ["let", "'", "s"]) for v, ons in (
@@ -1915,6 +1916,33 @@ IDIOMS = phrase_table({
        for p in (",", "-", ":", ";")},
     **{("have", "this", "one", "on", "the", "house", *a): a for a in ((",",), ("and",))},
     ("tell", "me", "straight", "-"): (), ("tell", "me", "straight", ":"): (),
+    # a zookeeper's ('Please don't tap the glass , folks —', 'our resident blue bus', 'Feeding time in the bus house :')
+    **{(*p, *d, "tap", "the", "glass", *f, e): () for p in ((), ("please",)) for d in (("do", "not"), ("don", "t"))
+       for f in ((), (",", "folks"), (",", "everyone"), (",", "little", "ones"), (",", "kids")) for e in ("-", ",", ":")},
+    **{(o, "resident"): ("the",) for o in ("our", "the", "my")},
+    **{(*a, "feeding", "time", p): (p,) * bool(a) for a in ((), ("at",), ("after",), ("before",))
+       for p in (",", ":", "-", ";")},
+    **{("feeding", "time", "in", "the", v, "house", p): () for v in ("bus", "car", "bike", "plane", "jet", "truck")
+       for p in (",", ":", "-", ";")},
+    # a nurse's ('Next patient , the gray mountain bike :', ', for the chart :'), a herald's ('in the lists'), a
+    # flight attendant's ('For your safety ,', 'please remain seated while we ask :'), a cabbie's (', you know what I
+    # mean ?', ', right , so what colour ...'), a gossip's ('Mark my words and tell me ,', 'Purl two and', ', did you
+    # hear ?') and a ballet teacher's ('again , with feeling ,', '? From the top , please .')
+    **{("next", "patient", p): () for p in (",", ":", "-", ";", "!", ".")},
+    **{(*c, "for", "the", r, p): (p,) * (p == ":" and c != ()) for c in ((), (",",))
+       for r in ("chart", "record", "notes", "file") for p in (",", ":")},
+    ("in", "the", "lists"): (),
+    **{("for", "your", "safety", p): () for p in (",", ":")},
+    **{("please", "remain", "seated", *w, p): () for w in ((), ("while", "we", "ask")) for p in (",", ":", ";", ".")},
+    (",", "you", "know", "what", "i", "mean", "?"): ("?",),
+    **{(",", "right", ",", *so, w): (",", w) for so in (("so",), ()) for w in (
+        "would", "will", "is", "was", "did", "does", "what", "which", "how")},
+    **{("mark", "my", "words", p): () for p in (",", "and", ":")},
+    **{("purl", n, p): () for n in ("one", "two", "three") for p in (",", "and", ":")},
+    **{(",", "did", "you", "hear", "?"): ("?",), (",", "have", "you", "heard", "anything", ","): (",",),
+       ("have", "you", "heard", "anything", ","): ()},
+    **{(*c, "again", ",", "with", "feeling", p): () for c in ((), (",",)) for p in (",", ":")},
+    **{("?", "from", "the", "top", *p, "."): ("?",) for p in ((), (",", "please"))},
     # a scout leader's ('eyes peeled ,', 'Think back over the clip , troop :')
     **{(*k, "eyes", "peeled", *p): () for k in ((), ("keep", "your")) for p in ((), (",",))},
     **{("think", "back", o, "the", f, p): () for o in ("over", "to", "on") for f in ("clip", "video", "footage")
