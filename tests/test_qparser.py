@@ -4788,3 +4788,55 @@ def test_a_historian_a_pharmacist_a_boxing_announcer_a_scout_leader_and_a_barten
     assert stool[-3:] == ["filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
     assert orders[:3] == ["Objects", "filter_attributes[brown]", "unique"] and orders[-1] == "is_static"
     assert hour[-3:] == ["unique", "get_frame", "faster_velocity"]
+
+
+def test_a_speaker_s_remark_before_a_dash_a_zookeeper_a_nurse_a_herald_and_a_cabbie_are_read():
+    parser = QuestionParser.load()
+    gently, smoker, glass, resident = parser.parse_batch([
+        "Gently, gently — does the brown fighter run into the bicycle in the video?",
+        "Steady with the smoker now — if the gray one had been moving at a low speed at the very beginning, would it "
+        "have banged into the brown tandem bike?",
+        "Please don't tap the glass — is the blue biplane speeding up at the outset?",
+        "Our resident cyan airliner, folks — is there an impact involving it?"])
+    assert gently[0] == "Events" and gently[-1] == "exist"
+    assert smoker[3] == "Counterfactual_moving_slow"                     # (refused: 'steady' a speed kept)
+    assert glass == ["Objects", "filter_attributes[blue]", "filter_attributes[biplane]", "unique", "start",
+                     "is_accelerating"]                                 # (refused: 'not' a negation)
+    assert resident[0] == "Events" and "filter_attributes[airliner]" in resident
+    patient, house, gentles, guv = parser.parse_batch([
+        "Next patient, the gray mountain bike: is it involved in a bump, yes or no?",
+        "Feeding time in the bus house: did the brown regular bus and the cyan bus smash into each other?",
+        "Suppose the purple jet had set forth quickly, good gentles; would it have run into the cyan vehicle?",
+        "The yellow one crashes into something, right, so what colour's the thing it hits?"])
+    assert patient[0] == "Events"                                       # ('next' read as later)
+    assert house[:4] == ["Events", "Objects", "filter_attributes[brown]", "filter_attributes[regular_bus]"]
+    assert gentles[4] == "Counterfactual_moving_fast"                   # ('gentles' read as slowly)
+    assert guv[-3:] == ["get_all_col_partners", "unique", "query_attributes[color]"]
+    # a choice of directions keeps its 'right'
+    assert parser.parse("Which way is the bus moving at the start: left, right, up or down?")[-1] == \
+        "query_moving_direction"
+
+
+def test_a_knight_a_tabloid_a_trainspotter_a_physio_and_a_scene_without_a_comma_are_read():
+    parser = QuestionParser.load()
+    honour, sources, first, hall = parser.parse_batch([
+        "Upon mine honour, at the moment it clashes with the brown one, is the purple regular bus static, slow, or "
+        "fast?",
+        "Sources close to the race reveal a vehicle getting faster at the beginning of the video: what colour is it?",
+        "What model is the one that's airborne at the start? Ooh, that'll be a first for me.",
+        "Did the red biplane smash into the brown double-decker while the hall was meant to be quiet?"])
+    assert honour[:3] == ["Objects", "filter_attributes[purple]", "filter_attributes[regular_bus]"]   # (the brown)
+    assert sources == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert first == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    assert hall[0] == "Events"                                          # ('hall' fixed as 'shall': the future)
+    stride, anywhere, gallop = parser.parse_batch([
+        "In the opening frames, who's got the better stride: is the yellow road bike moving faster than the purple "
+        "scooter?",
+        "Right, anywhere in the video, is there a crash between the aeroplane and the minivan?",
+        "When they collide, doth the bus gallop more quickly than the gray minivan, I ask upon mine honour?"])
+    assert stride[-2:] == ["start", "faster_velocity"]
+    assert anywhere[0] == "Events" and anywhere[-1] == "exist"
+    assert gallop[-3:] == ["unique", "get_frame", "faster_velocity"]
+    # a clause of a vehicle's own is no scene, and 'Right,' before another direction stays
+    assert parser.parse("Is the red car moving while the bus is parked?") is None
+    assert parser.parse("Right, left or up: which way is the bus moving at the start?")[-1] == "query_moving_direction"

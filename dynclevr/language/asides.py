@@ -47,8 +47,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "man", "matey", "lovelies", "love",   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
              "apprentice", "angler",   # a wizard's, a fisherman's
              "troop", "scouts", "cubs", "houston",   # a scout leader's, an astronaut's
-             "gentles", "guv"}   # a herald's ('good gentles'), a cabbie's
-ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little"}
+             "gentles", "guv", "squire", "maiden"}   # a herald's ('good gentles'), a cabbie's, a knight's
+ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -283,10 +283,13 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         words, end = kept + words[end:], len(kept)
     closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
     # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...';
-    # and whom it is asked after the interjection: 'Right , troop , the cruiser crashes into something : ...')
+    # and whom it is asked after the interjection: 'Right , troop , the cruiser crashes into something : ...'; and a
+    # Briton's 'Right ,' before anything but another direction: 'Right , anywhere in the video , is there ...')
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS \
             | CONDITION_OPENERS | {"tell", "let", "say"} and not ADDRESSED & set(words[:k]) and \
             not any(a.start - 1 < k for a in addressed) and \
+            not (words[:2] == ["right", ","] and words[k] not in DIRECTION_WORDS | {"or", "and"}
+                 and QUESTION_OPENERS.intersection(words[k:])) and \
             not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"} and FILLERS & set(words[:k])):
         return words[:end], closing
     return words[k:end], ((" ".join(words[:k]), "nothing, an interjection"), *closing)
@@ -317,6 +320,14 @@ def _offers_speed(span: list[str]) -> bool:
 def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
     the digressions read as nothing, or the words as they are and ()."""
+    # (a clause of the scene's own closing it, without a comma: '... while the hall was meant to be quiet ?', its
+    # 'hall' was fixed as 'shall' and read as the future)
+    end = len(words) - (words[-1:] in (["?"], ["."]))
+    scene = next((w for w in range(3, end - 2) if words[w] in ("while", "whilst") and words[w + 1] == "the"
+                  and end - w <= 10 and not {"it", "they", ","} & set(words[w:end])
+                  and not _says_something(words[w + 1:end])), None)
+    if scene is not None and _says_something(words[:scene]):
+        return words[:scene] + words[end:], ((" ".join(words[scene:end]), "nothing, a digression"),)
     commas = [k for k, w in enumerate(words) if w == ","]
     if not commas:
         return words, ()
@@ -1635,13 +1646,16 @@ def forecast_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a look past the video"),)
 
 
-def _remarked(pre: list[str], mark: str) -> bool:
-    """Whether words before a dash are a remark of the speaker's, whatever its manner ('Gently , gently —', a
-    beekeeper's 'Steady with the smoker now —', a dentist's 'Open a touch wider —'): short, naming no vehicle, time or
-    collision, and offering no choice."""
-    return mark == "-" and len(pre) <= 8 and not asks_impact(pre) and not _offers_speed(pre) and not set(pre) & (
+def _remarked(pre: list[str], mark: str, after: list[str]) -> bool:
+    """Whether words before a dash are a remark of the speaker's, whatever its manner (a beekeeper's 'Gently , gently
+    —', 'Steady with the smoker now —'): short, naming no vehicle, time, speeding up or collision, and offering no
+    choice; and before the question itself (not a hyphen's 'post - haste , do ...')."""
+    return mark == "-" and len(pre) <= 8 and after[:1] != [] and after[0] in QUESTION_OPENERS | CONDITION_OPENERS \
+        | TIME_OPENERS | {"which", "what", "how", "when"} and not asks_impact(pre) and not _offers_speed(pre) and not set(pre) & (
         OBJECT_WORDS | set(COLOR_NAMES) | FILM_WORDS | START_WORDS | TIME_SAID | GENERIC | GENERIC_NOUNS
-        | QUESTION_OPENERS | {"or", "?", "not", "never", "if", "had", "after", "before", "then", "later", "future"})
+        | QUESTION_OPENERS
+        | {"or", "?", "not", "never", "if", "had", "after", "before", "then", "later", "future", "something",
+           "anything", "thing", "one"}) and not any(w.startswith(("accelerat", "speed", "float", "hover")) for w in pre)
 
 
 def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1662,9 +1676,15 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
-        set(pre) <= TAGGING or _remarked(pre, words[k])
+        set(pre) <= TAGGING or _remarked(pre, words[k], words[k + 1:k + 2])
+    # (or a question of who leads, put first, after its time if any: a physio's 'in the opening frames , who's got
+    # the better stride : is the road bike faster ...')
+    who = next((w for w in range(len(pre)) if pre[w] == "who" and (w == 0 or pre[w - 1] == ",")), None)
+    if who is not None and main[:1] and main[0] in QUESTION_OPENERS | {"what", "which"} and mentions(main) and \
+            words[k] in (":", "-"):
+        return words[:who] + main, ((" ".join(words[who:k + 1]), "nothing, a preamble"),)
     if not (reason or quiet) or not main or not (main[0] in QUESTION_OPENERS | {"which", "tell", "if", "when"}
-                                                  or named):
+                                                 or named):
         return words, ()
     return attribute_kept(pre, main), ((" ".join(words[:k + 1]), "nothing, a preamble"),)
 

@@ -1943,6 +1943,20 @@ IDIOMS = phrase_table({
        ("have", "you", "heard", "anything", ","): ()},
     **{(*c, "again", ",", "with", "feeling", p): () for c in ((), (",",)) for p in (",", ":")},
     **{("?", "from", "the", "top", *p, "."): ("?",) for p in ((), (",", "please"))},
+    # a knight's ('Upon mine honour ,', ', I ask upon mine honour ?', 'by my sword', 'in this quest') and a tabloid's
+    # ('Sources close to the production reveal ...'), a trainspotter's ('? Ooh, that'd be a first for me.')
+    **{(*c, *i, u, m, h, p): (p,) * (p == "?") for c in ((), (",",)) for i in ((), ("i", "ask")) for u in ("upon", "on")
+       for m in ("mine", "my") for h in ("honour", "honor") for p in (",", "?", ":", "!")},
+    **{(",", "i", "ask", *b, "?"): ("?",) for b in ((), ("by", "my", "sword"), ("thee",), ("you",))},
+    ("in", "this", "quest"): (), ("forsooth", ","): (), ("by", "my", "troth", ","): (),
+    **{("sources", "close", "to", "the", x, v, *t): () for x in ("set", "production", "race", "wreck", "star", "crash",
+                                                               "scene", "studio", "palace", "team")
+       for v in ("reveal", "say", "tell", "claim", "confirm", "reveals", "says") for t in ((), ("that",))},
+    **{("?", *o, "that", *b, "be", "a", "first", "for", "me", e): ("?",) for o in ((), ("ooh", ","), ("now",))
+       for b in (("'", "d"), ("'", "ll"), ("would",), ("will",)) for e in (".", "!")},
+    **{(",", "right", "-", w): ("-", w) for w in ("would", "will", "is", "was", "did", "does", "what", "which", "how")},
+    # a physio's 'Where does it hurt ?' before the question; a tabloid's 'this high-flying show-off' (one floating)
+    ("where", "does", "it", "hurt", "?"): (), ("high", "-", "flying"): ("floating",), ("show", "-", "off"): ("one",),
     # a scout leader's ('eyes peeled ,', 'Think back over the clip , troop :')
     **{(*k, "eyes", "peeled", *p): () for k in ((), ("keep", "your")) for p in ((), (",",))},
     **{("think", "back", o, "the", f, p): () for o in ("over", "to", "on") for f in ("clip", "video", "footage")
