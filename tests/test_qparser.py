@@ -4840,3 +4840,30 @@ def test_a_knight_a_tabloid_a_trainspotter_a_physio_and_a_scene_without_a_comma_
     # a clause of a vehicle's own is no scene, and 'Right,' before another direction stays
     assert parser.parse("Is the red car moving while the bus is parked?") is None
     assert parser.parse("Right, left or up: which way is the bus moving at the start?")[-1] == "query_moving_direction"
+
+
+def test_trailing_off_stage_directions_brackets_and_a_barker_a_colonel_and_a_spelling_bee_are_read():
+    parser = QuestionParser.load()
+    whisper, choices, faster, bracket = parser.parse_batch([
+        "*soft whisper* when the cyan double-decker and the gray one collide, what's the double-decker's speed... "
+        "stationary, slow, or fast?",
+        "*whispers* when the purple bicycle hits the blue regular bus, which way is it moving... left, right, front, "
+        "back, up, or down?",
+        "*soft whisper* at the start of the clip, is the double-decker going faster... and faster... and faster?",
+        "Supposing the minivan had been moving rapidly from the start (mark this, apprentice), would it bump into the "
+        "cyan airliner?"])
+    assert whisper[-3:] == ["unique", "get_frame", "query_moving_velocity"]
+    assert choices[-3:] == ["unique", "get_frame", "query_moving_direction"]
+    assert faster == ["Objects", "filter_attributes[double_bus]", "unique", "start", "is_accelerating"]
+    assert bracket[3] == "Counterfactual_moving_fast"
+    shy, carry, word = parser.parse_batch([
+        "Don't be shy, folks, which way is the brown road bike moving at the beginning?",
+        "After the shown frames, will the cyan minivan crash into any other object, or will it carry on unscathed?",
+        "Your word is 'fast', F-A-S-T: suppose the red jet had started out fast, would it run into the brown "
+        "biplane?"])
+    assert shy[-2:] == ["start", "query_moving_direction"]              # (refused: 'not' a negation)
+    assert carry[0] == "futureEvents"
+    assert word[4] == "Counterfactual_moving_fast"
+    # one starred word is a correction, and a bracket that names a vehicle stays
+    assert parser.parse("Is the red cat* car moving fast at the start?") == [
+        "Objects", "filter_attributes[red]", "filter_attributes[car]", "unique", "start", "is_moving_velocity[fast]"]

@@ -320,6 +320,16 @@ def _offers_speed(span: list[str]) -> bool:
 def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
     the digressions read as nothing, or the words as they are and ()."""
+    # (an aside in brackets: 'supposing the minivan had been moving rapidly ( mark this , apprentice ) , would ...')
+    opened = next((k for k, w in enumerate(words) if w == "("), None)
+    closed = next((k for k in range(opened + 3, min(len(words), opened + 10)) if words[k] == ")"), None) \
+        if opened is not None else None
+    # (of two words or more: 'time ( s )' is a unit)
+    if closed is not None and not _says_something(words[opened + 1:closed]) and \
+            _says_something(words[:opened] + words[closed + 1:]):
+        aside = words[opened:closed + 1]
+        rest, read = digressions_dropped(words[:opened] + words[closed + 1:])
+        return rest, ((" ".join(aside), "nothing, a digression"), *read)
     # (a clause of the scene's own closing it, without a comma: '... while the hall was meant to be quiet ?', its
     # 'hall' was fixed as 'shall' and read as the future)
     end = len(words) - (words[-1:] in (["?"], ["."]))
@@ -345,10 +355,14 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     # burning ?', ', as the old lamp sees it ?'; its possessive "'s" asks nothing)
     end = len(words) - (words[-1:] in (["?"], ["."]))
     closing = words[start:end]
+    # (a collision question's other side, closing it: ', or will it carry on unscathed ?', ', or did it keep out of
+    # trouble like a sensible chap ?')
+    other = closing[:1] == ["or"] and closing[1:2] and closing[1] in DISLOCATED_ASKS and closing[2:3] == ["it"] and \
+        closing[3:4] and closing[3] in ESCAPING and asks_impact(words[:start])
     # (a clause of time whose subject is the scene's: ', while the old lamp kept its watch ?')
     scene = closing[1:] if closing[:1] in (["while"], ["as"]) and closing[1:2] == ["the"] and \
         not {"it", "they"} & set(closing) else closing
-    if scene and (len(closing) <= 4 or len(closing) <= 12 and closing[0] in SCENE_OPENERS) and \
+    if other or scene and (len(closing) <= 4 or len(closing) <= 12 and closing[0] in SCENE_OPENERS) and \
             not _says_something(scene) and not _offers_speed(closing) and \
             not (YES_NO_OPENERS | QUESTION_OPENERS | ({"it", "they"} if len(closing) <= 4 else set())).intersection(
                 w for k, w in enumerate(closing) if ["'", "s"] not in (closing[k - 1:k + 1], closing[k:k + 2])):
@@ -360,6 +374,7 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return rest, tuple((r, "nothing, a digression") for r in read)
 
 
+ESCAPING = {"carry", "keep", "stay", "go", "escape", "get", "come", "avoid", "remain", "steer", "make"}
 SCENE_OPENERS = {"by", "under", "beneath", "below", "beside", "near", "with", "while", "on", "in", "amid", "as"}
 
 
@@ -1644,6 +1659,18 @@ def forecast_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
             (OBJECT_WORDS | set(COLOR_NAMES) | GENERIC | GENERIC_NOUNS).intersection(words[:k]):
         return words, ()
     return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a look past the video"),)
+
+
+def word_given_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A spelling bee's word given before the question, however said and spelt ('your word is ' slowly ' , s - l - o
+    - w - l - y : would you say ...' -> 'would you say ...'; its 'word is' is no hearsay). With the word given read as
+    nothing, or the words as they are and ()."""
+    if words[:3] not in (["your", "word", "is"], ["the", "word", "is"]):
+        return words, ()
+    k = next((k for k in range(4, min(len(words) - 1, 30)) if words[k] == ":"), None)
+    if k is None or not mentions(words[k + 1:]):
+        return words, ()
+    return words[k + 1:], ((" ".join(words[:k + 1]), "nothing, a word given"),)
 
 
 def _remarked(pre: list[str], mark: str, after: list[str]) -> bool:

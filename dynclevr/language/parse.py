@@ -56,7 +56,7 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_
                                       hedges_dropped, hooks_dropped, hypothesis_as_asked, interjections_dropped,
                                       owners_dropped, preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
                                       requested_as_asked, restatements_read, soothing_dropped, ticket_fields_read,
-                                      wagers_read)
+                                      wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -88,7 +88,7 @@ from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_b
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
                                        homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
-                                       telegram_as_said, worksheet_as_said)
+                                       telegram_as_said, trailing_off_read, worksheet_as_said)
 from dynclevr.language.times import (first_frames_as_said, inserted_time_last, moment_pictured, present_asked_later,
                                      time_clause_closed, video_end_as_said)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
@@ -321,11 +321,14 @@ class QuestionParser:
                 for w in words if w not in self.readable}
         held = {w: k for w, k in held.items() if k}
         words = [held.get(w, w) for w in words]
+        words, trailed = trailing_off_read(words)
+        words, given = word_given_dropped(words)
+        trailed += given
         words = closing_mark_added(words)
         words, clause_comma = clause_comma_added(words)
         words, pictured = moment_pictured(words)
         words, starred = corrections_starred(words, self.readable)
-        starred = clause_comma + pictured + starred
+        starred = trailed + clause_comma + pictured + starred
         words, archaic = archaic_as_said(words, self.readable)
         words, relayed = quoted_question(words)
         starred += archaic + relayed

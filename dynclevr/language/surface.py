@@ -399,6 +399,34 @@ def archaic_as_said(words: list[str], readable) -> tuple[list[str], tuple[tuple[
 STARRED = (["*", None], [None, "*"], ["(", None, ")"], ["meant", None], ["i", "meant", None], ["*", "*", None])
 
 
+def trailing_off_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """A speaker's stage directions and trailing off, read as the grammar's marks: '* soft whisper * when ...' ->
+    'when ...' (two words or more between stars, naming no vehicle: one starred word is a correction, read by
+    `corrections_starred`); 'which way is it moving . . . left , right ...' -> '... moving , left , right ...' (the
+    choices after it), and 'faster . . . and faster' -> 'faster and faster'. Elsewhere trailing off ends a sentence, as
+    it is read. With the words read so, or the words as they are and ()."""
+    read, out, k = [], [], 0
+    while k < len(words):
+        close = next((j for j in range(k + 3, min(len(words), k + 7)) if words[j] == "*"), None) \
+            if words[k] == "*" else None
+        if close is not None and all(w.isalpha() and w not in OBJECT_WORDS and w not in COLOR_NAMES
+                                     for w in words[k + 1:close]):
+            read.append((" ".join(words[k:close + 1]), "nothing, a stage direction"))
+            k = close + 1 + (words[close + 1:close + 2] in ([","], [":"], ["."]))
+            continue
+        offered = words[k + 3:k + 4] == ["and"] and out[-1:] and out[-1] in COMPARISONS or \
+            words[k + 3:k + 4] and words[k + 3] in SLASHED and words[k + 4:k + 5] in ([","], ["or"])
+        if words[k:k + 3] == [".", ".", "."] and out and offered:
+            said = [] if words[k + 3] == "and" or out[-1] in (",", ":", ";") else [","]
+            read.append((". . .", " ".join(said) or "nothing"))
+            out += said
+            k += 3
+            continue
+        out.append(words[k])
+        k += 1
+    return (out, tuple(read)) if read else (words, ())
+
+
 def corrections_starred(words: list[str], readable) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the green sub statistic when the video starts ? * static' -> 'is the green sub static when the video
     starts ?'; 'the red bruiser ( cruiser )' -> 'the red cruiser'. With the words read so, or the words as they are

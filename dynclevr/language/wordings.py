@@ -1749,8 +1749,8 @@ IDIOMS = phrase_table({
     **{("just", "to", c, "on", "my", "end", ","): () for c in ("confirm", "check", "verify")},
     **{("may", "i", v): ("tell", "me") for v in ("confirm", "ask", "check", "verify")},
     **{(c, "you", "confirm", "the"): ("tell", "me", "the") for c in ("could", "can", "would")},
-    **{(*c, "ladies", "and", "gentlemen", p): (p,) * (c != () and p == ":") for c in ((), (",",))
-       for p in (",", ":", "!")},
+    **{(*c, "ladies", "and", g, p): (p,) * (c != () and p == ":") for c in ((), (",",))
+       for g in ("gentlemen", "gents") for p in (",", ":", "!")},
     **{("if", "i", "may", "have", "your", "attention", p): () for p in (",", ":")},
     # a teacher's 'can anyone tell me'; a controller's 'say again' (read as how often) and ', over?'; a preacher's
     # and a host's forms of address; a ghost story's 'and nobody knows why ...' (read as asking why); 'do we think?'
@@ -1956,7 +1956,20 @@ IDIOMS = phrase_table({
        for b in (("'", "d"), ("'", "ll"), ("would",), ("will",)) for e in (".", "!")},
     **{(",", "right", "-", w): ("-", w) for w in ("would", "will", "is", "was", "did", "does", "what", "which", "how")},
     # a physio's 'Where does it hurt ?' before the question; a tabloid's 'this high-flying show-off' (one floating)
+    # the picture starting is the video's ('when this here picture starts rollin'': read with 'galloping' as
+    # moving, it was a vehicle coming into view)
+    **{(*d, "picture", v, *r): ("the", "video", v) for d in (("the",), ("this",), ("this", "here"))
+       for v in ("starts", "begins", "started", "began") for r in ((), ("rolling",), ("rollin",))},
     ("where", "does", "it", "hurt", "?"): (), ("high", "-", "flying"): ("floating",), ("show", "-", "off"): ("one",),
+    # a carnival barker's ('Don't be shy , folks ,', 'Come closer , come closer ,', 'step up and tell me'), a rapper's
+    # 'Straight up ,' (honestly), a spelling-bee host's ('Take your time with this one , speller :')
+    **{(*d, "be", "shy", *n, *f, p): () for d in (("do", "not"), ("don", "t")) for n in ((), ("now",))
+       for f in ((), (",", "folks"), (",", "everyone")) for p in (",", ":", "-", "!")},
+    **{("come", "closer", ",", *c): () for c in ((), ("come", "closer", ","))},
+    **{("step", "up", "and", "tell", "me"): ("tell", "me"), ("step", "right", "this", "way", "into"): ("imagine",)},
+    **{("straight", "up", p): () for p in (",", "-", ":")},
+    **{("take", "your", "time", *w, p): () for w in ((), ("with", "this", "one"), ("with", "this", "one", ",", "speller"))
+       for p in (",", ":", ";", "-")},
     # a scout leader's ('eyes peeled ,', 'Think back over the clip , troop :')
     **{(*k, "eyes", "peeled", *p): () for k in ((), ("keep", "your")) for p in ((), (",",))},
     **{("think", "back", o, "the", f, p): () for o in ("over", "to", "on") for f in ("clip", "video", "footage")
