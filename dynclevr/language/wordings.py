@@ -1960,6 +1960,27 @@ IDIOMS = phrase_table({
     # moving, it was a vehicle coming into view)
     **{(*d, "picture", v, *r): ("the", "video", v) for d in (("the",), ("this",), ("this", "here"))
        for v in ("starts", "begins", "started", "began") for r in ((), ("rolling",), ("rollin",))},
+    # a bard's ('..., fa-la-la ?', 'Hark , and I shall sing of a chopper :', 'A tale of the red aeroplane , so the
+    # minstrels say :'), a trader's ('Green SUV , one careful owner —', 'Go on then ,'), a podcaster's ('Welcome back
+    # to the show :', 'Stay tuned , because', 'Our listeners wrote in about the biplane :') and an antiques dealer's
+    # ('..., or do my old eyes deceive me ?', ', for my records')
+    **{(*c, "fa", "-", "la", "-", "la", *p): p if c else () for c in ((), (",",))
+       for p in ((",",), (":",), ("?",), ("!",), (".",), ())},
+    **{(*h, "i", "shall", "sing", "of"): ("look", "at") for h in (("hark", ",", "and"), ("hark", ","), ())},
+    ("a", "tale", "of"): ("look", "at"),
+    **{(",", "so", "the", w, "say"): () for w in ("minstrels", "bards", "songs", "stories", "legends", "poets")},
+    **{(",", "one", "careful", "owner", p): (p,) * (p != ",") for p in (",", "-", ":", ";")},
+    **{(",", "lovely", "bit", "of", "kit", p): (p,) * (p != ",") for p in (",", "-", ":", ";")},
+    **{("go", "on", "then", p): () for p in (",", "-", ":")},
+    **{("welcome", "back", *t, p): () for t in ((), ("to", "the", "show"), (",", "folks"), (",", "listeners"),
+                                              (",", "true", "-", "crime", "fans"), (",", "everyone"))
+       for p in (",", ":", "!", "-")},
+    **{("stay", "tuned", p, *b): () for p in (",", ":") for b in ((), ("because",))},
+    **{("our", "listeners", "wrote", "in", "about"): ("look", "at"), ("our", "listeners", "wrote", "in", ":"): ()},
+    **{("here", "'", "s", *w, p): () for w in (("our", "first", "clue", "of", "the", "evening"), ("the", "cliffhanger"),
+                                             ("the", "cliffhanger", ",", "folks")) for p in (",", ":", "-")},
+    **{(",", "or", "do", "my", *o, "eyes", "deceive", "me", "?"): ("?",) for o in ((), ("old",))},
+    **{(",", "for", w, r): () for w in ("my", "the", "our") for r in ("records", "record", "catalogue", "files")},
     ("where", "does", "it", "hurt", "?"): (), ("high", "-", "flying"): ("floating",), ("show", "-", "off"): ("one",),
     # a carnival barker's ('Don't be shy , folks ,', 'Come closer , come closer ,', 'step up and tell me'), a rapper's
     # 'Straight up ,' (honestly), a spelling-bee host's ('Take your time with this one , speller :')
