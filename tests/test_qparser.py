@@ -4864,6 +4864,33 @@ def test_trailing_off_stage_directions_brackets_and_a_barker_a_colonel_and_a_spe
     assert shy[-2:] == ["start", "query_moving_direction"]              # (refused: 'not' a negation)
     assert carry[0] == "futureEvents"
     assert word[4] == "Counterfactual_moving_fast"
-    # one starred word is a correction, and a bracket that names a vehicle stays
+    # markdown's bold is no stage direction, and one starred word is a correction
+    assert parser.parse("**what if** the cyan SUV was accelerating from the very beginning... would it collide with "
+                        "the brown cruiser?")[4] == "Counterfactual_accelerating"
     assert parser.parse("Is the red cat* car moving fast at the start?") == [
         "Objects", "filter_attributes[red]", "filter_attributes[car]", "unique", "start", "is_moving_velocity[fast]"]
+
+
+def test_a_football_manager_s_end_of_the_day_a_comic_a_dinner_lady_a_tax_inspector_and_a_bard_are_read():
+    parser = QuestionParser.load()
+    day, crowd, pet, writing = parser.parse_batch([
+        "When they crash, at the end of the day, is the school bus slower than the grey saloon?",
+        "What velocity has the blue fighter jet got in the first frames? Anybody? Is this thing on?",
+        "Is it right, pet, that the red utility bike is going slow when the video starts? Come on, eat up.",
+        "Supposing the double-decker had been zooming from the start, and I will need this in writing, would it have "
+        "crashed into the blue car?"])
+    assert day[-3:] == ["unique", "get_frame", "slower_velocity"]       # (refused: 'end' a time)
+    assert crowd == ["Objects", "filter_attributes[blue]", "filter_attributes[fighter]", "unique", "start",
+                     "query_moving_velocity"]                          # (refused: 'anybody' a person)
+    assert pet[-2:] == ["start", "is_moving_velocity[slow]"]
+    assert writing[3] == "Counterfactual_moving_fast"
+    quiet, fala, careful, listeners = parser.parse_batch([
+        "Was there a bump between the gray mountain bike and the yellow car, or was it all quiet?",
+        "A tale of a purple motorbike, fa-la-la: is it caught up in any collision?",
+        "Green SUV, one careful owner — is it picking up speed at the start of the video?",
+        "Our listeners wrote in about the biplane: does it have a collision at some point, yes or no?"])
+    assert quiet[0] == "Events" and quiet[-1] == "exist"               # ('quiet' read as still at the collision)
+    assert fala == ["Events", "Objects", "filter_attributes[purple]", "filter_attributes[motorbike]", "unique",
+                    "filter_collision", "exist"]
+    assert careful[-2:] == ["start", "is_accelerating"]
+    assert listeners == ["Events", "Objects", "filter_attributes[biplane]", "unique", "filter_collision", "exist"]

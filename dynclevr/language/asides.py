@@ -47,7 +47,8 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "man", "matey", "lovelies", "love",   # a beat poet's, a sailor's, a bingo caller's, a hairdresser's
              "apprentice", "angler",   # a wizard's, a fisherman's
              "troop", "scouts", "cubs", "houston",   # a scout leader's, an astronaut's
-             "gentles", "guv", "squire", "maiden"}   # a herald's ('good gentles'), a cabbie's, a knight's
+             "gentles", "guv", "squire", "maiden",   # a herald's ('good gentles'), a cabbie's, a knight's
+             "duck", "captain"}   # a dinner lady's ('my duck'), a starship computer's
 ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
@@ -356,9 +357,9 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     end = len(words) - (words[-1:] in (["?"], ["."]))
     closing = words[start:end]
     # (a collision question's other side, closing it: ', or will it carry on unscathed ?', ', or did it keep out of
-    # trouble like a sensible chap ?')
+    # trouble like a sensible chap ?', ', or was it all quiet ?': 'quiet' was read as still, at the collision)
     other = closing[:1] == ["or"] and closing[1:2] and closing[1] in DISLOCATED_ASKS and closing[2:3] == ["it"] and \
-        closing[3:4] and closing[3] in ESCAPING and asks_impact(words[:start])
+        closing[3:4] and (closing[3] in ESCAPING or CALM.intersection(closing[3:5])) and asks_impact(words[:start])
     # (a clause of time whose subject is the scene's: ', while the old lamp kept its watch ?')
     scene = closing[1:] if closing[:1] in (["while"], ["as"]) and closing[1:2] == ["the"] and \
         not {"it", "they"} & set(closing) else closing
@@ -375,6 +376,7 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
 
 
 ESCAPING = {"carry", "keep", "stay", "go", "escape", "get", "come", "avoid", "remain", "steer", "make"}
+CALM = {"quiet", "calm", "peaceful", "clear", "clean", "safe", "fine", "uneventful"}
 SCENE_OPENERS = {"by", "under", "beneath", "below", "beside", "near", "with", "while", "on", "in", "amid", "as"}
 
 

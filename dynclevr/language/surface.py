@@ -399,6 +399,10 @@ def archaic_as_said(words: list[str], readable) -> tuple[list[str], tuple[tuple[
 STARRED = (["*", None], [None, "*"], ["(", None, ")"], ["meant", None], ["i", "meant", None], ["*", "*", None])
 
 
+STAGE_UNSAID = {"what", "which", "how", "when", "if", "had", "suppose", "imagine", "is", "was", "did", "does", "will",
+                "would", "not", "no"}   # a stage direction asks nothing
+
+
 def trailing_off_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A speaker's stage directions and trailing off, read as the grammar's marks: '* soft whisper * when ...' ->
     'when ...' (two words or more between stars, naming no vehicle: one starred word is a correction, read by
@@ -409,8 +413,10 @@ def trailing_off_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     while k < len(words):
         close = next((j for j in range(k + 3, min(len(words), k + 7)) if words[j] == "*"), None) \
             if words[k] == "*" else None
-        if close is not None and all(w.isalpha() and w not in OBJECT_WORDS and w not in COLOR_NAMES
-                                     for w in words[k + 1:close]):
+        # (not markdown's bold: '** what if ** the cyan suv ...')
+        if close is not None and "*" not in (words[k - 1] if k else "", words[close + 1:close + 2] or "") and all(
+                w.isalpha() and w not in OBJECT_WORDS | STAGE_UNSAID and w not in COLOR_NAMES
+                for w in words[k + 1:close]):
             read.append((" ".join(words[k:close + 1]), "nothing, a stage direction"))
             k = close + 1 + (words[close + 1:close + 2] in ([","], [":"], ["."]))
             continue

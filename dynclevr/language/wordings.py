@@ -1981,6 +1981,34 @@ IDIOMS = phrase_table({
                                              ("the", "cliffhanger", ",", "folks")) for p in (",", ":", "-")},
     **{(",", "or", "do", "my", *o, "eyes", "deceive", "me", "?"): ("?",) for o in ((), ("old",))},
     **{(",", "for", w, r): () for w in ("my", "the", "our") for r in ("records", "record", "catalogue", "files")},
+    # a football manager's 'at the end of the day' (in the end: no time of the video's), 'we go again', 'credit where
+    # it's due'; a comic's '? Anybody? Is this thing on?', '? Tough crowd.'; a dinner lady's ('Eat up , love :', 'Is
+    # it right , pet , that ...', 'No running in the hall ,')
+    **{(*c, "at", "the", e, "of", "the", "day", *p): (",",) * (c != () and p != ()) for c in ((), (",",))
+       for e in ("end", "ends") for p in ((), (",",))},
+    **{(*c, "we", "go", "again", *p): (",",) * (c != () and p != ()) for c in ((), (",",)) for p in ((), (",",))},
+    **{(",", "credit", "where", "it", "'", "s", "due"): ()},
+    **{("?", a, "?"): ("?",) for a in ("anyone", "anybody", "hello", "no")},
+    **{("is", "this", "thing", "on", "?"): (), ("?", "tough", "crowd", "."): ("?",), ("?", "tough", "crowd", "!"): ("?",),
+       ("?", "anybody", "awake", "out", "there", "?"): ("?",), ("?", "anyone", "awake", "out", "there", "?"): ("?",),
+       ("?", "do", "not", "all", "answer", "at", "once", "."): ("?",)},
+    **{("is", "it", "right", *c, "that"): ("is", "it", "true", "that") for c in ((), (",",))},
+    **{(*c, e, "up", *a, p): () for c in ((), (",", "come", "on", ",")) for e in ("eat", "plates")
+       for a in ((), (",", "love"), (",", "pet"), (",", "come", "on")) for p in (",", ":", "!", ".", "-")},
+    **{("come", "on", p): () for p in (",", ":", "!", "-")},
+    **{("no", "running", "in", "the", h, *z, p): () for h in ("hall", "corridor", "corridors")
+       for z in ((), (",", "and", "no", "zooming", "neither")) for p in (",", ":", "!", "-", ";")},
+    # a tax inspector's (', and I will need that in writing ,', ', per section four ,', 'strictly for the audit
+    # trail ,') and a night guard's ('Scrolling through the feed :', 'across my screen')
+    **{(",", "and", *i, w, t, "in", "writing", p): (p,) for i, w in ((("i", "will"), "need"), (("i", "shall"), "need"),
+                                                                (("i", "shall"), "want"), (("i", "will"), "want"),
+                                                                (("i", "'", "ll"), "need"), (("may", "i"), "have"))
+       for t in ("that", "this", "it") for p in (",", "?")},
+    **{(",", "per", "section", n, p): (p,) for n in ("one", "two", "three", "four", "five", "six") for p in (",", "?")},
+    **{(*s, "for", "the", "audit", "trail", p): () for s in ((), ("strictly",), ("purely",)) for p in (",", ":")},
+    **{("scrolling", "through", "the", f, p): () for f in ("feed", "footage", "tape") for p in (",", ":")},
+    **{("across", "my", "screen"): (), ("on", "my", "screen"): ()},
+    **{("by", "the", t, "field", p): () for t in ("top", "bottom", "low", "far") for p in (",", ":")},   # a farmer's
     ("where", "does", "it", "hurt", "?"): (), ("high", "-", "flying"): ("floating",), ("show", "-", "off"): ("one",),
     # a carnival barker's ('Don't be shy , folks ,', 'Come closer , come closer ,', 'step up and tell me'), a rapper's
     # 'Straight up ,' (honestly), a spelling-bee host's ('Take your time with this one , speller :')
@@ -2047,8 +2075,8 @@ _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", 
 _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
 
 
-SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames"}   # ('from the start ,
-# like ...')
+SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames", "video", "clip"}
+# ('from the start , like ...', 'at the start of the video , like a runaway balloon :')
 SIMILE_OPENERS = {"like", "as"}
 SIMILE_SPEEDS_SAID = SIMILE_SPEEDS | SIMILE_MOTIONS | {"slower", "faster", "quicker", "stopped"}
 
