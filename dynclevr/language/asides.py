@@ -375,6 +375,8 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     return rest, tuple((r, "nothing, a digression") for r in read)
 
 
+# (`digressions_dropped`) how a collision question's other answer goes on ('or will it carry on ...', 'or was it all
+# quiet'), and how a scene closing the question opens
 ESCAPING = {"carry", "keep", "stay", "go", "escape", "get", "come", "avoid", "remain", "steer", "make"}
 CALM = {"quiet", "calm", "peaceful", "clear", "clean", "safe", "fine", "uneventful"}
 SCENE_OPENERS = {"by", "under", "beneath", "below", "beside", "near", "with", "while", "on", "in", "amid", "as"}
