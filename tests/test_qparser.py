@@ -4894,3 +4894,41 @@ def test_a_football_manager_s_end_of_the_day_a_comic_a_dinner_lady_a_tax_inspect
                     "filter_collision", "exist"]
     assert careful[-2:] == ["start", "is_accelerating"]
     assert listeners == ["Events", "Objects", "filter_attributes[biplane]", "unique", "filter_collision", "exist"]
+
+
+def test_a_ventriloquist_s_remarks_a_cat_s_domain_an_esports_caster_and_a_poet_s_still_field_are_read():
+    parser = QuestionParser.load()
+    sawdust, plank, who, dummy = parser.parse_batch([
+        "Don't listen to him, folks, he's all sawdust — is the bus moving slowly when it bumps into the green chopper?",
+        "Don't listen to him, he's a plank — at the moment they collide, is the blue wagon going more slowly than the "
+        "purple wagon?",
+        "Who's asking? I'm asking, not you! Is the blue tandem bike getting faster initially?",
+        "Don't listen to the dummy — right at the start, is the green one going less quickly than the purple bus?"])
+    assert sawdust[-2:] == ["get_frame", "is_moving_velocity[slow]"]   # (refused: 'not listen' a negation)
+    assert plank[-2:] == ["get_frame", "slower_velocity"]
+    assert who == ["Objects", "filter_attributes[blue]", "filter_attributes[tandem_bike]", "unique", "start",
+                   "is_accelerating"]
+    assert dummy[-2:] == ["start", "slower_velocity"]
+    # a remark that names the vehicle the question then calls 'it' stays: the question's context
+    assert "filter_attributes[red]" in parser.parse("He says the red car is parked — is it?")
+    domain, cat, notice, concerns = parser.parse_batch([
+        "Which colour is the object hovering above my domain when the video starts?",
+        "As the video starts, is the blue SUV sitting perfectly still, as any sensible cat would?",
+        "Right at the start, what kind of vehicle is the slowly moving thing? Hardly worth my notice, but tell me "
+        "anyway.",
+        "At the start of the clip, in what direction is the green dirt bike going, not that it truly concerns me?"])
+    assert domain == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    assert cat[-2:] == ["start", "is_static"]
+    assert notice == ["Objects", "start", "filter_moving_velocity[slow]", "unique", "query_attributes[shape]"]
+    assert concerns[-2:] == ["start", "query_moving_direction"]
+    someone, edge, moment, field = parser.parse_batch([
+        "Someone's zooming off the line fast in the first frames, what type is that fast thing?",
+        "At the beginning of the video, is the blue sedan moving faster than the brown cruiser? Who's got the edge?",
+        "The green chopper collides with the blue airliner, what a moment! How fast is the green chopper going as it "
+        "hits: static, slow, or fast?",
+        "Purple fighter over the still field — does it ever smash into the bicycle?"])
+    assert someone == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    assert edge[-2:] == ["start", "faster_velocity"]
+    assert moment[-6:] == ["filter_attributes[airliner]", "unique", "filter_collision", "unique", "get_frame",
+                           "query_moving_velocity"]                     # (read as it came into view)
+    assert field[-1] == "exist"                                         # ('still' read as static)

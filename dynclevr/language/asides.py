@@ -23,7 +23,7 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIA
                                      GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS,
                                      INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS,
                                      NAMING, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
-                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEED_CHOICES,
+                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEAKER_AND_LISTENER, SPEED_CHOICES,
                                      SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
                                      TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
 
@@ -1087,6 +1087,40 @@ def owners_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return out, tuple(read)
 
 
+
+# where a speaker's place is said ('hovering above my domain', 'across my lawn'): the videos show no place but the
+# vehicles' ground, so it picks none out; a place that is the picture stays ('in my view', 'on my screen')
+SPEAKER_PLACE_PREPOSITIONS = {"across", "above", "over", "beneath", "below", "under", "underneath", "through", "past",
+                              "around", "round", "about", "along", "in", "on", "by", "near", "outside", "throughout"}
+PICTURE_PLACES = {"view", "sight", "frame", "frames", "shot", "video", "clip", "picture", "screen", "footage"}
+
+
+def speaker_asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """What the speaker says of themselves inside or after the question, which asks nothing: their place ('is the
+    blue suv heading across my domain' -> 'is the blue suv heading'), a closing likeness to how anyone would act
+    ('..., as any sensible cat would ?') and a closing disclaimer ('..., not that it truly concerns me ?'). With the
+    words read so, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        if words[k] in SPEAKER_PLACE_PREPOSITIONS and words[k + 1:k + 2] in (["my"], ["our"]) and \
+                words[k + 2:k + 3] != [] and words[k + 2].isalpha() and \
+                words[k + 2] not in OBJECT_WORDS | PICTURE_PLACES | GENERIC_NOUNS:
+            read.append((" ".join(words[k:k + 3]), "nothing, the speaker's place"))
+            k += 3
+            continue
+        out.append(words[k])
+        k += 1
+    close = next((k for k in range(len(out) - 3, 0, -1) if out[k] == ","), None)
+    tail = out[close + 1:-1] if close and out[-1] in ("?", ".", "!") else []
+    likeness = tail[:1] == ["as"] and tail[1:2] and tail[1] in ("any", "every", "a", "an", "the") and \
+        len(tail) <= 6 and tail[-1] in ("would", "does", "did", "do", "should", "might", "could", "will")
+    disclaimer = tail[:2] == ["not", "that"] and len(tail) <= 10 and SPEAKER_AND_LISTENER & set(tail) and \
+        not mentions(tail)
+    if likeness or disclaimer:
+        read.append((" ".join(out[close:-1]), "nothing, the speaker's aside"))
+        out[close:-1] = []
+    return out, tuple(read)
+
 # A vehicle spoken to ('Blue bus, did you bump into the green car?', 'Hey, red sedan, were you moving ...'): 'you'
 # is the vehicle named before the comma, as 'it' ('Blue bus, did it ...', which the parser reads)
 AS_IT = {("are", "you"): ("is", "it"), ("were", "you"): ("was", "it"), ("you", "are"): ("it", "is"),
@@ -1359,6 +1393,14 @@ def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
             not set(words[last + 1:]) & (NAMING | START_WORDS | END_WORDS) and not asks_impact(words[last + 1:]):
         read.append((" ".join(words[last + 1:]), "nothing, a call to answer"))
         words = words[:last + 1]
+    # ... and one asked after it, of who leads ('... faster than the brown cruiser? Who's got the edge?')
+    if last is not None and words[-1:] == ["?"] and "?" in words[:last] and not read:
+        end = len(words) - 1 - words[-2::-1].index("?") - 1
+        tail = words[end + 1:]
+        if tail[:1] == ["who"] and len(tail) <= 8 and not set(tail) & (NAMING | START_WORDS | END_WORDS | {"it"}) \
+                and not asks_impact(tail) and mentions(words[:end]):
+            read.append((" ".join(tail), "nothing, a teaser"))
+            words = words[:end + 1]
     # (a motion or a collision it may say: 'Speed demon spotted! What kind of vehicle is zooming ...?')
     end = next((k for k, w in enumerate(words) if w in ("?", "!")), None)
     if end is None or not 0 < end <= 6 or "?" not in words[end + 1:] or not mentions(words[end + 1:]) or \
@@ -1679,10 +1721,12 @@ def word_given_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
 
 def _remarked(pre: list[str], mark: str, after: list[str]) -> bool:
     """Whether words before a dash are a remark of the speaker's, whatever its manner (a beekeeper's 'Gently , gently
-    —', 'Steady with the smoker now —'): short, naming no vehicle, time, speeding up or collision, and offering no
-    choice; and before the question itself (not a hyphen's 'post - haste , do ...')."""
+    —', 'Steady with the smoker now —', a poet's 'A leaf meets a branch —'): short, naming no vehicle, time, speeding
+    up or collision (unless the question asks one of its own), and offering no choice; and before the question itself
+    (not a hyphen's 'post - haste , do ...')."""
     return mark == "-" and len(pre) <= 8 and after[:1] != [] and after[0] in QUESTION_OPENERS | CONDITION_OPENERS \
-        | TIME_OPENERS | {"which", "what", "how", "when"} and not asks_impact(pre) and not _offers_speed(pre) and not set(pre) & (
+        | TIME_OPENERS | {"which", "what", "how", "when"} and not (asks_impact(pre) and not asks_impact(after)) \
+        and not _offers_speed(pre) and not set(pre) & (
         OBJECT_WORDS | set(COLOR_NAMES) | FILM_WORDS | START_WORDS | TIME_SAID | GENERIC | GENERIC_NOUNS
         | QUESTION_OPENERS
         | {"or", "?", "not", "never", "if", "had", "after", "before", "then", "later", "future", "something",
@@ -1707,7 +1751,7 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
-        set(pre) <= TAGGING or _remarked(pre, words[k], words[k + 1:k + 2])
+        set(pre) <= TAGGING or _remarked(pre, words[k], words[k + 1:])
     # (or a question of who leads, put first, after its time if any: a physio's 'in the opening frames , who's got
     # the better stride : is the road bike faster ...')
     who = next((w for w in range(len(pre)) if pre[w] == "who" and (w == 0 or pre[w - 1] == ",")), None)
@@ -1738,3 +1782,33 @@ SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS 
              "freezes", "cut", "cuts", "terminates", "terminated", "truncated"}
           # coming into view ('as it comes into view , is ...', 'on entering the scene , ...')
           | COMES_IN_WORDS | {"coming", "entering", "entered", "appearing", "appeared", "emerging", "emerges"})
+
+
+# who a speaker's remark is about: the speaker, the listener or a third person (a ventriloquist's 'Don't listen to
+# him, he's all sawdust -'); the video's vehicles are never 'me' or 'you', and a 'he' before the question's own
+# vehicles is someone else's (`she_as_it` reads the West Country's 'he' of a vehicle, after this)
+PERSONS = SPEAKER_AND_LISTENER | {"he", "him", "his", "himself", "folks", "who", "whose"}
+BACK_POINTERS = {"it", "its", "they", "them", "their", "he", "him", "his", "she", "her"}
+
+
+def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'do not listen to him , he is all sawdust - is the bus moving slowly when it bumps into the green chopper ?'
+    -> 'is the bus moving ...': a remark about people (or told to the listener: 'do not ...', 'never mind ...')
+    before a whole question, closed by a dash or a sentence's end. Whole: it names its own vehicles, before any
+    pronoun where the remark names one too. A remark that imagines or says the start stays, and so does one that asks
+    about a vehicle. With the remark read as nothing, or the words as they are and ()."""
+    for k in range(1, min(len(words) - 2, 26)):
+        main, pre = words[k + 1:], words[:k]
+        told = pre[:2] in (["do", "not"], ["never", "mind"])
+        if words[k] not in ("-", "!", "?", ".", ";", ":") or main[0] not in QUESTION_OPENERS | CONDITION_OPENERS \
+                | TIME_OPENERS | {"when", "would"} or not (PERSONS & set(pre) or told):
+            continue
+        named = mentions(main)
+        back = next((j for j, w in enumerate(main) if w in BACK_POINTERS), len(main))
+        clauses = [w for j, w in enumerate(pre) if j == 0 or pre[j - 1] in (",", "-", "?", "!", ".", ";", ":")]
+        if not named or named[0][0] > back and mentions(pre) or set(pre) & (START_WORDS | {"would", "when", "if"}) \
+                or set(clauses) & (CONDITION_OPENERS | CONDITION_WORDS | IMAGINING) \
+                or any(a == "what" and b == "if" for a, b in zip(pre, pre[1:])) or "?" in pre and mentions(pre):
+            return words, ()
+        return main, ((" ".join(words[:k + 1]), "nothing, a remark about people"),)
+    return words, ()

@@ -15,11 +15,12 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_continued, _video_end
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
-                                     COPULAS, DETERMINERS, END_TIMES, FILLERS, GENERIC, GENERIC_NOUNS, HEADING_KEPT,
-                                     IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS,
-                                     MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, PEOPLE, QUERY_NOUNS,
-                                     QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CLASS_WORDS, SPEED_NOUNS,
-                                     START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED, YES_NO_OPENERS, _at, asks_impact)
+                                     COPULAS, DETERMINERS, END_TIMES, END_WORDS, FILLERS, GENERIC, GENERIC_NOUNS,
+                                     HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS,
+                                     MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, PEOPLE,
+                                     QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED, SPEAKER_AND_LISTENER,
+                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED,
+                                     YES_NO_OPENERS, _at, asks_impact)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -541,7 +542,9 @@ SOMEONE = {"someone", "somebody"}
 def someone_as_something(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'someone 's up in the air ! what kind of vehicle is it ?' -> 'something 's up in the air ! ...'. With the
     words read so, or the words as they are and ()."""
-    end = max((k for k, w in enumerate(words[:-1]) if w in (".", "!", ";", "-", ":")), default=None)
+    # (or a comma before the question: 'Someone's zooming off the line fast, what type is that fast thing?')
+    end = max((k for k, w in enumerate(words[:-1]) if w in (".", "!", ";", "-", ":")
+               or w == "," and words[k + 1] in ("what", "which")), default=None)
     said = [k for k, w in enumerate(words[:end or 0]) if w in SOMEONE]
     asked = words[end + 1:] if end is not None else []
     asked = asked[2 + (asked[2:3] == [","]):] if asked[:2] == ["tell", "me"] else asked   # ('... - tell me, what ...')
@@ -731,7 +734,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         impact = _at(out, IMPACT_MOMENTS) or next(((k, tuple(out[k:k + 3])) for k in range(len(out) - 3)
                                                     if out[k] in ("when", "as") and out[k + 1] in ("it", "they")
                                                     and out[k + 2].startswith(IMPACT_STEMS)
-                                                    and out[k + 3] in ("?", ",")), None)
+                                                    and out[k + 3] in ("?", ",", ":", "-")), None)
         own = {next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(out)}
         # a collision of the question's vehicles (one or both) told just before, the question saying no time of its
         # own ('The yellow car came crashing into the motorbike, and then ... which direction was the yellow car
@@ -870,8 +873,13 @@ def _remark(said: list[str]) -> bool:
     # (or praise of a vehicle named last: '? Real smooth ride, that bike.')
     praised = len(words) > 3 and words[-3] == "," and words[-2] in ("that", "this") and \
         not mentions(words[:-3]) and not set(COLOR_NAMES) & set(words) and words[0] not in AFTER_OPENERS
+    # (or on the speaker or the listener, asking nothing: a cat's '? Hardly worth my notice, but tell me anyway.')
+    personal = SPEAKER_AND_LISTENER & set(words) and not mentions(words) and not (
+        RESTATING | ASKED_PROPERTY.keys() | START_WORDS | END_WORDS | MOTION_WORDS | SPEED_CLASS_WORDS
+        | CONDITION_OPENERS) & set(words)
     return bool(words) and said[-1] != "?" and not corrected and (
-        people or praised or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
+        people or praised or personal
+        or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
 
 
 def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[tuple[str, str], ...]]:

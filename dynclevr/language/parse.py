@@ -54,9 +54,10 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
                                       examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
                                       hedges_dropped, hooks_dropped, hypothesis_as_asked, interjections_dropped,
-                                      owners_dropped, preamble_dropped, prompt_dropped, radio_as_asked, ramble_dropped,
-                                      requested_as_asked, restatements_read, soothing_dropped, ticket_fields_read,
-                                      wagers_read, word_given_dropped)
+                                      owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
+                                      radio_as_asked, ramble_dropped, requested_as_asked, restatements_read,
+                                      soothing_dropped, speaker_asides_dropped, ticket_fields_read, wagers_read,
+                                      word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -88,7 +89,7 @@ from dynclevr.language.seq2seq import Dims, Ensemble, Seq2Seq, one_thread, pad_b
 from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switched_as_said, colour_clause_as_named,
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
                                        homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
-                                       telegram_as_said, trailing_off_read, worksheet_as_said)
+                                       still_as_adjective, telegram_as_said, trailing_off_read, worksheet_as_said)
 from dynclevr.language.times import (first_frames_as_said, inserted_time_last, moment_pictured, present_asked_later,
                                      time_clause_closed, video_end_as_said)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
@@ -349,8 +350,10 @@ class QuestionParser:
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
         words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
+        words, remark = person_remark_dropped(words)
         words, her = she_as_it(words)
-        by_ear += her
+        words, scenery = still_as_adjective(words)
+        by_ear += remark + her + scenery
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
         named = shared + named
@@ -400,6 +403,8 @@ class QuestionParser:
         words, impact = impact_said_first(words)
         after += impact
         words, owned = owners_dropped(words)
+        words, own_place = speaker_asides_dropped(words)
+        owned += own_place
         words, spoken_to = addressed_as_named(words)
         owned += spoken_to
         words, teased = hooks_dropped(words)

@@ -851,3 +851,14 @@ def she_as_it(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]
            if w in ("she", "her", "hers", "he", "him") else "its" if w == "his" else w for k, w in enumerate(words)]
     read = tuple(dict.fromkeys((w, k) for w, k in zip(words, out) if w != k))
     return (out, read) if read else (words, ())
+
+
+def still_as_adjective(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'over the still field' -> 'over the field': 'still' between an article and a noun that is no vehicle describes
+    the scenery (a poet's 'still pond'), not a vehicle's speed; 'the still red car' and 'the still one' keep it. With
+    the words read so, or the words as they are and ()."""
+    drop = {k for k in range(1, len(words) - 1) if words[k] == "still" and words[k - 1] in DETERMINERS | {"its", "my"}
+            and words[k + 1].isalpha() and words[k + 1] not in NAMING | GENERIC_NOUNS | GENERIC
+            and not words[k + 1].endswith(("ing", "ed"))}
+    return ([w for k, w in enumerate(words) if k not in drop], (("still", "nothing, of the scenery"),)) if drop \
+        else (words, ())

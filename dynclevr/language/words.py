@@ -356,5 +356,7 @@ def _head(words: list[str]) -> list[str]:
     return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
         words[k:k + 1] and words[k] in ASKING) else words
 # no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
+# the speaker and the listener, whom no video shows ('? Hardly worth my notice, but tell me anyway.')
+SPEAKER_AND_LISTENER = {"i", "me", "my", "myself", "you", "your", "yourself", "we", "us", "our"}
 PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
           "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
