@@ -44,7 +44,7 @@ def installed(tmp_path_factory) -> Path:
                  "dynclevr/_data/weights/qparser/model.pt", "dynclevr/_data/weights/detector/detector.pt",
                  "dynclevr/questions/templates.json", "dynclevr/questions/taught.json",
                  "dynclevr/language/out_of_scope.txt",
-                 "dynclevr/language/synonyms.txt", "dynclevr/language/wordnet.txt",
+                 "dynclevr/language/synonyms.txt", "dynclevr/language/wordnet.txt", "dynclevr/language/english.txt",
                  "dynclevr/assets/collision/sedan.obj"):
         assert name in names, name
     assert not any(n.endswith("checkpoint.pt") for n in names)   # resume checkpoints stay in the checkout

@@ -21,7 +21,8 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.asides import (addressed_as_named, asides_dropped, corrections_dropped, digressions_dropped,
+from dynclevr.language.asides import (_courtesy, addressed_as_named, asides_dropped, corrections_dropped,
+                                      digressions_dropped,
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read,
@@ -4932,3 +4933,57 @@ def test_a_ventriloquist_s_remarks_a_cat_s_domain_an_esports_caster_and_a_poet_s
     assert moment[-6:] == ["filter_attributes[airliner]", "unique", "filter_collision", "unique", "get_frame",
                            "query_moving_velocity"]                     # (read as it came into view)
     assert field[-1] == "exist"                                         # ('still' read as static)
+
+
+def test_a_fortune_teller_s_visions_a_critic_s_asides_a_scribe_s_notes_and_a_host_s_call_are_read():
+    parser = QuestionParser.load()
+    crash, instant, first, focus = parser.parse_batch([
+        "I see the green one and the yellow bicycle crashing together, and the cards never lie! At that crash, is the "
+        "green one going faster than the yellow bicycle?",
+        "The cinematography peaks when the mountain bike meets the green SUV; at that very instant of impact, is the "
+        "mountain bike static, slow or fast?",
+        "The yellow SUV appears as the vision opens, my child. Is it not moving, slow or fast at first?",
+        "The red one and the purple cruiser swim into focus as the video starts... is the red one moving slower than "
+        "the purple cruiser at that moment?"])
+    assert crash[-2:] == ["get_frame", "faster_velocity"]   # (the remark that told the crash was dropped)
+    assert instant[-2:] == ["get_frame", "query_moving_velocity"]
+    assert first[-2:] == ["start", "query_moving_velocity"]   # (read as it came into view)
+    assert focus[-2:] == ["start", "slower_velocity"]          # (read at a collision)
+    scarlet, minimal, shot, note = parser.parse_batch([
+        "Is the red scooter, that scarlet flourish against an otherwise drab grey palette, zooming along fast when "
+        "the film opens?",
+        "Is it genuinely the case, amid all this self-indulgent minimalism, that the SUV hits the cyan motorbike?",
+        "Had the cyan bicycle been utterly motionless from the opening shot, would it have collided with the gray "
+        "double-decker?",
+        "Doth the cyan one come into contact with anything at all during the video? (Marginal note: the cyan ink is "
+        "nearly spent.)"])
+    assert scarlet == ["Objects", "filter_attributes[red]", "filter_attributes[scooter]", "unique", "start",
+                       "is_moving_velocity[fast]"]
+    assert minimal[0] == "Events" and minimal[-1] == "exist"
+    assert shot[4] == "Counterfactual_static"
+    assert note == ["Events", "Objects", "filter_attributes[cyan]", "unique", "filter_collision", "exist"]
+    reader, prize, beans = parser.parse_batch([
+        "O gentle reader, did the cruiser smash into something?",
+        "Studio audience, hush now! As the video begins, is the green school bus standing perfectly still? Say yes or "
+        "no and the prize is yours!",
+        "Was the green station wagon going fast at the beginning? Faster than my runner beans climb, I expect."])
+    assert reader == ["Events", "Objects", "filter_attributes[cruiser]", "unique", "filter_collision", "exist"]
+    assert prize[-2:] == ["start", "is_static"]
+    assert beans == ["Objects", "filter_attributes[green]", "filter_attributes[wagon]", "unique", "start",
+                     "is_moving_velocity[fast]"]
+
+
+def test_a_diplomat_s_courtesies_and_a_support_agent_s_confirmation_are_read():
+    parser = QuestionParser.load()
+    inquire, presume, confirm = parser.parse_batch([
+        "When the red pickup collides with the gray station wagon, is it, if I may respectfully inquire, moving "
+        "slowly?",
+        "What sort of vehicle, if I might so presume to inquire, is the one floating at the start?",
+        "Thank you for your patience; could you confirm the motion state of the brown mountain bike at the outset?"])
+    assert inquire[-2:] == ["get_frame", "is_moving_velocity[slow]"]   # ('if' read as a condition)
+    assert presume == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    assert confirm == ["Objects", "filter_attributes[brown]", "filter_attributes[mountain_bike]", "unique", "start",
+                       "query_moving_velocity"]                          # (read as asking yes or no)
+    # a clause that imagines, or names a vehicle, is no courtesy
+    assert _courtesy("if i may ask".split())
+    assert not _courtesy("if you had parked it".split()) and not _courtesy("if i may say , the bus".split())

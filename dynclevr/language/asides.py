@@ -48,8 +48,9 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "apprentice", "angler",   # a wizard's, a fisherman's
              "troop", "scouts", "cubs", "houston",   # a scout leader's, an astronaut's
              "gentles", "guv", "squire", "maiden",   # a herald's ('good gentles'), a cabbie's, a knight's
-             "duck", "captain"}   # a dinner lady's ('my duck'), a starship computer's
-ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair"}
+             "duck", "captain",   # a dinner lady's ('my duck'), a starship computer's
+             "reader", "brother"}   # a scribe's ('O gentle reader,', 'Prithee, good brother,')
+ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair", "gentle", "o"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -202,10 +203,10 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     particles = [j for j in range(1, len(words) - 1) if words[j] in PARTICLES and words[j + 1] in (",", "?", "!", ".")]
     said = tuple((words[j], "nothing, a particle") for j in particles)
     words = [w for j, w in enumerate(words) if j not in particles]
-    # (with its adjectives: ', old friend ,', ', young apprentice :')
+    # (with its adjectives: ', old friend ,', ', young apprentice :', a scribe's opening 'O gentle reader ,')
     addressed = [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
                  and words[j + 1] in (",", "?", "!", ".", ":", ";") for n in (0, 1, 2)
-                 if j - n > 0 and words[j - n - 1] == "," and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
+                 if (j - n == 0 or j - n > 0 and words[j - n - 1] == ",") and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
     addressees = " ".join(" ".join(words[j] for j in a) for a in addressed)
     if addressed:   # between commas, or at the end: 'is it fast , honey ?'
         dropped = {k for a in addressed for k in (a.start - 1, *a)}
@@ -307,11 +308,30 @@ CLAUSES_OF_TIME = (*([c] for c in sorted(CLAUSE_CONJUNCTIONS)), ["as", "they"], 
 # collision, time, place, condition, negation or asking in it.
 
 
+TIME_PREFIXES = {"post", "pre", "mid", "after", "end"}
+
+
 def _says_something(span: list[str]) -> bool:
-    # (an impact's word misspelt too: 'wen they colide ,')
+    # (an impact's word misspelt too: 'wen they colide ,'; a hyphen inside a word says nothing, 'self - indulgent',
+    # unless it may be a time's: 'post - haste' may be 'post - video')
+    span = [w for k, w in enumerate(span) if not (w == "-" and 0 < k < len(span) - 1 and span[k - 1].isalpha()
+                                                  and span[k + 1].isalpha() and span[k - 1] not in TIME_PREFIXES)]
     return bool(set(span) & SAYING) or asks_impact(span) or any(span[:len(t)] == t for t in CLAUSES_OF_TIME) or any(
         w.startswith(("accelerat", "speed", "float", "hover")) or w.isdigit() or len(w) > 4 and impact_like(w)
         for w in span)
+
+
+# what a courtesy between commas may say beside the speaker or listener ('..., if I may respectfully inquire, ...', ',
+# in your considered opinion ,', ', I ask with caution ,')
+COURTEOUS = {"if", "would", "could", "may", "might", "ask", "asking", "inquire", "enquire", "opinion", "view",
+             "humble", "respectfully", "kind", "so", "put", "it", "say", "indulgence", "pardon", "permit", "in", "with"}
+
+
+def _courtesy(span: list[str]) -> bool:
+    """Whether a span between commas is the speaker's courtesy: it speaks of the speaker or the listener, names no
+    vehicle, and says nothing else the question could need."""
+    return bool(SPEAKER_AND_LISTENER & set(span)) and not mentions(span) and not asks_impact(span) and \
+        set(span) & SAYING <= COURTEOUS
 
 
 def _offers_speed(span: list[str]) -> bool:
@@ -323,10 +343,14 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     the digressions read as nothing, or the words as they are and ()."""
     # (an aside in brackets: 'supposing the minivan had been moving rapidly ( mark this , apprentice ) , would ...')
     opened = next((k for k, w in enumerate(words) if w == "("), None)
-    closed = next((k for k in range(opened + 3, min(len(words), opened + 10)) if words[k] == ")"), None) \
+    closed = next((k for k in range(opened + 3, min(len(words), opened + 16)) if words[k] == ")"), None) \
         if opened is not None else None
-    # (of two words or more: 'time ( s )' is a unit)
-    if closed is not None and not _says_something(words[opened + 1:closed]) and \
+    # (of two words or more: 'time ( s )' is a unit; or a note after the question, whatever colour it names: a
+    # scribe's '? (Marginal note: the cyan ink is nearly spent.)')
+    inside = words[opened + 1:closed] if closed is not None else []
+    noted = bool(inside) and words[opened - 1:opened] == ["?"] and words[closed + 1:] in ([], ["."]) and not (
+        set(inside) - set(COLOR_NAMES)) & SAYING and not asks_impact(inside)
+    if closed is not None and (noted or not _says_something(inside)) and \
             _says_something(words[:opened] + words[closed + 1:]):
         aside = words[opened:closed + 1]
         rest, read = digressions_dropped(words[:opened] + words[closed + 1:])
@@ -346,7 +370,8 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     for c in commas:
         span = words[start:c]
         # (not a speed offered to choose: 'is it still , dawdling , or hurrying ?')
-        if span and not _says_something(span) and not (words[c + 1:c + 2] == ["or"] and _offers_speed(span)):
+        if span and (not _says_something(span) or _courtesy(span)) and not (
+                words[c + 1:c + 2] == ["or"] and _offers_speed(span)):
             drop |= set(range(start, c + 1))
             read.append(" ".join(span))
         start = c + 1
@@ -769,9 +794,10 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     else:
         return words, ()
     j = _requested_at(words, k)
-    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds; 'confirm the colour of ...' asks it)
+    # ('establish whether ...', 'confirm the bus was parked' ask whether it holds; 'confirm the colour of ...' and
+    # 'confirm the motion state of ...' ask it)
     confirmed = words[j] == "that" or words[j] in ("the", "whether", "if") and words[k] in CONFIRMING_VERBS and \
-        not (words[j] == "the" and words[j + 1:j + 2] and words[j + 1] in QUERY_NOUNS)
+        not (words[j] == "the" and words[j + 1:j + 2] and words[j + 1] in QUERY_NOUNS | STATE_NOUNS)
     said = ["is", "it", "true", "that"] if confirmed else ["tell", "me"]
     dropped = words[j] in ("that", "whether", "if") and confirmed
     out = words[:first] + said + words[j + dropped:]
@@ -784,6 +810,9 @@ def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
         read.append((" ".join(out[cut:]), "nothing, a remark"))
         out = out[:cut] + ["."]
     return out, tuple(read)
+
+
+STATE_NOUNS = {"motion", "state", "status", "movement"}
 
 
 # A wager around the question. A stake says nothing the question asks ('I've a tenner on yes.', 'Fiver says no.',
@@ -1387,9 +1416,10 @@ def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     collision, before a question that names one, asks nothing itself. With the words read so, or the words as they
     are and ()."""
     read = []
-    # ... and a call to answer after it ('Name it to claim it!', 'Spill it!', 'Only true fans know!')
+    # ... and a call to answer after it ('Name it to claim it!', 'Spill it!', 'Only true fans know!', 'Say yes or no
+    # and the prize is yours!')
     last = len(words) - 1 - words[::-1].index("?") if "?" in words else None
-    if last is not None and words[-1:] == ["!"] and 0 < len(words) - last - 1 <= 9 and \
+    if last is not None and words[-1:] == ["!"] and 0 < len(words) - last - 1 <= 12 and \
             not set(words[last + 1:]) & (NAMING | START_WORDS | END_WORDS) and not asks_impact(words[last + 1:]):
         read.append((" ".join(words[last + 1:]), "nothing, a call to answer"))
         words = words[:last + 1]
@@ -1469,8 +1499,10 @@ def soothing_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
 
 
 def _then_said(words: list[str]) -> bool:
-    """Whether words point back at a time said before ('then', 'at that moment', 'in this instant')."""
-    return "then" in words or any(a in ("that", "this") and b in ("moment", "instant", "point")
+    """Whether words point back at a time said before ('then', 'at that moment', 'in this instant', 'at that
+    crash')."""
+    return "then" in words or any(a in ("that", "this") and b in ("moment", "instant", "point", "time", "crash",
+                                                                  "collision", "impact", "event")
                                   for a, b in zip(words, words[1:]))
 
 
@@ -1548,11 +1580,16 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         out.append(words[k])
         k += 1
     # a clause or appositive between commas after a vehicle already named by colour and type ('the red sedan , which
-    # later hits the bus ,'): it says more about a vehicle it does not pick out
+    # later hits the bus ,', a critic's 'the red scooter , that scarlet flourish against a drab palette ,'; not 'that
+    # is', nor a moment or a motion: ', that moment purple motorbike go fast ,'): it says more about a vehicle it does
+    # not pick out
     k = 0
     while k < len(out):
         close = next((j for j in range(k + 2, min(k + 12, len(out))) if out[j] == ","), None) \
-            if out[k] == "," and out[k + 1:k + 2] and out[k + 1] in ASIDE_STARTS and _coloured_before(out, k) else None
+            if out[k] == "," and out[k + 1:k + 2] and (out[k + 1] in ASIDE_STARTS or out[k + 1] == "that" and out[
+                k + 2:k + 3] not in (["is"], ["was"], ["'"]) and not (SPEED_CLASS_WORDS | MOTION_WORDS | MOMENTS)
+                & set((out[k + 2:] + [","])[:(out[k + 2:] + [","]).index(",")])) and _coloured_before(out, k) \
+            else None
         # not where only the asking follows it ('..., the fighter it is going slow, yes or no?': the question itself)
         # (nor where speeds are offered after it: '..., the velocity of the suv is static, slow or fast?')
         rest = set(out[close + 1:]) if close else set()
@@ -1619,6 +1656,7 @@ RENAMING = ASIDE_WORDS | OBJECT_WORDS | set(COLOR_NAMES) | {"gray", "grey"} | {
                                                           "near", "by", "left", "right", "front", "back", "top",
                                                           "bottom", "side", "two", "seater", "-", "one", "far",
                                                           "middle", "centre", "center", "of", "picture", "frame"}
+MOMENTS = {"moment", "instant", "time", "point", "second", "frame", "very", "same"}
 ASIDE_STARTS = {"which", "who", "the", "a", "an", "by", "currently", "also", "incidentally", "with"}
 ASKING_ONLY = {"yes", "or", "no", "true", "false", "right", "correct", "?", ".", "!"}
 SPEED_OFFERED = ASKING_ONLY | {",", *(w for choice in SPEED_CHOICES for w in choice)}
@@ -1788,27 +1826,27 @@ SAYING = (NAMING | GENERIC | GENERIC_NOUNS | MOTION_WORDS | MOTION_DESCRIPTIONS 
 # him, he's all sawdust -'); the video's vehicles are never 'me' or 'you', and a 'he' before the question's own
 # vehicles is someone else's (`she_as_it` reads the West Country's 'he' of a vehicle, after this)
 PERSONS = SPEAKER_AND_LISTENER | {"he", "him", "his", "himself", "folks", "who", "whose"}
-BACK_POINTERS = {"it", "its", "they", "them", "their", "he", "him", "his", "she", "her"}
+REMARK_TIMES = {"would", "when", "while", "once", "moment", "instant", "then", "later", "after", "before", "beyond",
+                "future", "world", "scene", "frame", "frames", "paused", "stopped", "stops"}
 
 
 def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'do not listen to him , he is all sawdust - is the bus moving slowly when it bumps into the green chopper ?'
     -> 'is the bus moving ...': a remark about people (or told to the listener: 'do not ...', 'never mind ...')
-    before a whole question, closed by a dash or a sentence's end. Whole: it names its own vehicles, before any
-    pronoun where the remark names one too. A remark that imagines or says the start stays, and so does one that asks
-    about a vehicle. With the remark read as nothing, or the words as they are and ()."""
+    before a whole question, closed by a dash or a sentence's end. Whole: it names its own vehicles. A remark that
+    names a vehicle, a collision, a time or the video, or imagines, is the question's context and stays ('I saw the
+    gray airliner on the right. Was the airliner ...?', 'Looking beyond the final frame, ask yourself: ...'). With the
+    remark read as nothing, or the words as they are and ()."""
     for k in range(1, min(len(words) - 2, 26)):
         main, pre = words[k + 1:], words[:k]
         told = pre[:2] in (["do", "not"], ["never", "mind"])
         if words[k] not in ("-", "!", "?", ".", ";", ":") or main[0] not in QUESTION_OPENERS | CONDITION_OPENERS \
                 | TIME_OPENERS | {"when", "would"} or not (PERSONS & set(pre) or told):
             continue
-        named = mentions(main)
-        back = next((j for j, w in enumerate(main) if w in BACK_POINTERS), len(main))
-        clauses = [w for j, w in enumerate(pre) if j == 0 or pre[j - 1] in (",", "-", "?", "!", ".", ";", ":")]
-        if not named or named[0][0] > back and mentions(pre) or set(pre) & (START_WORDS | {"would", "when", "if"}) \
-                or set(clauses) & (CONDITION_OPENERS | CONDITION_WORDS | IMAGINING) \
-                or any(a == "what" and b == "if" for a, b in zip(pre, pre[1:])) or "?" in pre and mentions(pre):
+        clauses = {w for j, w in enumerate(pre) if j == 0 or pre[j - 1] in (",", "-", "?", "!", ".", ";", ":")}
+        if not mentions(main) or mentions(pre) or asks_impact(pre) \
+                or set(pre) & (START_WORDS | END_WORDS | FILM_WORDS | TIME_SAID | CONDITION_OPENERS - {"had"}
+                               | IMAGINING | IMAGINED_SAID | REMARK_TIMES) or clauses & {"had", "were", "as", "at"}:
             return words, ()
         return main, ((" ".join(words[:k + 1]), "nothing, a remark about people"),)
     return words, ()

@@ -727,7 +727,10 @@ def imagining_unread(words: list[str], program: list[str], said_first: list[str]
         return "" if said is None else (f"the question imagines the video otherwise ('{said}'), but its nearest "
                                         "reading asks what happens after it: ask as 'if X had been ... from the "
                                         "start, would it hit Y?'")
+    # (a label said first, however the rules read the words after it: a surgeon's 'Counterfactual, team. Yellow plane
+    # starts out fast: does it hit the city bus?' was read as how fast it is at the collision)
     said = told or next((w for w in words if w in IMAGINING_SAID | IMAGINING_LABELS), None) or \
+        next((w for w in said_first if w in IMAGINING_LABELS), None) or \
         next(("what if" for a, b in zip(words, words[1:]) if (a, b) == ("what", "if")), None) or \
         next(("would" for k, w in enumerate(words) if w == "would" and words[k + 1:k + 2] != ["you"]
               and not _would_describe(words[k + 1:k + 6])), None) or next(

@@ -61,7 +61,11 @@ NAMELESS = {"some", "a", "an", "another", "one"}
 # a moment's words of feeling ('in that tense moment', 'at that fateful instant')
 MOMENT_ADJECTIVES = ("very", "exact", "precise", "same", "tense", "fateful", "fatal", "critical", "crucial", "decisive",
                      "dramatic", "split", "key", "awful", "terrible", "unlucky", "unfortunate", "thrilling", "shocking")
-THEN_SAID = (("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
+THEN_SAID = (  # (the longest first: 'In that moment of impact, which direction ...?')
+             *((p, d, *very, m, "of", n) for p in ("at", "in") for d in ("this", "that")
+               for very in ((), *((v,) for v in MOMENT_ADJECTIVES)) for m in ("moment", "instant")
+               for n in ("impact", "collision", "contact")),
+             ("at", "that", "moment"), ("at", "that", "point"), ("at", "that", "instant"), ("at", "that", "time"),
              ("in", "that", "moment"), ("at", "that", "stage"), ("right", "then"), ("just", "then"),
              *((p, d, *very, m) for p in ("at", "in", "during") for d in ("this", "that", "the")
                if (p, d) != ("at", "the") for very in ((), *((v,) for v in MOMENT_ADJECTIVES))
@@ -78,6 +82,7 @@ IMPACT_MOMENTS = sorted({(p, "the", m, "of", *the, n) for p in ("at", "in") for 
                         | {(p, "the", n) for p in ("at", "during", "in") for n in IMPACT_NOUNS}, key=len, reverse=True)
 # a question's own time, besides the start and coming into view
 OWN_TIMES = {"after", "end", "ends", "ended", "will", "future"}
+FIRST_SPANS = {"moments", "moment", "frames", "frame", "seconds", "second", "instant", "instants"}
 
 
 def closing_mark_added(words: list[str]) -> list[str]:
@@ -260,13 +265,15 @@ def _said(ref) -> list[str]:
 
 def _moment(context: list[list[str]], fullest: list, of=None) -> list[str] | None:
     """The moment a question's 'then' means, from the latest sentence of context that names one: two vehicles'
-    collision (one of them `of`, where given), or a vehicle coming into view; None where none does."""
+    collision (one of them `of`, where given), a vehicle coming into view, or the start; None where none does."""
     for sentence in reversed(context):
         refs = list(dict.fromkeys(next((f for f in fullest if _fits(r, f)), r) for _, _, r in mentions(sentence)))
         if asks_impact(sentence) and len(refs) >= 2 and (of is None or of in refs[:2]):
             return ["when", *_said(refs[0]), "and", *_said(refs[1]), "collide"]
         if of is None and COMES_IN_WORDS & set(sentence) and refs:
             return ["when", *_said(refs[0]), "comes", "into", "view"]
+        if of is None and START_WORDS & set(sentence):   # ('... swim into focus as the video starts.')
+            return ["at", "the", "start"]
     return None
 
 
@@ -729,6 +736,10 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         return words, ()
     if not condition and not own_condition:
         timed = START_WORDS | COMES_IN_WORDS | OWN_TIMES
+        # (the start said as 'at first' or 'the first moments': 'The yellow SUV appears as the vision opens. Is it
+        # static, slow or fast at first?')
+        own_time = bool(timed & set(out)) or any(a == "at" and b == "first" or a == "first" and b in FIRST_SPANS
+                                                 for a, b in zip(out, out[1:]))
         then = _at(out, THEN_SAID)
         # ... or the question's own vehicle's impact said with no partner ('... travelling when it struck ?')
         impact = _at(out, IMPACT_MOMENTS) or next(((k, tuple(out[k:k + 3])) for k in range(len(out) - 3)
@@ -741,15 +752,15 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         # heading?', 'the bike and the wagon crash together ; is the bike going faster than the wagon ?')
         # (not a narrator's 'we meet a green wagon', nor a question of 'those first moments')
         told = {tuple(_moment(context[-1:], fullest, of=r) or ()) for r in own}
-        told = not then and not impact and not (timed & set(out) or asks_impact(out)) and len(told) == 1 \
+        told = not then and not impact and not (own_time or asks_impact(out)) and len(told) == 1 \
             and not {"first", "we", "i", "us"} & set(out + context[-1]) and list(told.pop())
         # a sentence that is a moment alone ('Think about the moment the bike hits the van.', read 'at the moment
         # the bike hits the van .'; 'Remember when the bus bumped into the car?'): the question's time, where it
         # says none
-        pictured = not then and not impact and not (timed & set(out) or asks_impact(out)) and \
+        pictured = not then and not impact and not (own_time or asks_impact(out)) and \
             (_opening(context[-1])[:1] in (["at"], ["when"], ["remember"]) or _opening(context[-1])[:2] in (
                 ["the", "moment"], ["the", "instant"])) and asks_impact(context[-1])
-        if then and not (timed & set(out) or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
+        if then and not (own_time or asks_impact(out[:then[0]] + out[then[0] + len(then[1]):])):
             moment, (k, p) = _moment(context, fullest), then
         elif pictured:
             moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
@@ -757,7 +768,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             moment, k, p = told, out.index("?") if "?" in out else len(out), ()
         elif impact and len(own) == 1:
             moment, (k, p) = _moment(context, fullest, of=next(iter(own))), impact
-        elif not then and not impact and not (timed & set(out) or asks_impact(out)) and len(own) == 1 and \
+        elif not then and not impact and not (own_time or asks_impact(out)) and len(own) == 1 and \
                 COMES_IN_WORDS & set(context[-1]) and not asks_impact(context[-1]):
             # a vehicle looked at as it comes into view ('Look at the green vehicle when it first shows up. Is it
             # still, slow, or fast?': it was read at the start)
@@ -767,10 +778,10 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             started = next((s for s in reversed(context) if START_WORDS & set(s)), None)
             # ... and the end, which no question asks: the whole text is read, and refused ('the red car zai zuihou
             # is it static ma?', 'zuihou' said 'at the end')
-            if not started and not (timed & set(out) or asks_impact(out)) and any(
+            if not started and not (own_time or asks_impact(out)) and any(
                     s[k:k + len(e)] == e for s in context for k in range(len(s)) for e in END_TIMES):
                 return words, ()
-            if started and not (timed & set(out) or asks_impact(out)):
+            if started and not (own_time or asks_impact(out)):
                 out = out[:-1] + ["at", "the", "start", "?"]
                 read.append((" ".join(started), "at the start"))
         if moment is None:
@@ -877,8 +888,12 @@ def _remark(said: list[str]) -> bool:
     personal = SPEAKER_AND_LISTENER & set(words) and not mentions(words) and not (
         RESTATING | ASKED_PROPERTY.keys() | START_WORDS | END_WORDS | MOTION_WORDS | SPEED_CLASS_WORDS
         | CONDITION_OPENERS) & set(words)
+    # (or a likeness to the speaker's things: a gardener's '? Faster than my runner beans climb, I expect.', '? Yellow
+    # like my courgette flowers, bless it.')
+    likened = (words[1:2] in (["than"], ["like"], ["as"]) or words[:3] == ["same", "way", "as"]) and \
+        SPEAKER_AND_LISTENER & set(words) and not (OBJECT_WORDS - set(COLOR_NAMES) | GENERIC_NOUNS) & set(words)
     return bool(words) and said[-1] != "?" and not corrected and (
-        people or praised or personal
+        people or praised or personal or likened
         or words[0] in REMARK_OPENERS and not RESTATING & set(words) and not _one_vehicle(words))
 
 

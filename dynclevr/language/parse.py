@@ -75,6 +75,7 @@ from dynclevr.language.context import (afterthoughts_read, check_ins_stated, clo
                                        found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
                                        settings_as_imagined, someone_as_something, told_otherwise_as_imagined,
                                        transcript_as_asked)
+from dynclevr.language.english import real_words
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
                                           corefer, delexicalise, described_as_named, description_as_said,
@@ -178,6 +179,8 @@ class QuestionParser:
         self.readable = self.known | set(self.synonyms)
         # ... and a word spelt as it sounds, as the vehicle's name or the word of the questions' own it sounds like
         self.sounds = sound_index(SPELT_BY_EAR)
+        # ... but never a common English word the parser does not know, which the writer meant (english.py)
+        self.real_words = real_words()
         # ... and so does a word of a known word's stem, or else of a lexicon word's
         self.stems = {**_by_stem(self.synonyms), **_by_stem({w: [w] for w in self.known})}
         # Last, WordNet's: an unknown word that shares a main sense with a known one (wordnet.py), read by its stem
@@ -349,7 +352,7 @@ class QuestionParser:
         words, shared = shared_noun_as_two(words)   # before a plural is read as its singular
         words, heard = heard_as_said(words, self.known)
         words, sounded = homophones_as_said(words)
-        words, by_ear = spelt_by_ear(words, self.sounds, self.readable)
+        words, by_ear = spelt_by_ear(words, self.sounds, self.readable, self.real_words)
         words, remark = person_remark_dropped(words)
         words, her = she_as_it(words)
         words, scenery = still_as_adjective(words)
@@ -491,10 +494,8 @@ class QuestionParser:
         # parser reads (known, or a synonym's, which then stands in; 'tsruck' is 'struck', not 'truck').
         # Two words run together ('fastmoving', 'speedup') are read apart where they split one way only. A question's
         # first word is no vehicle's ('Track the blue bus' was read about a truck).
-        fixed = {w: self._slipped(w) or run_together(w, self.readable)
-                 or (w != words[0] and OBJECT_LEXICON.closest(w)) or (len(w) >= TYPO_LETTERS and self.words.closest(w))
-                 or w
-                 for w in words if w not in self.known}
+        # A common English word is none of these: the writer meant it (`english.py`: 'feast' is no 'fast').
+        fixed = {w: self.typo_fixed(w, first=w == words[0]) for w in words if w not in self.known}
         # a colour only before a vehicle's name ('of what hue was it , pray ?': 'pray' was read as a gray vehicle)
         fixed = {w: k for w, k in fixed.items() if k not in COLOR_NAMES or any(
             a == w and b in NAMING | GENERIC | GENERIC_NOUNS for a, b in zip(words, words[1:]))}
@@ -609,10 +610,29 @@ class QuestionParser:
         if headed:
             return [], (f"the question names '{headed}', which is no vehicle here (they are cars, buses, motorbikes, "
                         "bicycles and aeroplanes)"), read_as, said
-        unknown = [w for w in words if w not in self.known]
+        # 'at the merge': a real word the parser does not know says when (it was read at the start)
+        # (not an idiom's 'at the risk of')
+        moment = next((f"{a} the {c}" for a, b, c, d in zip(words, words[1:], words[2:], words[3:] + [""])
+                       if a in ("at", "during") and b == "the" and c in self.real_words and d != "of"), None)
+        if moment:
+            return [], (f"the question asks at a moment the parser does not know ('{moment}'): ask at the start, when "
+                        "X hits Y or when X comes into view"), read_as, said
+        # (a common English word kept as itself counts no more than when the typo fixing turned it into a known
+        # word: the decoder's attention to it still refuses a question it carries)
+        unknown = [w for w in words if w not in self.known and w not in self.real_words]
         if len(unknown) > self.params.max_unknown_words:
             return [], "unknown words: " + ", ".join(f"'{w}'" for w in dict.fromkeys(unknown)), read_as, said
         return words, "", read_as, said
+
+    def typo_fixed(self, word: str, first: bool = False) -> str:
+        """The known word an unknown `word` is a typo of (a slip of the fingers, two words run together, a misspelt
+        colour or vehicle name unless it opens the question, a long word one edit away), or `word` itself; a common
+        English word is kept (`english.py`)."""
+        if word in self.real_words:
+            return word
+        return self._slipped(word) or run_together(word, self.readable) or (
+            not first and OBJECT_LEXICON.closest(word)) or (len(word) >= TYPO_LETTERS and self.words.closest(word)) \
+            or word
 
     def _slipped(self, word: str) -> str | None:
         """The one word `word` is a slip of (`vocab.slipped`); or, where it slips from a known word and from

@@ -814,7 +814,7 @@ BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
 NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS
 
 
-def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[str]
+def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[str], real: frozenset[str] = frozenset()
                  ) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the blu skool bus ...' -> 'is the blue school bus ...', 'the privit jet' -> 'the private jet': a word
     the parser cannot read (not of `readable`), spelt as it sounds, read as the colour or name's word of `index`
@@ -829,9 +829,12 @@ def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[st
         return words, ()
     fixed = [heard.get(w, w) for w in words]
     # in a vehicle's description: a colour before a vehicle's name, a name's word after a determiner, a colour or
-    # another name's word, or before one ('beyond the truncation point' is no 'bendy')
+    # another name's word, or before one ('beyond the truncation point' is no 'bendy'); a common English word of
+    # `real` only after a colour or a name's word, where no other word could stand ('the yellow bass', 'the school
+    # bass'; 'the boys' are no 'bus')
     out = [w if said not in heard or (nxt in NAMED_AFTER if w in COLOR_NAMES else
-                                      before in BEFORE_NAME or nxt in NAMED_AFTER)
+                                      (before in SPELT_BY_EAR if said in real else before in BEFORE_NAME)
+                                      or nxt in NAMED_AFTER and said not in real)
            else said for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
     read = tuple((said, w) for said, w in zip(words, out) if said != w)
     return (out, tuple(dict.fromkeys(read))) if read else (words, ())
@@ -853,12 +856,17 @@ def she_as_it(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]
     return (out, read) if read else (words, ())
 
 
+# other words for a vehicle ('the still item in the first frames')
+THINGS_SAID = {"item", "items", "entity", "toy", "toys", "machine", "unit", "model", "craft", "contraption",
+               "conveyance", "runner", "agent", "actor", "ones", "things", "objects", "vehicles"}
+
+
 def still_as_adjective(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'over the still field' -> 'over the field': 'still' between an article and a noun that is no vehicle describes
     the scenery (a poet's 'still pond'), not a vehicle's speed; 'the still red car' and 'the still one' keep it. With
     the words read so, or the words as they are and ()."""
     drop = {k for k in range(1, len(words) - 1) if words[k] == "still" and words[k - 1] in DETERMINERS | {"its", "my"}
-            and words[k + 1].isalpha() and words[k + 1] not in NAMING | GENERIC_NOUNS | GENERIC
+            and words[k + 1].isalpha() and words[k + 1] not in NAMING | GENERIC_NOUNS | GENERIC | THINGS_SAID
             and not words[k + 1].endswith(("ing", "ed"))}
     return ([w for k, w in enumerate(words) if k not in drop], (("still", "nothing, of the scenery"),)) if drop \
         else (words, ())

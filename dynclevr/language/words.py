@@ -312,7 +312,8 @@ COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "come
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
                 "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch",
                 "shunt", "tangl")
-SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera"}   # 'comes into view'
+# 'comes into view', 'swims into focus'
+SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera", "focus"}
 
 # The video's end said as a time ('at the end of the clip', 'in the last frame')
 END_TIMES = [[p, *the, *very, e] for p in ("at", "by", "towards", "toward", "near") for the in ((), ("the",))
@@ -355,8 +356,8 @@ def _head(words: list[str]) -> list[str]:
     k = 1 + (words[1:2] in ROUGHLY)
     return words[words.index(",") + 1:] if words[:1] and words[0] in TIME_OPENERS and "," in words and not (
         words[k:k + 1] and words[k] in ASKING) else words
-# no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
 # the speaker and the listener, whom no video shows ('? Hardly worth my notice, but tell me anyway.')
 SPEAKER_AND_LISTENER = {"i", "me", "my", "myself", "you", "your", "yourself", "we", "us", "our"}
+# no person is in the videos ('is the scooter ridden by anyone?' was read as whether it hits anything)
 PEOPLE = {"anyone", "anybody", "someone", "somebody", "driver", "drivers", "rider", "riders", "pilot", "pilots",
           "person", "people", "passenger", "passengers", "pedestrian", "pedestrians", "man", "woman", "child"}
