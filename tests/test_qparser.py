@@ -21,12 +21,12 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language import evaluate as qeval
 from dynclevr.language.evaluate import handwritten, out_of_scope, typed_with_a_slip
 from dynclevr.language.params import qparser_params
-from dynclevr.language.asides import (_courtesy, addressed_as_named, asides_dropped, corrections_dropped,
-                                      digressions_dropped,
+from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_named, asides_dropped,
+                                      corrections_dropped, digressions_dropped,
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
-                                      prompt_dropped, radio_as_asked, requested_as_asked, ticket_fields_read,
-                                      wagers_read)
+                                      proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
+                                      ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -4987,3 +4987,44 @@ def test_a_diplomat_s_courtesies_and_a_support_agent_s_confirmation_are_read():
     # a clause that imagines, or names a vehicle, is no courtesy
     assert _courtesy("if i may ask".split())
     assert not _courtesy("if you had parked it".split()) and not _courtesy("if i may say , the bus".split())
+
+
+def test_a_vet_s_closing_remarks_a_lecturer_s_exercises_and_a_postman_s_cut_film_are_read():
+    parser = QuestionParser.load()
+    biscuit, rabbit, letter, given, proof, suffice, cut, doubt = parser.parse_batch([
+        "Which kind of vehicle is picking up speed at the outset? I'll ask while the Labrador finishes his biscuit.",
+        "Suppose the cyan bicycle had been sitting motionless right from the start, the way a frightened rabbit "
+        "freezes: would it collide with the grey double-decker?",
+        "Let W denote the vehicle that is accelerating, engine on, at the outset. Find the colour of W.",
+        "Given that the red mountain bike collides with a certain vehicle, find the kind of that vehicle.",
+        "Show that the brown aeroplane is moving slowly when the video starts, or else show that it is not.",
+        "The clip is cut off part-way. Predict whether the gray bus and the green airliner will collide "
+        "afterwards; a yes or no is expected.",
+        "They've cut the film short on us! After it stops, is the biplane going to bump into the car?",
+        "So did the blue SUV and the blue city bus crash into each other, or is that just Mr Jenkins stirring?"])
+    assert biscuit == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert rabbit[4] == "Counterfactual_static" and rabbit[-1] == "exist"
+    assert letter == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[color]"]
+    assert given == ["Events", "Objects", "filter_attributes[red]", "filter_attributes[mountain_bike]", "unique",
+                     "get_all_col_partners", "unique", "query_attributes[shape]"]
+    assert proof == ["Objects", "filter_attributes[brown]", "filter_attributes[aeroplane]", "unique", "start",
+                     "is_moving_velocity[slow]"]
+    assert suffice[0] == cut[0] == "futureEvents"
+    assert doubt[0] == "Events" and doubt[-1] == "exist"   # ('stirring' had been read as moving, at the collision)
+    # a premise of motion stays a premise, a remark that names what is asked stays, and a claim to prove alone
+    # presumes its answer
+    assert parser.parse("Given that the bus is parked, does it hit the car?") is None
+    assert _remarked_after("i ' ll ask while the labrador finishes its biscuit .".split())
+    assert not _remarked_after("i mean the blue one .".split()) and not _remarked_after("at the start .".split())
+    assert proof_as_asked("show that the red car hits the bus .".split()) == (
+        "show that the red car hits the bus .".split(), ())
+
+
+def test_a_speed_offered_after_the_time_is_one_of_the_choices():
+    parser = QuestionParser.load()
+    after, other, adjacent = parser.parse_batch(["Is the red car fast at the start or slow?",
+                                                 "Is the red car slow when it hits the bus, or is it fast?",
+                                                 "Is the red car fast at the start?"])
+    assert after == ["Objects", "filter_attributes[red]", "filter_attributes[car]", "unique", "start",
+                     "query_moving_velocity"]   # (was read as 'is it fast?')
+    assert other[-1] == "query_moving_velocity" and adjacent[-1] == "is_moving_velocity[fast]"

@@ -25,7 +25,8 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIA
                                      NAMING, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
                                      QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEAKER_AND_LISTENER, SPEED_CHOICES,
                                      SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
-                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like)
+                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like,
+                                     phrase_starts)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -62,6 +63,7 @@ THANKING = {"thanks", "thank", "cheers", "ta", "many"}
 SPEAKER_REMARKS = (("i",), ("that", "'", "s"), ("that", "is"), ("'", "cause"), ("cause",), ("cos",), ("because", "i"),
                    ("y", "'", "all"), ("you", "all"), ("me", "and"), ("just", "wondering"), ("just", "curious"))
 INTERJECTION_ENDS = {",", ".", "-", "!", "?", ":", ";"}
+DOUBTS = (["or", "is", "that"], ["or", "was", "that"], ["or", "am", "i"], ["or", "is", "it"], ["or", "was", "it"])
 
 
 def _says_nothing(tail: list[str]) -> bool:
@@ -97,6 +99,26 @@ def _grumbled(tail: list[str]) -> bool:
     return tail[-1:] in ([","], ["."], ["!"]) and len(tail) <= 14 and _at_large(tail) and not asks_impact(tail) and \
         not set(tail) & (START_WORDS | END_WORDS | FILM_WORDS | MOTION_WORDS | SPEED_CLASS_WORDS | QUERY_NOUNS
                          | NEGATIONS | {"?", "mean", "meant"}) and tail[0] not in ("give", "tell", "name", "state")
+
+
+# what a statement after the question may not name, so that it stays: a vehicle and what is asked of one, a time,
+# the video, a premise or a request to read it otherwise ('? I mean the red one.', '? At the start, that is.')
+AFTER_REMARK_NAMES = (OBJECT_WORDS | set(COLOR_NAMES) | OTHER_COLOURS | FILM_WORDS | START_WORDS
+                      | END_WORDS - {"finishes", "finished", "ended"}   # the dog's biscuit, not the video
+                      | QUERY_NOUNS | LOOKS | MOTION_WORDS | MOTION_DESCRIPTIONS | DIRECTION_WORDS | FLOATING_WORDS
+                      | {"?", "which", "what", "how", "one", "ones", "mean", "meant", "instead", "rather", "moment",
+                         "instant", "frame", "frames", "time", "future", "later", "afterwards", "predict", "stop",
+                         "stops", "stopped", "cut", "if", "had", "would", "were", "different", "other", "another",
+                         "else", "pair"})
+
+
+def _remarked_after(tail: list[str]) -> bool:
+    """Whether a statement after the question is a remark on anything but the video (a vet's '? I'll ask while the
+    Labrador finishes his biscuit.', '? Pure guesswork, like predicting when a cat will come out from under the
+    bed.'): closed by a full stop or '!', asking nothing and naming nothing the question could mean."""
+    named = {w for j, w in enumerate(tail) if not (w == "which" and j and tail[j - 1] == ",")}   # ', which is ...'
+    return tail[-1:] in (["."], ["!"]) and len(tail) <= 24 and not asks_impact(tail) and \
+        not named & AFTER_REMARK_NAMES and tail[0] not in ("give", "tell", "name", "state", "say", "answer")
 
 
 def _unremarked(remark: list[str]) -> list[str]:
@@ -240,11 +262,26 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
             _says_nothing(about[:-1]):
         said += ((" ".join(about), "nothing, a question about the asking"),)
         words, end = words[:first + 1], first + 1
+    # ... and a doubt said as the other choice of a question that asks yes or no (', or is that just Mr Jenkins
+    # stirring ?', ', or is that just my eyes ?'), where the doubt names nothing the question could mean
+    doubt = next((j for j in range(k + 2, end - 3) if words[j - 1] == "," and words[j:j + 3] in DOUBTS), None)
+    if doubt and words[end - 1] == "?" and "?" not in words[doubt:end - 1] and \
+            _remarked_after([*words[doubt + 3:end - 1], "."]):
+        said += ((" ".join(words[doubt - 1:end - 1]), "nothing, a doubt"),)
+        words, end = [*words[:doubt - 1], *words[end - 1:]], doubt
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
     if tail and ((tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail)
-                 or _grumbled(tail)):
+                 or _grumbled(tail) or _remarked_after(tail)):
         end = asked + 1
+    # ... or a remark after a semicolon closing a request ('Determine whether it is moving slowly at that instant; a
+    # yes or no will suffice.')
+    last = end - (words[end - 1:end] in (["?"], ["."], ["!"]))
+    semi = max((j for j in range(k, last) if words[j] == ";"), default=None) if "?" not in words[k:last] else None
+    if semi is not None and _remarked_after([*words[semi + 1:last], "."]) and \
+            not {"which", "what", "how", "whether", "who", "tell", "say", "name", "give"} & set(words[semi + 1:last]):
+        words = [*words[:semi], *(words[last:end] or ["."]), *words[semi + 1:last], *words[end:]]
+        end = asked = semi + 1
     # ... or a description closing it after its last comma (an estate agent's ', a well-kept little runaround ?', ',
     # as befits such a quiet street ?'; not ', a car or a bus ?')
     comma = next((j for j in range(max(k, (asked or 0) - 14), asked or 0) if words[j] == "," and (
@@ -659,7 +696,8 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     was ...'). With the words read so, or the words as they are and ()."""
     out, read, k = [], [], 0
     while k < len(words):
-        aside = next((a for a in EXAMINATION_ASIDES if tuple(words[k:k + len(a)]) == a), None)
+        aside = next((a for a in phrase_starts(EXAMINATION_ASIDES).get(words[k], ())
+                      if tuple(words[k:k + len(a)]) == a), None)
         if aside:
             end = k + len(aside)
             between = out[-1:] == [","] and words[end:end + 1] == [","]
@@ -668,13 +706,15 @@ def examination_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
             k = end + between + (not out and words[end:end + 1] == [","])
             continue
         # (a lead with nothing after it is a tag: '...; would you say so?')
-        confirm = max((c for c in CONFIRMING if tuple(words[k:k + len(c)]) == c and words[k + len(c):k + len(c) + 1]
-                       not in ([], ["so"], ["?"], ["."])), key=len, default=None) or \
-            next((c for c in CLAIM_LABELS if tuple(words[k:k + len(c)]) == c and (k == 0 or words[k - 1] in
-                  SENTENCE_ENDS) and words[k + len(c):k + len(c) + 1] and words[k + len(c)] not in QUESTION_OPENERS),
-                 None)
-        asks = next((a for a in EXAMINATION_ASKS if tuple(words[k:k + len(a)]) == a), None)
-        attention = next((a for a in ATTENTION_TO if tuple(words[k:k + len(a)]) == a), None)
+        confirm = max((c for c in phrase_starts(CONFIRMING).get(words[k], ()) if tuple(words[k:k + len(c)]) == c
+                       and words[k + len(c):k + len(c) + 1] not in ([], ["so"], ["?"], ["."])), key=len, default=None) \
+            or next((c for c in phrase_starts(CLAIM_LABELS).get(words[k], ()) if tuple(words[k:k + len(c)]) == c
+                     and (k == 0 or words[k - 1] in SENTENCE_ENDS) and words[k + len(c):k + len(c) + 1]
+                     and words[k + len(c)] not in QUESTION_OPENERS), None)
+        asks = next((a for a in phrase_starts(EXAMINATION_ASKS).get(words[k], ()) if tuple(words[k:k + len(a)]) == a),
+                    None)
+        attention = next((a for a in phrase_starts(ATTENTION_TO).get(words[k], ())
+                          if tuple(words[k:k + len(a)]) == a), None)
         if confirm in HEARSAY and _asked_after(words, k + len(confirm)):
             read.append((" ".join(confirm), "nothing, a premise"))
             k += len(confirm)
@@ -774,6 +814,41 @@ def hypothesis_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
         return words, ()
     return ["is", "it", "true", "that", *claim, "?"], ((" ".join(label), "is it true that"),
                                                       *(((" ".join(words[end:]), "?"),) if closing else ()))
+
+
+# An exercise's 'show that ..., or else show that it is not' (a lecturer's 'Prove or disprove that ...'): whether the
+# claim holds, the grammar's 'is it true that'
+PROOF_OPENERS = (["show", "that"], ["prove", "that"], ["prove", "or", "disprove", "that"],
+                 ["show", "or", "disprove", "that"], ["demonstrate", "that"])
+PROOF_CLOSERS = (["or", "else", "show", "that", "it", "is", "not"], ["or", "show", "that", "it", "is", "not"],
+                 ["or", "else", "that", "it", "is", "not"], ["or", "disprove", "it"], ["or", "else", "disprove", "it"],
+                 ["or", "refute", "it"], ["or", "otherwise"], ["or", "not"])
+
+
+def proof_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'show that the aeroplane is moving slowly when the video starts , or else show that it is not .' -> 'is it true
+    that the aeroplane is moving slowly when the video starts ?': a claim to prove or disprove, at the start of a
+    sentence. A claim to prove alone ('Show that it is slow.') presumes its answer and stays. With the words read
+    so, or the words as they are and ()."""
+    for k in range(len(words)):
+        opener = next((o for o in PROOF_OPENERS if words[k:k + len(o)] == o), None)
+        if opener is None or k and words[k - 1] not in (".", ";", ":"):
+            continue
+        both = opener[1:2] == ["or"]
+        end = next((j for j in range(k, len(words)) if words[j] in (".", "?", ";", "!")), len(words))
+        close = next((j for j in range(k, end) for c in PROOF_CLOSERS if words[j:j + len(c)] == c
+                      and j + len(c) == end), None)
+        if close is None and not both:
+            return words, ()
+        claim_end = (close if close is not None else end) - (words[(close or end) - 1] == ",")
+        claim = words[k + len(opener):claim_end]
+        if not claim:
+            return words, ()
+        read = ((" ".join(opener), "is it true that"),)
+        if close is not None:
+            read += ((" ".join(words[claim_end:end]), "nothing, the other side of the proof"),)
+        return [*words[:k], "is", "it", "true", "that", *claim, "?", *words[end + 1:]], read
+    return words, ()
 
 
 def requested_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -917,7 +992,7 @@ def ticket_fields_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     or the words as they are and ()."""
     out, read = list(words), []
     for k in range(len(out)):
-        need = next((n for n in ANSWER_NEEDED if out[k:k + len(n)] == n), None)
+        need = next((n for n in phrase_starts(ANSWER_NEEDED).get(out[k], ()) if tuple(out[k:k + len(n)]) == n), None)
         if need and (k == 0 or out[k - 1] in {";", ".", ",", ":"}):
             read.append((" ".join(need), "nothing, a ticket's field"))
             out = out[:k] + out[k + len(need):]
@@ -1434,7 +1509,8 @@ def hooks_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     # (a motion or a collision it may say: 'Speed demon spotted! What kind of vehicle is zooming ...?')
     end = next((k for k, w in enumerate(words) if w in ("?", "!")), None)
     if end is None or not 0 < end <= 6 or "?" not in words[end + 1:] or not mentions(words[end + 1:]) or \
-            set(words[:end]) & (NAMING | GENERIC_NOUNS | START_WORDS | END_WORDS | {"it", "they", "then", "that"}) \
+            set(words[:end]) & (NAMING | GENERIC_NOUNS | START_WORDS | END_WORDS | FILM_WORDS
+                                | {"it", "they", "then", "that"}) \
             or asks_impact(words[:end]) and not asks_impact(words[end + 1:]):
         return (words, tuple(read)) if read else (words, ())
     while words[end + 1:end + 2] in (["!"], ["?"]):

@@ -41,7 +41,7 @@ from dynclevr.language.words import (ACCELERATION_SAID, AFLOAT_SAID, ASKED_QUERI
                                      IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS,
                                      NAMING, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, RESTING, REST_WORDS,
                                      REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES,
-                                     UNMOVED, VIEWER, YES_NO_OPENERS, _head, asks_impact)
+                                     UNMOVED, VIEWER, YES_NO_OPENERS, _at, _head, asks_impact)
 from dynclevr.questions.programs import OPS
 
 
@@ -397,6 +397,7 @@ def collision_at_start(words: list[str], program: list[str]) -> str:
 
 
 VIDEO_PARTS = (["early", "in"], ["late", "in"], ["later", "in"], ["halfway"], ["midway"], ["in", "the", "middle"])
+END_OR_PARTS = (*END_TIMES, *VIDEO_PARTS)
 PART_ORDINALS = {"first", "last", "final", "next", "second", "latter"}
 PART_NOUNS = {"half", "part", "few", "moments", "moment"}
 
@@ -597,8 +598,7 @@ def clock_unasked(words: list[str], program: list[str]) -> str:
     clock = next((f"{a} {b}" for a, b in zip(words, words[1:]) if b in CLOCK_WORDS and (
         a.isdigit() or a in NUMBERS or not imagined and a in ORDINAL_WORDS and not b.endswith("s"))), None)
     if clock is None and "Events" in program:   # a part of the video ('in the last second', 'at the end')
-        clock = next((" ".join(t) for k in range(len(words)) for t in (*END_TIMES, *VIDEO_PARTS)
-                      if words[k:k + len(t)] == t), None) or next(
+        clock = " ".join(at[1]) if (at := _at(words, END_OR_PARTS)) else next(
             (f"{a} {b}" for a, b in zip(words, words[1:]) if a in PART_ORDINALS and b in CLOCK_WORDS | PART_NOUNS),
             None)
     if clock is None:

@@ -541,6 +541,56 @@ def found_then_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     return out, ((" ".join(words), " ".join(out)),)
 
 
+# A mathematician's name for a vehicle ('Let V be the vehicle floating in the air there. Determine what kind of
+# vehicle V is.'): one letter, never an article or the speaker
+NAMING_VERBS = (["be"], ["denote"], ["stand", "for"], ["represent"])
+
+
+def variables_named(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'let v be the vehicle floating in the air there . determine what kind of vehicle v is .' -> 'determine what
+    kind of vehicle the vehicle floating in the air there is .': the letter read as what it names, wherever the
+    question says it. With the words read so, or the words as they are and ()."""
+    k = next((k for k in range(len(words) - 3) if words[k] == "let" and len(words[k + 1]) == 1
+              and words[k + 1].isalpha() and words[k + 1] not in ("a", "i", "o")), None)
+    verb = next((v for v in NAMING_VERBS if k is not None and words[k + 2:k + 2 + len(v)] == v), None)
+    if verb is None:
+        return words, ()
+    start = k + 2 + len(verb)
+    end = next((j for j in range(start, len(words)) if words[j] in (".", ";", "?", "!")), None)
+    name = words[start:end] if end else []
+    letter, asked = words[k + 1], words[end + 1:] if end else []
+    if not name or letter not in asked or not (mentions(name) or GENERIC & set(name)):
+        return words, ()
+    before = words[:k]
+    while before[-1:] in ([","], ["and"]):
+        before = before[:-1]
+    out = [*before, *(["."] if before else []), *(w for a in asked for w in (name if a == letter else [a]))]
+    return out, ((" ".join(words[k:end + 1]), "nothing, a name"), (letter, " ".join(name)))
+
+
+# A collision given as a premise and then asked about ('Given that the cyan scooter collides with the bus, find its
+# speed at the moment of impact'): the question presupposes it, as a question of the collision always does
+GIVEN = (["given", "that"], ["knowing", "that"], ["granted", "that"])
+IMPACT_REFERENCES = {"vehicle", "object", "one", "instant", "moment", "point", "time", "partner"}
+
+
+def impact_given_as_context(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'given that the red bike collides with a certain vehicle , find the kind of that vehicle .' -> 'the red bike
+    collides with a certain vehicle . find ...': the premise as the context the question's 'that vehicle' or 'at
+    impact' refers to. Not a premise of motion ('given that the bus is parked'), nor one imagined. With the words
+    read so, or the words as they are and ()."""
+    given = next((g for g in GIVEN if words[:len(g)] == g), None)
+    end = next((k for k, w in enumerate(words) if w in (",", ";", ":", ".")), None)
+    if not given or end is None:
+        return words, ()
+    premise, asked = words[len(given):end], words[end + 1:]
+    refers = asks_impact(asked) or any(a == "that" and b in IMPACT_REFERENCES for a, b in zip(asked, asked[1:]))
+    if not asks_impact(premise) or not mentions(premise) or \
+            {"had", "were", "would", "if"} & set(premise) or not refers:
+        return words, ()
+    return premise + ["."] + asked, ((" ".join(words[:len(given)]), "nothing, a premise the question presupposes"),)
+
+
 # 'someone' said of a vehicle whose kind or colour is then asked ('Someone's picking up speed off the line! What
 # colour is that one?'): a commentator's vehicle, not a person
 SOMEONE = {"someone", "somebody"}

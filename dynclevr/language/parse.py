@@ -54,10 +54,10 @@ from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
                                       examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
                                       hedges_dropped, hooks_dropped, hypothesis_as_asked, interjections_dropped,
-                                      owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
-                                      radio_as_asked, ramble_dropped, requested_as_asked, restatements_read,
-                                      soothing_dropped, speaker_asides_dropped, ticket_fields_read, wagers_read,
-                                      word_given_dropped)
+                                      owners_dropped, person_remark_dropped, preamble_dropped, proof_as_asked,
+                                      prompt_dropped, radio_as_asked, ramble_dropped, requested_as_asked,
+                                      restatements_read, soothing_dropped, speaker_asides_dropped, ticket_fields_read,
+                                      wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -72,9 +72,10 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
-                                       found_then_asked, impact_said_first, retold_as_imagined, scenario_as_asked,
-                                       settings_as_imagined, someone_as_something, told_otherwise_as_imagined,
-                                       transcript_as_asked)
+                                       found_then_asked, impact_given_as_context, impact_said_first,
+                                       retold_as_imagined, scenario_as_asked, settings_as_imagined,
+                                       someone_as_something, told_otherwise_as_imagined, transcript_as_asked,
+                                       variables_named)
 from dynclevr.language.english import real_words
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
@@ -91,8 +92,8 @@ from dynclevr.language.surface import (SPELT_BY_EAR, archaic_as_said, code_switc
                                        corrections_starred, creole_as_said, emoji_as_said, glosses_read,
                                        homophones_as_said, quoted_question, she_as_it, shorthand_as_said, spelt_by_ear,
                                        still_as_adjective, telegram_as_said, trailing_off_read, worksheet_as_said)
-from dynclevr.language.times import (first_frames_as_said, inserted_time_last, moment_pictured, present_asked_later,
-                                     time_clause_closed, video_end_as_said)
+from dynclevr.language.times import (active_cut_as_said, first_frames_as_said, inserted_time_last, moment_pictured,
+                                     present_asked_later, time_clause_closed, video_end_as_said)
 from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
@@ -110,7 +111,7 @@ from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subj
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
-                                     impact_like)
+                                     _at, impact_like)
 from dynclevr.questions.programs import OPS, ProgramError
 from dynclevr.questions.programs import parse as parse_program
 
@@ -338,6 +339,8 @@ class QuestionParser:
         starred += archaic + relayed
         words, transcribed = transcript_as_asked(words)
         words, printed = worksheet_as_said(words)
+        words, letters = variables_named(words)
+        printed += letters
         words, called = calls_read(words)
         printed += called
         printed = transcribed + printed
@@ -378,6 +381,8 @@ class QuestionParser:
         words, wagered = wagers_read(words)
         words, requested = requested_as_asked(words)
         words, tested = hypothesis_as_asked(words)
+        words, proved = proof_as_asked(words)
+        tested += proved
         wagered += requested + tested
         corrected += examined + wagered
         words, hedged = hedges_dropped(words)
@@ -395,6 +400,9 @@ class QuestionParser:
         words = request_after_setting(words)
         words, checked = check_ins_stated(words)
         words, found = found_then_asked(words)
+        words, given = impact_given_as_context(words)
+        words, cut = active_cut_as_said(words)
+        found += given + cut
         words, someone = someone_as_something(words)
         checked += found + someone
         words, fronted_request = fronted_whether_as_asked(words)
@@ -555,7 +563,7 @@ class QuestionParser:
         if offered:
             return [], (f"the question offers '{offered}' to choose from, which no question here answers: ask "
                         "whether one is faster (or slower) than the other"), read_as, said
-        reversal = next((" ".join(r) for k in range(len(said)) for r in REVERSING if said[k:k + len(r)] == r), None)
+        reversal = " ".join(at[1]) if (at := _at(said, REVERSING)) else None
         if reversal:
             return [], (f"the question asks the opposite of what the parser can read ('{reversal}'): ask it the "
                         "other way round and take the opposite answer"), read_as, said

@@ -111,12 +111,31 @@ _EVERYDAY = phrase_table((w, tuple(said.split())) for w, said in sorted(
     | _SHADES | _ORDINARY, key=lambda kv: (-len(kv[0]), kv)))
 
 
+_PAIRED: dict[int, tuple[object, dict]] = {}
+
+
+def _paired(table) -> dict[tuple[str, str], list]:
+    """A `phrase_table`'s phrases by their first two words (one word's by (word, '')), made once, longest first as
+    in the table: the commonest first words open thousands ('if', ',')."""
+    made = _PAIRED.get(id(table))
+    if made is None or made[0] is not table:
+        pairs: dict[tuple[str, str], list] = {}
+        for w, hits in table.items():
+            for p, said in hits:
+                pairs.setdefault((w, p[1] if len(p) > 1 else ""), []).append((p, said))
+        made = _PAIRED[id(table)] = (table, pairs)
+    return made[1]
+
+
 def phrases_as_said(words: list[str], table) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """Every phrase of `table` (`phrase_table`) in `words` read as its words, the longest at a place; with the
     phrases read so, as written ('dirt-bike')."""
     out, read, i = [], [], 0
+    pairs = _paired(table)
     while i < len(words):
-        hit = next(((p, said) for p, said in table.get(words[i], ()) if tuple(words[i:i + len(p)]) == p), None)
+        longer = pairs.get((words[i], words[i + 1]), ()) if i + 1 < len(words) else ()
+        hit = next(((p, said) for p, said in (*longer, *pairs.get((words[i], ""), ()))
+                    if tuple(words[i:i + len(p)]) == p), None)
         if hit is None:
             out.append(words[i])
             i += 1
@@ -562,8 +581,13 @@ _VALUE = re.compile(r"\[([a-z_]+)\]")
 Ref = tuple[str, ...]
 
 
+_NAMES_BY_FIRST: dict[str, list[tuple[Ref, str]]] = {}
+for _name, _value in _NAMES:   # the longest first, as in _NAMES
+    _NAMES_BY_FIRST.setdefault(_name[0], []).append((_name, _value))
+
+
 def _value_at(words: list[str], i: int) -> tuple[str, int] | None:
-    for name, value in _NAMES:
+    for name, value in _NAMES_BY_FIRST.get(words[i], ()) if i < len(words) else ():
         if tuple(words[i:i + len(name)]) == name:
             return value, len(name)
     return None

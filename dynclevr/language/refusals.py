@@ -34,7 +34,7 @@ from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTR
                                      LATER_TIMES, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS,
                                      OTHER_VEHICLES, PARTNER_SAID, PEOPLE, PLURALS, REST_WORDS, ROUGHLY,
                                      SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS,
-                                     _head, asks_impact)
+                                     _at, _head, asks_impact)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -328,7 +328,7 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     if place:
         return (f"the question asks where a vehicle is ('{place}'), which no question here asks (they ask which way "
                 "it is moving)")
-    ended = _video_end(said) or any(said[k:k + len(e)] == e for k in range(len(said)) for e in END_TIMES) or \
+    ended = _video_end(said) or _at(said, END_TIMES) or \
         ENDING_CLAUSE.search(" ".join(said))
     if ended and not asks_impact(said) and not asks_impact(words):   # 'colide' as read, typos fixed
         return ("the question asks about the video's end, which no question here asks (they ask about the start, "
@@ -587,6 +587,7 @@ def _condition_clause(words: list[str]) -> tuple[int, int]:
 
 
 CLAUSE_TIMES = (["after"], ["before"], ["when"], ["once"], ["while"], ["until"])
+OTHER_TIMES = (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
 
 
 def imagined_otherwise(words: list[str], read: list[str]) -> str:
@@ -601,8 +602,7 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
     clause = words[start:end]
     if not {"had", "were", "been"}.intersection(clause):   # 'do you know if X and Y ...'
         return ""
-    other = next((" ".join(t) for k in range(len(clause)) for t in (*LATER_TIMES, *END_TIMES, *CLAUSE_TIMES)
-                  if clause[k:k + len(t)] == t), None)
+    other = " ".join(at[1]) if (at := _at(clause, OTHER_TIMES)) else None
     if other and not START_WORDS.intersection(clause + read[slice(*_condition_clause(read))]) and "first" not in clause:
         return (f"the question imagines a change at a time other than the start ('{other}'), which no question here "
                 "does: each changes a vehicle's motion from the start")

@@ -120,7 +120,8 @@ def cut_premise(clause: list[str]) -> bool:
 
 
 PART_WAY = (["mid", "-", "way", "through"], ["mid", "-", "way"], ["partway", "through"],
-            ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"],
+            ["part", "-", "way", "through"], ["part", "way", "through"], ["partway"], ["part", "-", "way"],
+            ["part", "way"],
             ["halfway", "through"], ["halfway"], ["half", "way"], ["midway", "through"], ["midway"], ["there"],
             ["here"], ["right", "there"], ["right", "here"],
             ["part", "of", "the", "way", "through"], ["part", "of", "the", "way"],
@@ -186,8 +187,11 @@ CUT_POINTS = tuple([*roll, p, "the", *c, *of] for roll in ((), ("in", "the", "pr
                              ("cut", "-", "off", "point"), ("freeze",)))
 
 
+CUT_POINTS_LONGEST = sorted(map(tuple, CUT_POINTS), key=len, reverse=True)
+
+
 def _at_cut(words: list[str]) -> tuple[int, int] | None:
-    at = _at(words, sorted(map(tuple, CUT_POINTS), key=len, reverse=True))
+    at = _at(words, CUT_POINTS_LONGEST)
     return (at[0], at[0] + len(at[1])) if at else None
 
 
@@ -204,7 +208,8 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
         alone = not opener and (i == 0 or words[i - 1] in CLAUSE_SEPARATORS)
         if not opener and not alone:
             continue
-        j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (["the"], ["this"]))
+        j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (
+            ["the"], ["this"], ["my"], ["our"], ["your"]))
         j += words[j:j + 1] != [] and words[j] in FILM_KINDS and words[j + 1:j + 2] != [] and words[j + 1] in FILM_WORDS
         named = words[j:j + 1] == ["it"] and opener and FILM_WORDS.intersection([*before, *words[:i]])
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
@@ -222,10 +227,37 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
             if words[k:k + 1] == ["before"] and sep and not NAMING.intersection(words[k:sep]) and \
                     not asks_impact(words[k:sep]):
                 k = sep
-            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS | {"("}:
+            if alone and words[k:k + 1] and words[k] not in CLAUSE_SEPARATORS | {"(", "!"}:
                 continue   # 'the video stops before they collide': the clause is the question's own
             return i, k
     return None
+
+
+# who cuts a video, said as its subject ('They've cut the film short on us!', 'Someone paused the clip.')
+CUTTERS = {"they", "someone", "somebody", "you", "we", "i", "the", "editor", "editors"}
+CUT_AUXILIARIES = (["'", "ve"], ["have"], ["'", "d"], ["had"], ["has"], ["'", "s"], ["just"], ["'", "ve", "just"])
+
+
+def active_cut_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'they 've cut the film short on us ! after it stops , ...' -> 'the film is cut short ! after it stops , ...':
+    a sentence of someone cutting the video, said as the video cut (`_video_end` reads it so), where it names no
+    vehicle and no collision. With the words read so, or the words as they are and ()."""
+    for i in range(len(words)):
+        if words[i] not in CUTTERS or i and words[i - 1] not in CLAUSE_SEPARATORS | {"!", "?"}:
+            continue
+        j = i + 1 + (words[i] == "the")   # 'the editors'
+        j += next((len(a) for a in sorted(CUT_AUXILIARIES, key=len, reverse=True) if words[j:j + len(a)] == a), 0)
+        if words[j:j + 1] == [] or words[j] not in CUT_VERBS:
+            continue
+        m = j + 1 + (words[j + 1:j + 2] == ["off"])
+        m += words[m:m + 1] in (["the"], ["this"], ["our"])
+        end = next((e for e in range(m, len(words)) if words[e] in CLAUSE_SEPARATORS | {"!", "?"}), len(words))
+        if words[m:m + 1] == [] or words[m] not in FILM_WORDS or asks_impact(words[i:end]) or \
+                OBJECT_WORDS.intersection(words[i:end]):
+            continue
+        return [*words[:i], "the", words[m], "is", "cut", "short", *words[end:]], \
+            ((" ".join(words[i:end]), f"the {words[m]} is cut short"),)
+    return words, ()
 
 
 def video_end_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

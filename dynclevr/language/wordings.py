@@ -160,6 +160,9 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
                      r"|do you (?:happen to )?(?:know|(?:remember|recall)(?= (?:which|what|how|whether|if)))"
                      r"|(?:please )?find out(?= (?:whether|if|which|what|how))"
+                     # a textbook's imperative ('Find the kind of that vehicle.', 'Determine what kind of ...')
+                     r"|(?:please )?(?:find|determine|ascertain|work out|figure out)"
+                     r"(?= (?:the|whether|if|which|what|how) )"
                      # a translation's courtesy ('Would it be possible to know whether ...')
                      r"|(?:would|could|is) it be possible to (?:know|learn|find out|ask)"
                      r"(?= (?:whether|if|which|what|how|in))"
@@ -633,6 +636,9 @@ IDIOMS = phrase_table({
     **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
                                                                          ("found", "got"))},
     **{(k, "aloft"): ("floating",) for k in ("keeping", "staying", "remaining", "holding")},
+    # a postman's 'once things carry on' (the video, past its cut; 'carry' alone asks a load)
+    **{(c, "on"): (k,) for c, k in (("carry", "continue"), ("carries", "continues"), ("carried", "continued"),
+                                     ("carrying", "continuing"))},
     **{("butt", h): ("collide",) for h in ("heads", "head")}, ("butted", "heads"): ("collided",),
     ("butting", "heads"): ("colliding",),
     # the part seen is the video ('efter the bit we've seen', 'after this part'), a streamer's 'cranking up its
@@ -2083,14 +2089,16 @@ SIMILE_SPEEDS_SAID = SIMILE_SPEEDS | SIMILE_MOTIONS | {"slower", "faster", "quic
 
 def _set_off_simile(words: list[str], k: int) -> int | None:
     """Where a simile set off by a comma at words[k] ends (', like a tired rope team on the scree :', a fisherman's ',
-    patient as an old angler ?', ', sure as the tide turns ?', ', snagged like a hook on a log ?'): the clause mark
+    patient as an old angler ?', ', sure as the tide turns ?', ', snagged like a hook on a log ?', a vet's ', the way a
+    frightened rabbit freezes :'): the clause mark
     after it, where the simile names no vehicle, colour, time or collision and asks nothing; else None. Its
     likeness (the words before 'like' or 'as') says nothing either, or is a speed the question has said already ('...
     slower than the bus , slow as the river on a summer's day ?')."""
-    opener = max((j for j in range(k + 1, min(len(words), k + 4)) if words[j] in SIMILE_OPENERS), default=None)
+    opener = max((j for j in range(k + 1, min(len(words), k + 4)) if words[j] in SIMILE_OPENERS
+                  or words[j - 1:j + 1] == ["the", "way"]), default=None)
     if words[k] != "," or opener is None:
         return None
-    likeness = [w for w in words[k + 1:opener] if w not in ("as", "just", "same")]
+    likeness = [w for w in words[k + 1:opener] if w not in ("as", "just", "same", "the")]
     if words[opener] == "as" and not words[k + 1:opener] or not all(w.isalpha() for w in likeness) or any(
             w in SIMILE_SPEEDS and not SIMILE_SPEEDS_SAID.intersection(words[:k]) for w in likeness) or \
             _says_something([w for w in likeness if w not in SIMILE_SPEEDS]):
@@ -2506,6 +2514,28 @@ def opposed_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     return words, ()
 
 
+_SPEED_SAID = {w for choice in SPEED_CHOICES for w in choice if len(choice) == 1}
+_OTHER_ASKED = (["or"], *(["or", a, p] for a in ("is", "was", "are", "were") for p in ("it", "they", "she", "he")))
+
+
+def _alternative_moved(words: list[str]) -> list[str]:
+    """'is the red car fast at the start or slow ?', '..., or is it slow ?' -> 'is the red car fast or slow at the
+    start ?': a speed offered after the time, moved beside the one it is the other choice to (read as it stood,
+    the question asked whether the car was fast)."""
+    if words[-1:] not in (["?"], ["."]) or len(words) < 5:
+        return words
+    for asked in _OTHER_ASKED:
+        j = len(words) - 2 - len(asked)
+        other = words[-2]
+        if j < 2 or words[j:j + len(asked)] != asked or other not in _SPEED_SAID:
+            continue
+        first = max((m for m in range(j) if words[m] in _SPEED_SAID), default=None)
+        if first is None or SPEED_CHOICES[(words[first],)] == SPEED_CHOICES[(other,)]:
+            continue
+        return [*words[:first + 1], "or", other, *words[first + 1:j - (words[j - 1] == ",")], words[-1]]
+    return words
+
+
 def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'is the red car fast or slow ...?' -> 'is the red car static, slow or fast ...?', 'is it going left or right?'
     -> 'is it going front, back, left, right, up or down?': speed classes or directions offered as alternatives ask
@@ -2514,11 +2544,13 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     are and ()."""
     # asked as yes or no: an auxiliary first, or before its subject after the vehicle or a clause said first ('the
     # red car at the start , is it fast or slow'), or a statement asked ('the school bus is moving fast or slow ?')
+    as_said, words = words, _alternative_moved(words)
+    moved = ((" ".join(as_said), " ".join(words)),) if words != as_said else ()
     asking = [m for m, w in enumerate(words) if w in AUXILIARIES and (m == 0 or words[m + 1:m + 2] and (
         words[m + 1] in SUBJECT_STARTS or words[m + 1] in OBJECT_WORDS) or words[-1:] == ["?"]
         and words[m - 1] in OBJECT_WORDS and words[m - 1] not in COLOR_NAMES)]
     if not asking:
-        return words, ()
+        return as_said, ()
     for i in range(asking[0] + 1, len(words)):
         for choices, listed, needed in OFFERS:
             first = _choice(words, i, choices)
@@ -2535,8 +2567,8 @@ def alternatives_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str,
                 k += len(sep) + nxt[1]
             if len(set(said)) >= 2 and set(said) & needed and "or" in words[i:k]:
                 return (words[:i] + listed.split() + words[k:],
-                        ((" ".join(words[i:k]).replace(" ,", ","), listed.replace(" ,", ",")),))
-    return words, ()
+                        (*moved, (" ".join(words[i:k]).replace(" ,", ","), listed.replace(" ,", ","))))
+    return as_said, ()
 
 
 # A speed said as the subject of a yes/no question ('is the red car's speed low?'), by the word the grammar says

@@ -59,7 +59,7 @@ CLAUSE_MARKS = {",", ":", ";"} | SENTENCE_ENDS
 # the next sentence the condition ('ok weird what-if. the biplane is accelerating from the beginning instead.')
 IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "pretend", "hypothetically",
                  "hypothetical", "instead", "otherwise", "wish", "scenario", "counterfactual", "counterfactually",
-                 "intervention", "hypothesis", "alternate", "alternative"}
+                 "intervention", "hypothesis", "alternate", "alternative", "posit", "postulate"}
 # a condition given a label ('Counterfactual: the pickup moves slowly from the first frame.', 'Intervention: ...')
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
@@ -169,7 +169,8 @@ STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["froz
                 ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
                 *([v, p] for v in ("is", "was", "were", "gets", "got")   # 'if the clip were paused'
                   for p in ("stopped", "halted", "paused", "frozen", "cut")),
-                *(["has", "been", p] for p in ("stopped", "halted", "paused", "frozen", "cut")),
+                *([*h, p] for h in (["has", "been"], ["having", "been"], ["having"])   # 'The video having been
+                  for p in ("stopped", "halted", "paused", "frozen", "cut")),             # stopped part-way, ...'
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
                 *(["'", "s", *been, p] for p in ("stopped", "halted", "paused", "frozen") for been in ((), ("been",))),
                 # learners' ('Video is stopping in the middle', 'Video is cut in between')
@@ -329,8 +330,27 @@ START_WORDS = {"start", "starts", "started", "beginning", "begins", "begin", "be
                "outset", "onset"}
 
 
+_STARTS: dict[int, tuple[object, dict[str, list[tuple]]]] = {}
+
+
+def phrase_starts(phrases) -> dict[str, list[tuple]]:
+    """A module's phrases by their first word, each a tuple, in their order, made once: a scan of a question for
+    any of thousands of phrases (`END_TIMES`) then tries only those that start with the word it is at (trying all
+    at every word was a third of the parser's time)."""
+    made = _STARTS.get(id(phrases))
+    if made is None or made[0] is not phrases:
+        starts: dict[str, list[tuple]] = {}
+        for p in phrases:
+            starts.setdefault(p[0], []).append(tuple(p))
+        made = _STARTS[id(phrases)] = (phrases, starts)
+    return made[1]
+
+
 def _at(words: list[str], phrases) -> tuple[int, tuple] | None:
-    return next(((k, p) for k in range(len(words)) for p in phrases if tuple(words[k:k + len(p)]) == p), None)
+    """The first place in `words` that says one of a module's `phrases`, and the first phrase said there."""
+    starts, after = phrase_starts(phrases), [*words[1:], ""]
+    return next(((k, p) for k, w in enumerate(words) for p in starts.get(w, ())
+                 if (len(p) == 1 or p[1] == after[k]) and tuple(words[k:k + len(p)]) == p), None)
 
 
 def impact_like(word: str) -> bool:
