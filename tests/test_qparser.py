@@ -5028,3 +5028,31 @@ def test_a_speed_offered_after_the_time_is_one_of_the_choices():
     assert after == ["Objects", "filter_attributes[red]", "filter_attributes[car]", "unique", "start",
                      "query_moving_velocity"]   # (was read as 'is it fast?')
     assert other[-1] == "query_moving_velocity" and adjacent[-1] == "is_moving_velocity[fast]"
+
+
+def test_a_physicist_s_changed_initial_conditions_a_customs_officer_s_fragments_and_a_shepherd_s_similes_are_read():
+    parser = QuestionParser.load()
+    variation, pin, grant, should, fragments, between, simile, heading = parser.parse_batch([
+        "Here's a variation on the initial conditions: the school bus speeding up, engine on, from the very first "
+        "instant. Under that assumption, does the school bus collide with the cruiser?",
+        "Pin the gray mountain bike in place from the start, standing still, a fixed point in the ground frame. Would "
+        "the gray mountain bike collide with the green airliner then?",
+        "Grant the gray plane a slow start instead, a modest initial velocity, nothing dramatic; would the gray plane "
+        "then collide with the purple city bus?",
+        "Should the cyan scooter have been fast as the clip begins, would it have run into the bicycle? Hmph.",
+        "The bus. Right at the start. Static, slow or fast? Choose one, I haven't all day.",
+        "The car, at the moment it collides with the bicycle. Direction of travel? Eyes up, traveller.",
+        "When that grey sedan first shows itself, like a ewe coming out of the mist, is it standing still, going "
+        "slow, or going fast?",
+        "green suv crashes into the cyan one, what heading is the suv on? l/r/front/back/up/down"])
+    # (the first three were read as what happens in the video, or after it)
+    assert [variation[3], pin[4], grant[4], should[4]] == ["Counterfactual_accelerating", "Counterfactual_static",
+                                                          "Counterfactual_moving_slow", "Counterfactual_moving_fast"]
+    assert fragments == ["Objects", "filter_attributes[bus]", "unique", "start", "query_moving_velocity"]
+    assert between[-3:] == ["unique", "get_frame", "query_moving_direction"]
+    assert simile[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert heading[-1] == "query_moving_direction"   # (was read as its speed)
+    # a normative 'should' stays refused, and a reading within the video is no answer to 'over the whole clip, first
+    # moment to last' when its nearest reading is after it, nor a vehicle's state from the start to a factual one
+    assert parser.parse_batch(["Should the truck have stopped?",
+                               "gray dirtbike first pops in -- stationary, slow or fast?"]) == [None, None]

@@ -117,8 +117,10 @@ def _remarked_after(tail: list[str]) -> bool:
     Labrador finishes his biscuit.', '? Pure guesswork, like predicting when a cat will come out from under the
     bed.'): closed by a full stop or '!', asking nothing and naming nothing the question could mean."""
     named = {w for j, w in enumerate(tail) if not (w == "which" and j and tail[j - 1] == ",")}   # ', which is ...'
+    # (not a request, but one for the answer just asked: '? State it for the officer.')
+    request = tail[0] in ("give", "tell", "name", "state", "say", "answer") and tail[1:2] != ["it"]
     return tail[-1:] in (["."], ["!"]) and len(tail) <= 24 and not asks_impact(tail) and \
-        not named & AFTER_REMARK_NAMES and tail[0] not in ("give", "tell", "name", "state", "say", "answer")
+        not named & AFTER_REMARK_NAMES and not request
 
 
 def _unremarked(remark: list[str]) -> list[str]:

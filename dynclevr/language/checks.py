@@ -40,8 +40,9 @@ from dynclevr.language.words import (ACCELERATION_SAID, AFLOAT_SAID, ASKED_QUERI
                                      END_WORDS, ENGINE_WORDS, FLOATING_WORDS, FUTURE_CUES, GENERIC_NOUNS,
                                      IMAGINING_LABELS, INDEFINITES, MOTION_DESCRIPTIONS, MOTION_KINDS, MOTION_WORDS,
                                      NAMING, NEGATIONS, NUMBERS, PARTNER_SAID, QUERY_NOUNS, RESTING, REST_WORDS,
-                                     REVERSERS, SPEED_CLASS_WORDS, START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES,
-                                     UNMOVED, VIEWER, YES_NO_OPENERS, _at, _head, asks_impact)
+                                     REVERSERS, CLAUSE_MARKS, SENTENCE_ENDS, SPEED_CLASS_WORDS, START_ADJECTIVES,
+                                     START_WORDS, STATIC_SAID, STOPPED_SAID, STOP_CUES, UNMOVED, VIEWER, YES_NO_OPENERS, _at, _head,
+                                     asks_impact)
 from dynclevr.questions.programs import OPS
 
 
@@ -681,17 +682,33 @@ def comparison_unread(words: list[str], program: list[str]) -> str:
 # a story told again otherwise ('You rewrite the scene so ...', 'an alternate take'), never the video going on
 REWRITING = {"rewrite", "rewrites", "rewriting", "rewritten", "reimagine", "reimagined", "reimagining", "alternate"}
 IMAGINING_SAID = {"imagine", "imagining", "suppose", "supposing", "pretend", "hypothetically", "hypothetical",
-                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif",
+                  "counterfactual", "counterfactually", "instead", "cf", "what-if", "whatif", "assumption",
+                  "supposition",
                   *REWRITING}
+
+
+HELD_STATES = SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS | {"moving", "hover", "float", "accelerate",
+                                                                   "accelerating", "speeding", "engine", "standing"}
+START_MOMENTS = {"instant", "moment", "frame", "frames", "second", "seconds", "go", "off"}
+
+
+def _from_start(after: list[str]) -> bool:
+    """Whether the words after 'from' say the start ('the start', 'the very first instant', 'the initial frame')."""
+    said = after[:4]
+    said = said[:next((j for j, w in enumerate(said) if w in CLAUSE_MARKS), len(said))]
+    return bool(START_WORDS & set(said) or START_ADJECTIVES & set(said) and START_MOMENTS & set(said))
 
 
 def _state_from_start(words: list[str]) -> str | None:
     """A state held from the start said of a vehicle, as a condition without 'if' ('double decker not moving from
-    beginning will it still collide blue cruiser', 'private jet hover from beginning do it still hit purple bus')."""
+    beginning will it still collide blue cruiser', 'private jet hover from beginning do it still hit purple bus', a
+    physicist's 'the school bus speeding up, engine on, from the very first instant. Under that assumption, ...')."""
+    def around(k: int) -> list[str]:   # its clause, up to 8 words either side ('in place from the start, standing
+        start = max((j + 1 for j in range(max(k - 8, 0), k) if words[j] in SENTENCE_ENDS | {":"}), default=0)
+        end = next((j for j in range(k, min(k + 9, len(words))) if words[j] in SENTENCE_ENDS | {":"}), k + 9)
+        return words[max(start, k - 8):end]   # still')
     return next((" ".join(words[k - 1:k + 2]) for k in range(1, len(words) - 1) if words[k] in ("from", "since")
-                 and (words[k + 1] in START_WORDS or words[k + 1:k + 3] in (["the", "start"], ["the", "beginning"]))
-                 and (SPEED_CLASS_WORDS | STATIC_SAID | FLOATING_WORDS | {"moving", "hover", "float", "accelerate"})
-                 .intersection(words[max(k - 3, 0):k])), None)
+                 and _from_start(words[k + 1:]) and HELD_STATES.intersection(around(k))), None)
 
 
 # 'would' of a description asked, not of a change ('would the cyan car be described as static, slow or fast?', 'would
@@ -1214,7 +1231,10 @@ def future_unread(words: list[str], program: list[str], context: list[str] = ())
     if after and "Events" in program and "futureEvents" not in program:
         return (f"the question asks '{after}', but its nearest reading asks within the video: ask whether they "
                 "collide after the video ends")
-    if "futureEvents" in program and within and not FUTURE_CUES.intersection(words):
+    # ('over' as a preposition says no end: 'over the whole recorded history of the clip, first moment to last')
+    cues = FUTURE_CUES.intersection(w for w, nxt in zip(words, [*words[1:], ""])
+                                    if not (w == "over" and nxt in DETERMINERS | {"its", "their", "this"}))
+    if "futureEvents" in program and within and not cues:
         return (f"the question asks about the video ('{within}'), but its nearest reading asks after it: ask whether "
                 "it collides in the video")
     # 'can we get clarity on whether the pickup and the purple thing bump into each other?' read after the video

@@ -140,8 +140,11 @@ def _opener_said(sentence: list[str]) -> tuple[int, tuple, tuple] | None:
     said = sentence[(colon or 0) + 1:]
     event = asks_impact(said) and not (MOTION_DESCRIPTIONS | IMAGINED_SAID | UNMOVED).intersection(said) and \
         not any(w.startswith(("accelerat", "float", "speed")) for w in said)
-    if colon and (sentence[colon - 1] in CONDITION_LABELS or colon <= 3 and sentence[0] in CONDITION_LABELS) and (
-            mentions(sentence[colon:]) or "it" in sentence) and not event:
+    # (or a heading that names one and no vehicle: 'Here's a variation on the initial conditions: ...')
+    heading = sentence[:colon] if colon else []
+    labelled = colon and (sentence[colon - 1] in CONDITION_LABELS or colon <= 3 and sentence[0] in CONDITION_LABELS
+                          or colon <= 10 and CONDITION_LABELS - {"if"} & set(heading) and not mentions(heading))
+    if labelled and (mentions(sentence[colon:]) or "it" in sentence) and not event:
         return colon + 1, (), ("suppose",)
     for k in (0, colon + 1 if colon is not None else 0):
         while k < len(sentence) and sentence[k] in CONTEXT_OPENERS:
@@ -539,6 +542,54 @@ def found_then_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
         return words, ()
     out = [*asked[:be + 1], *words[k:stop], "?"]
     return out, ((" ".join(words), " ".join(out)),)
+
+
+# A note's fragments ('The bus. Right at the start. Static, slow or fast?', 'Red scooter, blue cruiser. Any bump
+# between them in the clip?'): vehicles said alone, then perhaps their time, then what is asked, none a sentence
+FRAGMENT_TIMES = {"right", "just", "upon", "on", "in", "at", "as", "when", "once", "while", "during", "first", "the",
+                  "from", "after", "before"}
+NOT_FRAGMENT = {"is", "was", "are", "were", "does", "did", "do", "has", "have", "had", "will", "would", "can", "could",
+                "i", "you", "we", "it", "they", "there", "'"}
+
+
+def _named_only(fragment: list[str]) -> bool:
+    """Whether a fragment only names vehicles ('the bus', 'red scooter , blue cruiser'), a time after a comma
+    allowed ('the car , at the moment it collides with the bicycle')."""
+    named = mentions(fragment)
+    if not named or named[0][0] > (fragment[0] in ("the", "this", "that", "a", "an", "one")):
+        return False
+    k = 0
+    for first, last, _ in named:
+        if set(fragment[k:first]) - {",", "and", "the", "a", "an", "this", "that"}:
+            return False
+        last += fragment[last:last + 1] != [] and fragment[last] in GENERIC   # 'grey vehicle'
+        if last == len(fragment) or fragment[last] == "," and fragment[last + 1:last + 2] != [] and \
+                fragment[last + 1] in FRAGMENT_TIMES:
+            return True
+        k = last
+    return False
+
+
+def fragments_joined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the bus . right at the start . static , slow or fast ?' -> 'the bus , right at the start , static , slow or
+    fast ?': fragments before the question, the first naming its vehicles, joined into one as a comma joins them.
+    With the words read so, or the words as they are and ()."""
+    ends = [k for k, w in enumerate(words) if w in (".", ";", "?")]
+    if len(ends) < 2 or words[ends[0]] == "?" or not _named_only(words[:ends[0]]):
+        return words, ()
+    start = 0
+    for end in ends:
+        fragment = words[start:end]
+        if not fragment or NOT_FRAGMENT & set(fragment[:2]) or start and words[end] != "?" and \
+                fragment[0] not in FRAGMENT_TIMES:
+            return words, ()
+        if words[end] == "?":   # (one that names its own vehicle is read with the fragments as its context)
+            if fragment[0] in QUESTION_OPENERS or mentions(fragment):
+                return words, ()
+            joined = [w if k >= end or k not in ends else "," for k, w in enumerate(words)]
+            return joined, ((" ".join(words[:end + 1]), " ".join(joined[:end + 1])),)
+        start = end + 1
+    return words, ()
 
 
 # A mathematician's name for a vehicle ('Let V be the vehicle floating in the air there. Determine what kind of
@@ -1138,6 +1189,59 @@ RETELLING = {"rewrite", "rewrites", "rewrote", "reimagine", "reimagines", "reima
              "replayed", "rerun", "reruns", "reran"}
 RETOLD = {"scene", "video", "clip", "shot", "take", "story", "footage", "film", "it", "things", "events", "timeline"}
 RETOLD_LINKS = (["so", "that"], ["such", "that"], ["so"], ["where"], ["with"], ["in", "which"], [":"], [","])
+# An instruction that changes a vehicle from the start, then a collision asked ('Pin the gray mountain bike in place
+# from the start, standing still. Would it collide with the green airliner then?', 'Give the dirtbike a running engine
+# from the very start. Does it then collide ...?'): the grammar's condition, of the one state it says
+CHANGING = {"pin", "give", "make", "have", "let", "set", "keep", "hold", "put", "fix", "freeze", "park", "send",
+            "start", "launch", "leave", "change", "switch", "turn", "grant", "allow", "restate", "rerun", "replay"}
+HELD = (("accelerating", ({"accelerating", "accelerate", "engine"}, (("speeding", "up"), ("picking", "up", "speed")))),
+        ("static", ({"static", "stationary", "still", "motionless", "parked", "immobile", "unmoving", "standstill"},
+                    (("in", "place"), ("at", "rest")))),
+        ("floating", ({"floating", "hovering", "airborne", "aloft", "afloat"}, (("in", "the", "air"),))),
+        ("fast", ({"fast", "quickly", "rapidly", "speeding"}, ())),
+        ("slow", ({"slow", "slowly", "crawling", "creeping"}, ())))
+
+
+def _held_state(sentence: list[str]) -> str | None:
+    """The one state a sentence holds a vehicle in ('speeding up' and 'engine' are accelerating, 'fast' of speeding
+    up is no second), or None."""
+    said = {state for state, (words, phrases) in HELD if words & set(sentence)
+            or any(sentence[k:k + len(p)] == list(p) for k in range(len(sentence)) for p in phrases)}
+    said -= {"fast"} if "accelerating" in said and "fast" not in sentence else set()
+    return said.pop() if len(said) == 1 else None
+
+
+def change_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'pin the gray mountain bike in place from the start , standing still . would ...' -> 'suppose the gray
+    mountain bike had been static from the start . would ...': a first sentence that tells a change at the start to
+    a vehicle it names ('Grant the gray plane a slow start instead; would ...?'), before a question about a
+    collision. With the words read so, or the words as they are and ()."""
+    end = next((k for k, w in enumerate(words) if w in (".", ";", ":", "!")), None)
+    if end is None or words[0] not in CHANGING or not asks_impact(words[end + 1:]):
+        return words, ()
+    sentence = words[:end]
+    named = mentions(sentence)
+    start = bool((START_WORDS | {"first", "initial", "initially"}) & set(sentence))   # 'from the start', 'a slow start'
+    state = _held_state(sentence)
+    if not named or not start or state is None or asks_impact(sentence):
+        return words, ()
+    first, last, _ = named[0]
+    condition = ["suppose", "the", *sentence[first:last], "had", "been", state, "from", "the", "start", "."]
+    return condition + words[end + 1:], ((" ".join(words[:end + 1]), " ".join(condition)),)
+
+
+def inverted_condition_as_if(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'should the cyan scooter have been fast as the clip begins , would it have ...' -> 'if the cyan scooter had
+    been fast ...': a condition said by inverting 'should' (not 'should the truck have stopped ?', which asks what
+    ought to have been). With the words read so, or the words as they are and ()."""
+    have = next((k for k in range(2, min(len(words), 8)) if words[k:k + 2] == ["have", "been"]), None)
+    if words[:1] != ["should"] or have is None or not mentions(words[1:have]) or not any(
+            a == "," and b in ("would", "will", "does", "did", "is", "was") for a, b in zip(words, words[1:])):
+        return words, ()
+    return ["if", *words[1:have], "had", *words[have + 1:]], ((" ".join(words[:have + 1]),
+                                                               " ".join(["if", *words[1:have], "had"])),)
+
+
 TELLERS = {"you", "we", "i", "they", "now", "so", "then", "ok", "okay"}
 
 

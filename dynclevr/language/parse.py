@@ -71,8 +71,9 @@ from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, 
                                       start_speed_at_collision, still_continuing, than_as_said, than_turned,
                                       time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
-from dynclevr.language.context import (afterthoughts_read, check_ins_stated, closing_mark_added, context_as_question,
-                                       found_then_asked, impact_given_as_context, impact_said_first,
+from dynclevr.language.context import (afterthoughts_read, change_as_imagined, check_ins_stated, closing_mark_added,
+                                       context_as_question, found_then_asked, fragments_joined,
+                                       impact_given_as_context, impact_said_first, inverted_condition_as_if,
                                        retold_as_imagined, scenario_as_asked, settings_as_imagined,
                                        someone_as_something, told_otherwise_as_imagined, transcript_as_asked,
                                        variables_named)
@@ -362,7 +363,8 @@ class QuestionParser:
         by_ear += remark + her + scenery
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
-        named = shared + named
+        words, fragments = fragments_joined(words)
+        named = shared + named + fragments
         words, looked = described_as_named(words)
         words, attributed = attributes_as_named(words)
         words, clause = colour_clause_as_named(words)
@@ -371,7 +373,9 @@ class QuestionParser:
         words, corrected = corrections_dropped(words)
         words, setting = settings_as_imagined(words)
         words, retold = retold_as_imagined(words)
-        setting += retold
+        words, changed = change_as_imagined(words)
+        words, inverted_if = inverted_condition_as_if(words)
+        setting += retold + changed + inverted_if
         words, scenario = scenario_as_asked(words)
         words, told = told_otherwise_as_imagined(words)
         corrected += setting + scenario + told

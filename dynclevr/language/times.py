@@ -343,4 +343,9 @@ def moment_pictured(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
         and words[k + 2] in ("it", "they")) and words[k + 2] in BARE_MOMENT_NEXT), None)
     if k is not None:
         return words[:k] + ["at"] + words[k:], ((" ".join(words[k:k + 2]), "at the moment"),)
+    # ('The gray city bus, the second it appears, is it ...?'; not 'the second one')
+    k = next((k for k in range(len(words) - 2) if words[k:k + 2] in (["the", "second"], ["the", "minute"])
+              and words[k + 2] in ("it", "they") and (k == 0 or words[k - 1] in CLAUSE_SEPARATORS)), None)
+    if k is not None:
+        return words[:k] + ["at", "the", "moment"] + words[k + 2:], ((" ".join(words[k:k + 2]), "at the moment"),)
     return words, ()

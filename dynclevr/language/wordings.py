@@ -547,6 +547,9 @@ def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
     speed). 'what heading is it on (at the start) ?', 'on what heading is it ...?' ask which way it moves."""
     h = len(words) - len(_head(words))
     h += words[h:h + 3] in (["on", "what", "heading"], ["on", "which", "heading"])
+    # (or after a clause said first: 'green suv crashes into the cyan one , what heading is the suv on ?')
+    h = next((k for k in range(h, len(words) - 2) if words[k:k + 2] in (["what", "heading"], ["which", "heading"])
+              and words[k - 1] in (",", ":", ";", "-", ".")), h)
     on = next((k for k in range(h + 3, len(words) - 1) if words[k] == "on" and words[k + 1] in ("at", "when", "?",
                                                                                             "as", "while")), None)
     if words[h:h + 2] in (["what", "heading"], ["which", "heading"]) and words[h + 2:h + 3] in (["is"], ["was"]) and \
@@ -1588,6 +1591,8 @@ IDIOMS = phrase_table({
     ("from", "start"): ("from", "the", "start"),
     **{(*f, s, "to", *t, e): ("during", "the", "video") for f in (("from",), ()) for s, e in (
         ("start", "finish"), ("beginning", "end"), ("start", "end")) for t in ((), ("the",))},
+    **{(*f, *t, "first", m, "to", *t, "last"): ("during", "the", "video") for f in (("from",), ())   # a physicist's
+       for t in ((), ("the",)) for m in ("moment", "frame", "instant")},                            # 'first moment to last'
     **{("the", "point", *where, "it", stops): ("the", "cut") for where in (("where",), ("at", "which"), ("when",))
        for stops in ("stops", "ends", "cuts", "stopped", "ended", "pauses", "paused")},
     **{(first, "speed", "?"): ("speed", "at", "the", "start", "?") for first in ("starting", "initial")},
@@ -2128,8 +2133,12 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
     while k < len(words):
         w = words[k]
         end = _set_off_simile(words, k)
+        # (after a motion, closing the question, or between commas before it: 'When that grey sedan first shows
+        # itself, like a ewe coming out of the mist, is it ...?')
         if end is not None and (out and out[-1] in SIMILE_SPEEDS_SAID | SIMILE_AFTER
-                                or end == len(words) - 1):
+                                or end == len(words) - 1
+                                or words[end] == "," and words[end + 1:end + 2] != []
+                                and words[end + 1] in QUESTION_OPENERS):
             read.append((" ".join(words[k:end]), "nothing, a simile"))
             k = end
             continue
@@ -2164,8 +2173,10 @@ def similes_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str],
                 words[end] == "-" and words[end + 1:end + 2] and words[end + 1] in QUESTION_OPENERS):
             end += 1
         # (closing the question, up to six: 'quick as a trout spotting a shadow ?')
+        # (up to five before a clause's mark: 'sat still like a sheep chewing the cud , slow , or fast ?')
         phrase = [v for v in words[j:end] if v not in ("-", "'")]
-        if not phrase or len(phrase) > (6 if words[end:] == ["?"] else 3 + (words[j:end].count("'") > 0)) or \
+        longest = 6 if words[end:] == ["?"] else 5 if words[end:end + 1] in ([","], [";"], [":"]) else 3
+        if not phrase or len(phrase) > longest + (words[j:end].count("'") > 0) or \
                 (end < len(words) and words[end] not in _SIMILE_ENDS) or any(
                 v in OBJECT_WORDS or v in COLOR_NAMES or v in _NAMES_NONE or not v.isalpha() for v in phrase):
             continue
@@ -2295,7 +2306,7 @@ def tail_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     is the red sedan speed at the start?'). With the words read so, or the words as they are and ()."""
     end = words[-1:] if words[-1:] in (["?"], ["."]) else []
     body = words[:len(words) - len(end)]
-    for tail in ([",", "yes", "or", "no"], ["?", "yes", "or", "no"], ["yes", "or", "no"]):
+    for tail in ([",", "yes", "or", "no"], ["?", "yes", "or", "no"], [".", "yes", "or", "no"], ["yes", "or", "no"]):
         if body[-len(tail):] == tail and len(body) > len(tail):
             return body[:-len(tail)] + (end or ["?"]), ((" ".join(tail), "?"),)
     k = max((i for i, w in enumerate(body) if w == "or"), default=0)

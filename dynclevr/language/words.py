@@ -64,10 +64,11 @@ IMAGINED_SAID = {"suppose", "supposing", "imagine", "assume", "assuming", "prete
 CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesis", "scenario", "what-if", "if",
                     "alternative", "alternate", "change", "suppose", "assume", "imagine", "timeline", "universe",
                     "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate",
-                    "contingency"}   # mission control's ('Contingency: if the cyan aeroplane had been ...')
+                    "contingency",   # mission control's ('Contingency: if the cyan aeroplane had been ...')
+                    "variation", "variant", "tweak", "modification", "alteration", "perturbation"}   # a physicist's
 # ... of them, a label that makes what follows imagined ('Hypothetical: brown SUV starts slow -> collision with ...?')
 IMAGINING_LABELS = {"assume", "assuming", "hypothetical", "hypothetically", "counterfactual", "cf", "what-if", "whatif",
-                    "intervention"}
+                    "intervention", "alt"}   # a chat's 'alt timeline: red pickup starts fast -> ...
 # A vehicle the context describes without naming ('Something hits the cyan jet. What colour is it?',
 # 'The SUV hits a vehicle. What kind of vehicle is that?'): the question is left whole, which reads it so
 UNNAMED = {"something", "someone", "somebody"}
@@ -163,7 +164,7 @@ DIRECTION_CHOICES = {**{(w,): w for w in ("left", "right", "up", "down", "front"
 STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["frozen"], ["froze"], ["freezes"],
                 ["drops"], ["dropped"], ["drops", "out"], ["dropped", "out"], ["halts"],   # a feed's
                 *([e, early] for e in ("ends", "ended", "finishes", "finished") for early in ("early", "abruptly")),
-                ["cut", "off"],
+                ["cut", "off"], ["breaks", "off"], ["broke", "off"], ["broken", "off"],   # 'after the footage breaks off'
                 ["cuts", "off"], ["cuts", "out"], ["cut", "out"], ["cuts"], ["cut"], ["terminates"], ["terminated"],
                 ["cut", "short"], ["is", "cut", "short"], ["was", "cut", "short"], ["'", "s", "cut", "off"],
                 ["'", "s", "cut", "short"], ["is", "truncated"], ["was", "truncated"],
@@ -309,7 +310,8 @@ DETERMINERS = {"the", "a", "an", "that", "this"}
 GENERIC_NOUNS = {"thing", "object", "vehicle", "one"}
 
 
-COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view"}
+COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "comes", "come", "visible", "view", "pops",
+                  "pop"}
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
                 "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch",
                 "shunt", "tangl")
