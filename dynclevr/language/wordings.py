@@ -160,9 +160,6 @@ REQUEST = re.compile(r"^(?:(?:please|so|hey|ok|okay|well|and|but) (?:, )?)*"
                      r"|(?:identify|determine|specify|indicate|ascertain)(?= (?:which|what|how|whether|if)))"
                      r"|do you (?:happen to )?(?:know|(?:remember|recall)(?= (?:which|what|how|whether|if)))"
                      r"|(?:please )?find out(?= (?:whether|if|which|what|how))"
-                     # a textbook's imperative ('Find the kind of that vehicle.', 'Determine what kind of ...')
-                     r"|(?:please )?(?:find|determine|ascertain|work out|figure out)"
-                     r"(?= (?:the|whether|if|which|what|how) )"
                      # a translation's courtesy ('Would it be possible to know whether ...')
                      r"|(?:would|could|is) it be possible to (?:know|learn|find out|ask)"
                      r"(?= (?:whether|if|which|what|how|in))"
@@ -2095,8 +2092,8 @@ SIMILE_SPEEDS_SAID = SIMILE_SPEEDS | SIMILE_MOTIONS | {"slower", "faster", "quic
 def _set_off_simile(words: list[str], k: int) -> int | None:
     """Where a simile set off by a comma at words[k] ends (', like a tired rope team on the scree :', a fisherman's ',
     patient as an old angler ?', ', sure as the tide turns ?', ', snagged like a hook on a log ?', a vet's ', the way a
-    frightened rabbit freezes :'): the clause mark
-    after it, where the simile names no vehicle, colour, time or collision and asks nothing; else None. Its
+    frightened rabbit freezes :'): the clause mark after it, where the simile names no vehicle, colour, time or
+    collision and asks nothing; else None. Its
     likeness (the words before 'like' or 'as') says nothing either, or is a speed the question has said already ('...
     slower than the bus , slow as the river on a summer's day ?')."""
     opener = max((j for j in range(k + 1, min(len(words), k + 4)) if words[j] in SIMILE_OPENERS
