@@ -283,7 +283,7 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     if semi is not None and _remarked_after([*words[semi + 1:last], "."]) and \
             not {"which", "what", "how", "whether", "who", "tell", "say", "name", "give"} & set(words[semi + 1:last]):
         words = [*words[:semi], *(words[last:end] or ["."]), *words[semi + 1:last], *words[end:]]
-        end = asked = semi + 1
+        end, asked = semi + 1, (semi if words[semi] == "?" else None)   # the question's own mark, moved
     # ... or a description closing it after its last comma (an estate agent's ', a well-kept little runaround ?', ',
     # as befits such a quiet street ?'; not ', a car or a bus ?')
     comma = next((j for j in range(max(k, (asked or 0) - 14), asked or 0) if words[j] == "," and (
