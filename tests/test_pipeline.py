@@ -12,13 +12,14 @@ from dynclevr.stages import answer
 from dynclevr.stages.annotate import QUESTIONS_SCHEMA, QUESTIONS_VERSION
 
 SCENES = ("000000", "000001")
+CI_SPLIT = "[splits.ci]\nseed = 7\nscenes = 2\n[video]\nframes = 60\n"   # half the paper's 2 s: every stage, half the time
 
 
 @pytest.fixture(scope="module")
 def run(tmp_path_factory):
     root = tmp_path_factory.mktemp("pipeline")
     config = root / "ci.toml"
-    config.write_text("[splits.ci]\nseed = 7\nscenes = 2\n")
+    config.write_text(CI_SPLIT)
 
     def cli(*args):
         out = subprocess.run([sys.executable, "-m", "dynclevr.cli", *args, "--split", "ci", "--config", str(config),
@@ -105,7 +106,7 @@ def test_report_refuses_stale_or_missing_answers(run, tmp_path):
     data, _, _ = run
     shutil.copytree(data, tmp_path / "data")
     config = tmp_path / "fewer.toml"
-    config.write_text("[splits.ci]\nseed = 7\nscenes = 2\n[annotate]\nmax_per_family = 1\n")
+    config.write_text(CI_SPLIT + "[annotate]\nmax_per_family = 1\n")
 
     def cli(*args):
         return subprocess.run([sys.executable, "-m", "dynclevr.cli", *args, "--split", "ci", "--config", str(config),
@@ -214,7 +215,7 @@ def test_a_data_dir_of_the_older_layout_says_what_to_rerun_then_upgrades(run, tm
                                                         or n == ".lock"])
     _as_older_dynclevr_left_it(old / "ci")
     config = tmp_path / "ci.toml"
-    config.write_text("[splits.ci]\nseed = 7\nscenes = 2\n")
+    config.write_text(CI_SPLIT)
     opts = f"--data-dir {old} --config {config}"
 
     def cli(*args):

@@ -442,11 +442,13 @@ def test_particle_filter_keeps_the_hypothesis_of_an_unseen_impact():
 
 def test_collision_classifier_trains_from_a_split_and_loads(tmp_path):
     """`dynclevr train collisions` end to end on the tiny split: rows cached per video, weights and manifest that
-    load, held-out metrics at both tolerances; a second run reuses the rows and gives the same weights."""
+    load, held-out metrics at both tolerances; a second run reuses the rows and gives the same weights. The videos are
+    cut to 60 frames: the same path, half the parse."""
     from dynclevr.perception.collision_train import train_collisions
     from dynclevr.perception.collisions import CollisionModel
 
-    cfg = Config.load()
+    (tmp_path / "short.toml").write_text("[video]\nframes = 60\n")
+    cfg = Config.load(tmp_path / "short.toml")
     out = tmp_path / "weights"
     manifest = train_collisions(cfg, tmp_path / "data", cfg.split("tiny"), out, workers=1, echo=lambda *a: None)
     assert sorted(p.name for p in (tmp_path / "data" / "tiny" / "collision_rows").iterdir()) == \
