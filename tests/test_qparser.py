@@ -26,7 +26,7 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      ticket_fields_read, wagers_read)
+                                      speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5056,3 +5056,55 @@ def test_a_physicist_s_changed_initial_conditions_a_customs_officer_s_fragments_
     # moment to last' when its nearest reading is after it, nor a vehicle's state from the start to a factual one
     assert parser.parse_batch(["Should the truck have stopped?",
                                "gray dirtbike first pops in -- stationary, slow or fast?"]) == [None, None]
+
+
+def test_a_priest_s_addresses_a_count_s_similes_and_a_visitor_s_other_history_are_read():
+    parser = QuestionParser.load()
+    smote, entrance, history, guest, angels, pushing, tailor, offered, thanks = parser.parse_batch([
+        "And when the yellow fighter jet smote the green pickup, tell me, beloved, was the fighter jet going slower "
+        "than the pickup in that hour?",
+        "The red airliner makes its entrance at last, like a late guest at my midnight ball. At that first "
+        "appearance, is it static, slow or fast?",
+        "Consider a different history, earthling: the bus began at fast speed. In that history, would it hit the "
+        "blue tandem bicycle?",
+        "Suppose, dear guest, the brown cruiser had begun its journey slowly. Would it then have collided with the "
+        "cyan dirt bike?",
+        "At first, is the red fighter jet hovering up there, as though borne by angels?",
+        "Is the brown tandem bicycle's engine running at the beginning, pushing it ever faster?",
+        "Shortening the sleeve a whisker; if the brown motorbike had started out slow, would it have run into the "
+        "yellow one?",
+        "Static, slow or fast: which describes the cyan road bike at the very moment it strikes the bus?",
+        "At the moment of their collision, is the utility bike going faster than the grey double-decker? Thank you "
+        "for flying with us, and mind the overhead lockers."])
+    # (the first three were read wrong: at the start, at the start, and after the video)
+    assert smote[-3:] == ["unique", "get_frame", "slower_velocity"]
+    assert entrance[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert [history[3], guest[4], tailor[4]] == ["Counterfactual_moving_fast", "Counterfactual_moving_slow",
+                                                 "Counterfactual_moving_slow"]
+    assert angels == ["Objects", "filter_attributes[red]", "filter_attributes[fighter]", "unique", "start",
+                      "is_floating"]
+    assert pushing[-1] == "is_accelerating" and offered[-1] == "query_moving_velocity"
+    assert thanks[-1] == "faster_velocity"
+    # a world referred back to that no sentence describes is refused, not read as the video's future ('this tale' is
+    # the video itself); appearing before another vehicle stays an order no question asks
+    assert parser.parse_batch(["In that world, would the bus hit the blue tandem bicycle?",
+                               "Does the bus appear before the car?"]) == [None, None]
+    assert parser.parse("Good sir knight, did the yellow biplane and the brown city bus come to blows anywhere in "
+                        "this tale?")[0] == "Events"
+
+
+def test_the_speaker_s_own_clauses_are_read_only_where_a_word_would_refuse_the_question():
+    parser = QuestionParser.load()
+    know, ask = parser.analyse_batch([
+        "Something runs into the gray minivan, contestants, and I want to know: what kind of vehicle is it?",
+        "At this time, we'd like to ask: what colour is the thing that struck the bicycle?"])
+    assert know.program == ["Events", "Objects", "filter_attributes[gray]", "filter_attributes[minivan]", "unique",
+                            "get_all_col_partners", "unique", "query_attributes[shape]"]
+    assert know.read_as[0] == ("and I want to know", "nothing, the speaker's own words")
+    assert ask.program[-1] == "query_attributes[color]"
+    # a clause of the speaker's that names a direction, a vehicle or a person stays, and so the refusal
+    assert speaker_clauses_dropped("Which way is it heading at the start, so I label it right: left or right?",
+                                   {"so", "i", "label"}) is None
+    assert parser.parse("Is the bus fast, I wonder what the driver thinks?") is None
+    assert speaker_clauses_dropped("Is the bus fast? I keep wondering.", {"keep", "wondering"}) == (
+        "Is the bus fast?", "I keep wondering.")

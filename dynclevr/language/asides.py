@@ -15,6 +15,7 @@ import re
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
+from dynclevr.language.tokenize import tokenize
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLAUSE_CONJUNCTIONS,
                                      CLAUSE_MARKS, CLOSING_INTERJECTIONS, COMES_IN_WORDS, COMMA_INTERJECTIONS,
@@ -50,8 +51,11 @@ ADDRESSED = {"mummy", "mommy", "mum", "mom", "mama", "momma", "mamma", "daddy", 
              "troop", "scouts", "cubs", "houston",   # a scout leader's, an astronaut's
              "gentles", "guv", "squire", "maiden",   # a herald's ('good gentles'), a cabbie's, a knight's
              "duck", "captain",   # a dinner lady's ('my duck'), a starship computer's
-             "reader", "brother"}   # a scribe's ('O gentle reader,', 'Prithee, good brother,')
-ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair", "gentle", "o"}
+             "reader", "brother",   # a scribe's ('O gentle reader,', 'Prithee, good brother,')
+             "brothers", "sisters", "beloved", "guest", "guests",   # a priest's ('my brothers and sisters'), a count's
+             "earthling", "earthlings", "host"}   # a visitor's from elsewhere ('esteemed earthling', 'honoured host')
+ADDRESS_ADJECTIVES = {"old", "young", "dear", "my", "good", "little", "fair", "gentle", "o", "honoured", "honored",
+                      "esteemed", "noble", "worthy", "dearest"}
 # A letter's sign-off after its question ('? Many thanks, Nadia', '? Best regards', '? I would appreciate your
 # prediction.'): it asks nothing, and its name is an unknown word
 SIGN_OFFS = {"thanks", "thank", "many", "best", "regards", "kind", "kindest", "cheers", "sincerely", "warm", "warmest",
@@ -221,20 +225,45 @@ def _exclaimed(words: list[str], k: int) -> int:
     return end
 
 
+def _addressed(words: list[str]) -> list[range]:
+    """Where the question names whom it is asked, between commas, first or at the end ('is it fast , honey ?'), with
+    its adjectives (', old friend ,', a scribe's opening 'O gentle reader ,', a priest's ', my brothers and sisters
+    :')."""
+    return [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
+            and words[j + 1] in (",", "?", "!", ".", ":", ";") for n in (0, 1, 2, 3)
+            if (j - n == 0 or j - n > 0 and words[j - n - 1] == ",") and (
+                set(words[j - n:j]) <= ADDRESS_ADJECTIVES or "and" in words[j - n:j]
+                and set(words[j - n:j]) <= ADDRESS_ADJECTIVES | ADDRESSED | {"and"})]
+
+
+def _without(words: list[str], addressed: list[range]) -> list[str]:
+    dropped = {k for a in addressed for k in (a.start - 1, *a)}
+    return [w for j, w in enumerate(words) if j not in dropped]
+
+
+def addressees_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'suppose , dear guest , the cruiser had ...' -> 'suppose , the cruiser had ...': whom the question is asked,
+    said after its first words, before a condition's comma is read (so that what it imagines follows it); those in
+    its opening interjections are `interjections_dropped`'s, which they tell where the question starts. With the
+    addressees read as nothing, or the words as they are and ()."""
+    opening = next((k for k, w in enumerate(words) if w not in INTERJECTIONS | VOCATIVES | ADDRESSED
+                    | ADDRESS_ADJECTIVES | {",", "and"}), len(words))
+    addressed = [a for a in _addressed(words) if a.start > opening]
+    if not addressed:
+        return words, ()
+    return _without(words, addressed), \
+        ((" ".join(" ".join(words[j] for j in a) for a in addressed), "nothing, whom it is asked"),)
+
+
 def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """The question after the interjections it opens with ('so , um , does ...' -> 'does ...'), where a question
     follows them. With the interjections read as nothing, or the words as they are and ()."""
     particles = [j for j in range(1, len(words) - 1) if words[j] in PARTICLES and words[j + 1] in (",", "?", "!", ".")]
     said = tuple((words[j], "nothing, a particle") for j in particles)
     words = [w for j, w in enumerate(words) if j not in particles]
-    # (with its adjectives: ', old friend ,', ', young apprentice :', a scribe's opening 'O gentle reader ,')
-    addressed = [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
-                 and words[j + 1] in (",", "?", "!", ".", ":", ";") for n in (0, 1, 2)
-                 if (j - n == 0 or j - n > 0 and words[j - n - 1] == ",") and set(words[j - n:j]) <= ADDRESS_ADJECTIVES]
+    addressed = _addressed(words)
     addressees = " ".join(" ".join(words[j] for j in a) for a in addressed)
-    if addressed:   # between commas, or at the end: 'is it fast , honey ?'
-        dropped = {k for a in addressed for k in (a.start - 1, *a)}
-        words = [w for j, w in enumerate(words) if j not in dropped]
+    words = _without(words, addressed)
     # a caller's '(now) real quick ,' asks in haste, of no vehicle's speed
     # (and an Upper Midwesterner's 'real quick there ,')
     k = next((j + len(h) for j in (0, 1, 2) for h in HASTE if words[j:j + len(h)] == h
@@ -273,8 +302,11 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
         words, end = [*words[:doubt - 1], *words[end - 1:]], doubt
     asked = max((j for j in range(k, end) if words[j] == "?"), default=None)
     tail = words[asked + 1:end] if asked is not None else []
+    # (a thanks closes whatever it thanks for: '? Thank you for flying with us, and mind the overhead lockers.')
+    thanks = tail[:1] and tail[0] in THANKING and tail[-1:] in (["."], ["!"]) and not mentions(tail) and \
+        not {"?", "whether", "which", "what", "how", "if"} & set(tail)
     if tail and ((tail[0] in SIGN_OFFS or len(tail) <= 4 or len(tail) <= 6 and tail[-1] == ".") and _says_nothing(tail)
-                 or _grumbled(tail) or _remarked_after(tail)):
+                 or _grumbled(tail) or _remarked_after(tail) or thanks):
         end = asked + 1
     # ... or a remark after a semicolon closing a request ('Determine whether it is moving slowly at that instant; a
     # yes or no will suffice.')
@@ -1600,6 +1632,8 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             read.append((" ".join(words[:end + 1]), "nothing, a remark"))
             words = words[end + 1:]
             continue
+        if end is not None and "or" in heading and _offers_speed(heading):
+            break   # the answers offered first ('Static, slow or fast: which describes the bike when ...?')
         if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
         elif end is not None and words[end] == ":" and _headline(heading, words[end + 1:]):
@@ -1849,11 +1883,15 @@ def _remarked(pre: list[str], mark: str, after: list[str]) -> bool:
            "anything", "thing", "one"}) and not any(w.startswith(("accelerat", "speed", "float", "hover")) for w in pre)
 
 
+START_SAID = START_WORDS | START_ADJECTIVES | FILM_WORDS | {"as", "the", "very", "right", "early", "frames", "moments",
+                                                           "opens", "open", "first", "when"}
+
+
 def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'per the brief from leadership , what colour is ...' -> 'what colour is ...'. With the preamble read as
     nothing, or the words as they are and ()."""
     # (a reason's tag closes it: 'because slowing down solves everything , right ? if ...')
-    k = next((k for k in range(1, min(len(words) - 1, 16)) if words[k] in (":", "-") or words[k] == "," and (
+    k = next((k for k in range(1, min(len(words) - 1, 16)) if words[k] in (":", "-", ";") or words[k] == "," and (
         words[k + 1] in QUESTION_OPENERS or words[k + 1] == "which") or words[k] == "?" and words[k - 1] in TAGGING),
              None)
     if k is None:
@@ -1862,8 +1900,12 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     named = mentions(main) and (not {"it", "they"} & set(main) or not NAMING & set(pre))
     reason = any(pre[:len(r)] == r for r in REASONS) and named and not {"had", "?"} & set(pre)
     pre = pre[2 + (pre[2:3] == [","]):] if pre[:2] == ["going", "forward"] else pre   # an office's 'going forward'
-    # ('need a yes / no for the deck :', 'per the brief from leadership ,'; not 'in the final frame ,')
-    said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")]
+    # ('need a yes / no for the deck :', 'per the brief from leadership ,'; not 'in the final frame ,'; and the start
+    # a heading says where the question says it too: a forecaster's 'checking the barometer as the clip opens : what
+    # kind of vehicle is the one moving fast right at the start ?')
+    started = main[:1] != [] and main[0] not in ("and", "then") and bool(START_WORDS.intersection(main))
+    said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")
+            and not (started and w in START_SAID)]
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
@@ -1928,3 +1970,36 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
             return words, ()
         return main, ((" ".join(words[:k + 1]), "nothing, a remark about people"),)
     return words, ()
+
+
+# A clause of the speaker's own, about the speaker ('I want to know', 'so I label it right', 'for we must not forget
+# the humble sedan', 'I keep mixing them up lol'): read only where the parser would refuse the question for a word it
+# does not know, and only the clauses that hold such a word, open on the speaker, and say nothing of a vehicle, a
+# colour, a time, a motion, a collision or a person (`speaker_clauses_dropped`)
+SPEAKER = {"i", "we", "my", "our", "me", "us"}
+CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", "oh", "because", "cause", "cos", "yet",
+                "though", "although", "which", "that", "since"}
+CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+|\s[-—–]+)\s+)")
+
+
+def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
+    """'Something runs into the gray minivan , and I want to know : what kind of vehicle is it ?' -> 'Something runs
+    into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own that
+    hold a word of `unknown`, and those clauses; None where none is."""
+    parts = CLAUSE_BREAK.split(text)
+    clauses, marks = parts[::2], parts[1::2] + [""]
+    dropped = []
+    for k, clause in enumerate(clauses):
+        words = tokenize(clause)
+        opening = next((w for w in words if w not in CLAUSE_LINKS), "")
+        if not (set(words) & unknown) or opening not in SPEAKER or mentions(words) or _says_something(words) or \
+                set(words) & (set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"}):
+            continue
+        dropped.append(clause)
+        clauses[k] = ""
+        if "?" in marks[k] and k and clauses[k - 1]:   # the question's own mark stays with it
+            marks[k - 1] = marks[k - 1].rstrip().rstrip(",;:-—–") + "? "
+        marks[k] = ""
+    if not dropped or not any(c.strip() for c in clauses):
+        return None
+    return "".join(c + m for c, m in zip(clauses, marks)).strip(), " / ".join(dropped)

@@ -16,11 +16,11 @@ from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_continued, _video_end
 from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
                                      COPULAS, DETERMINERS, END_TIMES, END_WORDS, FILLERS, GENERIC, GENERIC_NOUNS,
-                                     HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS, LOOKS,
-                                     MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS, PEOPLE,
-                                     QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED, SPEAKER_AND_LISTENER,
-                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS, UNMOVED, UNNAMED,
-                                     YES_NO_OPENERS, _at, asks_impact)
+                                     HEADING_KEPT, IMAGINED_BACK, IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS,
+                                     LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS,
+                                     PEOPLE, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED,
+                                     SPEAKER_AND_LISTENER, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS,
+                                     UNMOVED, UNNAMED, YES_NO_OPENERS, _at, asks_impact)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -211,11 +211,6 @@ REGULAR_VERBS = ("start", "move", "travel", "float", "hover", "accelerate", "rem
                  "race", "idle", "wait", "rest", "drift", "coast")
 PARTICIPLES.update({form: v + ("d" if v.endswith("e") else "ed") for v in REGULAR_VERBS
                     for form in (v + "s", v + ("d" if v.endswith("e") else "ed"))})
-
-
-IMAGINED_BACK = tuple((p, d, n) for p in ("in", "within") for d in ("that", "this", "such", "the") for n in (
-    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate", "telling", "retelling",
-    "tale", "story", "ruling", "reality"))
 
 
 def _imagining_only(sentence: list[str]) -> bool:

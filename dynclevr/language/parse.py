@@ -41,6 +41,7 @@ from __future__ import annotations
 import io
 import json
 import pickle
+import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -50,14 +51,14 @@ import torch
 from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.asides import (addressed_as_named, asides_dropped, calls_read, corrections_dropped,
-                                      digressions_dropped, dislocated_as_asked, distractors_dropped,
-                                      examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
-                                      hedges_dropped, hooks_dropped, hypothesis_as_asked, interjections_dropped,
-                                      owners_dropped, person_remark_dropped, preamble_dropped, proof_as_asked,
-                                      prompt_dropped, radio_as_asked, ramble_dropped, requested_as_asked,
-                                      restatements_read, soothing_dropped, speaker_asides_dropped, ticket_fields_read,
-                                      wagers_read, word_given_dropped)
+from dynclevr.language.asides import (addressed_as_named, addressees_dropped, asides_dropped, calls_read,
+                                      corrections_dropped, digressions_dropped, dislocated_as_asked,
+                                      distractors_dropped, examination_as_asked, forecast_dropped, framing_dropped,
+                                      grumble_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
+                                      interjections_dropped, owners_dropped, person_remark_dropped, preamble_dropped,
+                                      prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
+                                      requested_as_asked, restatements_read, soothing_dropped, speaker_asides_dropped,
+                                      speaker_clauses_dropped, ticket_fields_read, wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -163,6 +164,14 @@ class Parse:
     reordered: str = ""      # the words as read, where a clause of time was put last (`time_clause_last`)
 
 
+def _unknown_named(reason: str) -> set[str]:
+    """The words a refusal names as unknown to the parser ("unknown words: 'i', 'want'", "... turns on 'crew', a word
+    the parser does not know")."""
+    if not (reason.startswith("unknown words: ") or "a word the parser does not know" in reason):
+        return set()
+    return set(re.findall(r"'([^']+)'", reason.split(", a word the parser does not know")[0]))
+
+
 class QuestionParser:
     def __init__(self, model: Ensemble, words: Vocab, programs: Vocab, params: QParserParams, shapes: set[str]):
         self.model = model.eval()
@@ -234,6 +243,17 @@ class QuestionParser:
         return [p.program for p in self.analyse_batch(texts)]
 
     def analyse_batch(self, texts: list[str]) -> list[Parse]:
+        parses = self._analysed(texts)
+        # a question refused for a word the parser does not know, read again without the clauses of the speaker's
+        # own that hold it ('..., and I want to know: what kind of vehicle is it?')
+        retries = {i: cut for i, (text, p) in enumerate(zip(texts, parses)) if p.program is None and
+                   (unknown := _unknown_named(p.reason)) and (cut := speaker_clauses_dropped(text, unknown))}
+        for (i, (_, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
+            if again.program:
+                parses[i] = replace(again, read_as=((dropped, "nothing, the speaker's own words"), *again.read_as))
+        return parses
+
+    def _analysed(self, texts: list[str]) -> list[Parse]:
         # Each question is read as said and, where it opens with a clause of time, with the clause put last
         # (`time_clause_last`); where the two readings differ and the clause names its time, the reading asking at
         # that time wins (`clause_time`), else the one the decoder is surer of, the question as said on a tie.
@@ -364,7 +384,8 @@ class QuestionParser:
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
         words, fragments = fragments_joined(words)
-        named = shared + named + fragments
+        words, addressees = addressees_dropped(words)
+        named = shared + named + fragments + addressees
         words, looked = described_as_named(words)
         words, attributed = attributes_as_named(words)
         words, clause = colour_clause_as_named(words)

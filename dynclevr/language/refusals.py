@@ -30,11 +30,11 @@ from dynclevr.language.references import OBJECT_WORDS
 from dynclevr.language.times import FILM_WORDS, _video_end
 from dynclevr.language.words import (ACCELERATION_SAID, ASKING, ASKING_FOR, ATTRIBUTE_SAID, AUXILIARIES, CLASS_NOUNS,
                                      COMES_IN_WORDS, COMPARISONS, CONDITION_OPENERS, COPULAS, DEFINITE, DETERMINERS,
-                                     END_TIMES, ENGINE_WORDS, GENERIC_NOUNS, IMPACT_STEMS, INDEFINITES, LANDING,
-                                     LATER_TIMES, MOTION_KINDS, MOTION_WORDS, NEGATIONS, NOUNS_SAID, NUMBERS,
-                                     OTHER_VEHICLES, PARTNER_SAID, PEOPLE, PLURALS, REST_WORDS, ROUGHLY,
-                                     SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID, VIEWER, YES_NO_OPENERS,
-                                     _at, _head, asks_impact)
+                                     END_TIMES, ENGINE_WORDS, GENERIC_NOUNS, IMAGINED_BACK, IMAGINED_SAID, IMAGINING,
+                                     IMPACT_STEMS, INDEFINITES, LANDING, LATER_TIMES, MOTION_KINDS, MOTION_WORDS,
+                                     NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_VEHICLES, PARTNER_SAID, PEOPLE, PLURALS,
+                                     REST_WORDS, ROUGHLY, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, STATIC_SAID,
+                                     VIEWER, YES_NO_OPENERS, _at, _head, asks_impact)
 
 # where a noun phrase names a vehicle: the subject of a yes/no question ('does the zamboni hit ...'), and what a
 # collision's verb names last ('... made contact with the jumbo?')
@@ -215,7 +215,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
         return "the question asks whether a vehicle loses control, which no question here asks"
     order = next((" ".join(said[k:k + 2]) for k, w in enumerate(said) if w in COMES_IN_WORDS and
                   said[k + 1:k + 2] in (["before"], ["after"], ["first"], ["last"]) and not (
-                      said[k + 1] == "after" and FILM_WORDS & set(said[k + 2:k + 4]))), None)
+                      said[k + 1] == "after" and FILM_WORDS & set(said[k + 2:k + 4])
+                      or said[k + 1] == "before" and said[k + 2:k + 3] in (["us"], ["me"], ["you"], ["our"], ["my"],
+                                                                            ["your"]))), None)   # in sight
     if order:
         return (f"the question asks the order in which vehicles appear ('{order}'), which no question here asks (they "
                 "ask how fast a vehicle is moving when it comes into view)")
@@ -595,6 +597,12 @@ def imagined_otherwise(words: list[str], read: list[str]) -> str:
     been static at the end'), two changes at once ('if the sedan had been fast and the bus parked' was read as the
     sedan's alone) or the video changed ('if the video were longer' as the future). `words` as said, `read` with
     typos fixed ('when the video begisn' is the start)."""
+    back = _at(words, IMAGINED_BACK)
+    if back and back[1][1] in ("that", "such") and not (IMAGINED_SAID | IMAGINING | {"if", "had", "were"}).intersection(
+            words) and \
+            not _video_end(words):   # ('suppose the video is cut off midway ; in that case , ...')
+        return (f"the question asks about an imagined world ('{' '.join(back[1])}') it does not describe: say the "
+                "change ('if the bus had been static from the start, would ...')")
     if any(w == "if" and words[k + 1] == "the" and words[k + 2] in FILM_WORDS and words[k + 3:k + 4] and
            words[k + 3] in ("were", "was", "had") for k, w in enumerate(words[:-3])):   # not 'if the video went on'
         return "the question imagines the video itself otherwise, which no question here does"

@@ -248,9 +248,13 @@ def request_after_setting(words: list[str]) -> list[str]:
             if rest[:1] in (["whether"], ["if"]) and would and len(rest) > would + 2:
                 asked = ["would", *rest[1:would], *rest[would + 1:]]
                 return words[:k + 1] + asked[:-1] + ["?" if asked[-1] in (".", "?") else asked[-1]]
-        # (a scene set: a vehicle or the video named, and nothing asked or imagined in it)
+        # (a scene set: a vehicle or the video named, and nothing asked or imagined in it; not a clause of time
+        # whose moment the question asks at and does not say again: 'and when the jet smote the pickup , tell me ,
+        # was ...')
         if words[k] not in (",", ";", ":", "-", ".") or "?" in words[:k] or \
-                not (OBJECT_WORDS | FILM_WORDS) & set(words[:k]) or SUPPOSING & set(words[:k]):
+                not (OBJECT_WORDS | FILM_WORDS) & set(words[:k]) or SUPPOSING & set(words[:k]) or \
+                next((w for w in words[:k] if w not in ("and", "so", "but", "now")), "") in CLAUSE_CONJUNCTIONS \
+                and not asks_impact(words[k + 1:]):
             continue
         said = " ".join(words[k + 1 + (words[k + 1] in ("and", "so", "but")):]) + " "
         # (not a closing address: '... than the motorbike , tell me , old friend ?')
@@ -631,6 +635,13 @@ IDIOMS = phrase_table({
     **{(p, *the, "frames", *that, *are, "left"): ("after", "the", "video", "ends") for p in ("in", "during", "over")
        for the in (("the",), ("whatever",), ("what", "ever")) for that in ((), ("that",), ("which",))
        for are in (("are",), ("'", "s"), ("is",))},
+    # 'that first appearance' of a vehicle the sentence before brought in ('The airliner makes its entrance at last.
+    # At that first appearance, is it ...?'): its own, not the start's
+    **{(p, "that", "first", n): (p, "its", "first", n) for p in ("at", "on", "upon", "in")
+       for n in ("appearance", "entrance", "arrival")},
+    # what an engine does, said again after it ('is its engine running at the start , pushing it ever faster ?')
+    **{(",", v, "it", *e, "faster"): () for v in ("pushing", "urging", "driving", "propelling", "spurring")
+       for e in ((), ("ever",), ("even",), ("still",))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
     ("pray", "tell", ","): (), ("pray", "tell"): (), ("party", "to"): ("involved", "in"),
     **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
@@ -2086,6 +2097,7 @@ _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "
 SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames", "video", "clip"}
 # ('from the start , like ...', 'at the start of the video , like a runaway balloon :')
 SIMILE_OPENERS = {"like", "as"}
+AFLOAT_RESTATED = {"up", "aloft", "floating", "hovering", "drifting"}
 SIMILE_SPEEDS_SAID = SIMILE_SPEEDS | SIMILE_MOTIONS | {"slower", "faster", "quicker", "stopped"}
 
 
@@ -2101,12 +2113,16 @@ def _set_off_simile(words: list[str], k: int) -> int | None:
     if words[k] != "," or opener is None:
         return None
     likeness = [w for w in words[k + 1:opener] if w not in ("as", "just", "same", "the")]
-    if words[opener] == "as" and not words[k + 1:opener] or not all(w.isalpha() for w in likeness) or any(
-            w in SIMILE_SPEEDS and not SIMILE_SPEEDS_SAID.intersection(words[:k]) for w in likeness) or \
-            _says_something([w for w in likeness if w not in SIMILE_SPEEDS]):
+    # ('as though' and 'as if' open one alone: ', as though borne by angels ?'; a likeness of height restates a
+    # floating the question has said: '... floats in the air , lifted up like a hymn ?')
+    alone = words[opener:opener + 2] in (["as", "though"], ["as", "if"])
+    afloat = any(w.startswith(("float", "hover")) or w == "air" for w in words[:k])
+    if words[opener] == "as" and not words[k + 1:opener] and not alone or not all(w.isalpha() for w in likeness) or \
+            any(w in SIMILE_SPEEDS and not SIMILE_SPEEDS_SAID.intersection(words[:k]) for w in likeness) or \
+            _says_something([w for w in likeness if w not in SIMILE_SPEEDS and not (afloat and w in AFLOAT_RESTATED)]):
         return None
     end = next((e for e in range(opener + 1, min(len(words), opener + 12)) if words[e] in CLAUSE_MARKS), None)
-    said = words[opener + 1:end] if end else []
+    said = words[opener + 1 + alone:end] if end else []
     # (not a speed offered among others: 'still as a stone , slow as a cloud , or fast as a star ?'; nor a gloss
     # without an article: ', like speeding up with the engine on ?')
     if SIMILE_SPEEDS.intersection(likeness) and "or" in words[end:end + 3] or {"or", "and"} & set(likeness) or \

@@ -121,6 +121,11 @@ QUERY_NOUNS = MOTION_NOUNS | ATTRIBUTE_NOUNS
 
 
 IMAGINING = {"picture", "envision", "envisage", "visualise", "visualize"}   # said first: 'imagine' (not 'the picture')
+# what a question says of a world imagined before it ('In that world, does it ...?', 'in such a case')
+IMAGINED_BACK = tuple((p, *d, n) for p in ("in", "within") for d in (("that",), ("this",), ("such",), ("such", "a"),
+                                                                      ("the",)) for n in (
+    "world", "case", "scenario", "version", "timeline", "universe", "situation", "alternate", "telling", "retelling",
+    "tale", "story", "ruling", "reality", "history", "past"))
 
 
 # Comparisons of speed: offered as a choice ('is X faster or slower than Y?') they ask which, which no family answers
