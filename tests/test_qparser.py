@@ -5108,3 +5108,26 @@ def test_the_speaker_s_own_clauses_are_read_only_where_a_word_would_refuse_the_q
     assert parser.parse("Is the bus fast, I wonder what the driver thinks?") is None
     assert speaker_clauses_dropped("Is the bus fast? I keep wondering.", {"keep", "wondering"}) == (
         "Is the bus fast?", "I keep wondering.")
+
+
+def test_the_part_not_seen_a_state_left_in_and_a_vehicle_s_victim_are_read():
+    parser = QuestionParser.load()
+    unseen, shown, left, foot, ugh, victim, debut = parser.parse_batch([
+        "Vitals are holding. Now, the yellow airliner: does it hit anything in the frames we haven't seen?",
+        "Is it to be anticipated that the red aeroplane will hit anything in the part of the video not shown?",
+        "Had the fighter jet been left hovering in the air from the start, would the green scooter have been hit by "
+        "it?",
+        "Right at the start, is the red sedan on the back foot, going slower than the red school bus?",
+        "Ugh, right, the brown SUV at the beginning: is it static, moving slowly, or moving fast?",
+        "The gray utility bike hits something, darling, so spill: what type of vehicle is its victim?",
+        "The biplane's debut: is it stationary, slow or fast when it first appears?"])
+    assert unseen[0] == shown[0] == "futureEvents"
+    assert left[3] == "Counterfactual_floating" and foot[-2:] == ["start", "slower_velocity"]
+    assert ugh == ["Objects", "filter_attributes[brown]", "filter_attributes[suv]", "unique", "start",
+                   "query_moving_velocity"]
+    assert victim == ["Events", "Objects", "filter_attributes[gray]", "filter_attributes[utility_bike]", "unique",
+                      "get_all_col_partners", "unique", "query_attributes[shape]"]
+    assert debut[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # the part seen stays the video's own time, and 'right' among directions stays a direction
+    assert parser.parse("Does the bus hit the car in the part we have seen?")[0] == "Events"
+    assert parser.parse("Right, is the bus moving left at the start?") is None

@@ -357,11 +357,13 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     closing = said + ((addressees, "nothing, whom it is asked"),) * bool(addressed) + closing
     # (a speaker's 'um so' before a vehicle said first: 'um so the one that's going really fast ... what kind of ...';
     # and whom it is asked after the interjection: 'Right , troop , the cruiser crashes into something : ...'; and a
-    # Briton's 'Right ,' before anything but another direction: 'Right , anywhere in the video , is there ...')
+    # Briton's 'Right ,' before anything but another direction, after another interjection too: 'Right , anywhere in
+    # the video , is there ...', 'Ugh , right , the brown SUV at the beginning : is it ...')
     if k == 0 or k == len(words) or words[k] not in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS \
             | CONDITION_OPENERS | {"tell", "let", "say"} and not ADDRESSED & set(words[:k]) and \
             not any(a.start - 1 < k for a in addressed) and \
-            not (words[:2] == ["right", ","] and words[k] not in DIRECTION_WORDS | {"or", "and"}
+            not (any(words[j] == "right" and words[j + 1] in (",", "-") for j in range(k))
+                 and words[k] not in DIRECTION_WORDS | {"or", "and"}
                  and QUESTION_OPENERS.intersection(words[k:])) and \
             not (words[k] == "the" and set(words[:k]) <= FILLERS | {"so", "well"} and FILLERS & set(words[:k])):
         return words[:end], closing

@@ -578,6 +578,12 @@ def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 _START = ("at", "the", "start")
 STAYED = ("stayed", "remained", "kept", "stood")
 STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
+UNSEEN_PARTS = ("part", "frames", "bit", "footage", "portion", "stretch", "section", "rest")
+UNSEEN = (*((who, *neg) for who in ("we", "you", "they") for neg in (
+    ("never", "get", "to", "see"), ("have", "not", "seen"), ("do", "not", "see"), ("never", "see"), ("did", "not", "see"),
+    ("will", "not", "see"), ("can", "not", "see"), ("have", "not", "been", "shown"), ("were", "not", "shown"))),
+          *((who, "have", "not", "shown", "us") for who in ("they", "you")), ("not", "shown"), ("not", "yet", "shown"),
+          ("never", "shown"), ("unseen",))
 IDIOMS = phrase_table({
     **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
                            ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
@@ -642,6 +648,17 @@ IDIOMS = phrase_table({
     # what an engine does, said again after it ('is its engine running at the start , pushing it ever faster ?')
     **{(",", v, "it", *e, "faster"): () for v in ("pushing", "urging", "driving", "propelling", "spurring")
        for e in ((), ("ever",), ("even",), ("still",))},
+    # a state a vehicle was left in is that state ('had the biplane been left floating from the start'), and 'on the
+    # back foot' before the slower speed it says ('is the red sedan on the back foot , going slower than ...')
+    **{(b, "left", st): (b, st) for b in ("been", "be", "was", "were", "is", "being")
+       for st in ("floating", "hovering", "static", "standing", "parked", "still", "stationary", "motionless",
+                  "sitting", "idle")},
+    ("on", "the", "back", "foot", ","): (),
+    # what a vehicle hit, said as its victim, its target or its partner in the crash ('what type of vehicle is its
+    # unfortunate victim?' after a sentence that says it hits something)
+    **{("its", *adj, n, *tail): ("the", "thing", "it", "hit") for adj in ((), ("unfortunate",), ("unlucky",),
+                                                                          ("poor",), ("hapless",))
+       for n in ("victim", "target", "partner") for tail in ((), ("in", "the", "crash"), ("in", "the", "collision"))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
     ("pray", "tell", ","): (), ("pray", "tell"): (), ("party", "to"): ("involved", "in"),
     **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
@@ -658,6 +675,12 @@ IDIOMS = phrase_table({
        for part in ("bit", "part", "moment", "stretch") for that in ((), ("that",)) for who in ("we", "you")
        for seen in (("seen",), ("watched",), ("been", "shown"))},
     **{("after", "this", part): ("after", "the", "video", "ends") for part in ("bit", "part")},
+    # ... and the part not seen is after it ('in the frames we haven't seen yet', 'the footage they haven't shown us',
+    # 'in the part we never get to see', 'in the part of the video not shown')
+    **{(*p, "the", part, *of, *that, *unseen, *yet): ("after", "the", "video", "ends")
+       for p in ((), ("in",), ("during",), ("over",)) for part in UNSEEN_PARTS
+       for of in ((), ("of", "the", "video"), ("of", "the", "clip"), ("of", "the", "footage")) for that in ((), ("that",))
+       for unseen in UNSEEN for yet in ((), ("yet",))},
     **{(d, "guy"): (d, "one") for d in ("this", "that")},
     **{(c, "up", *p, "speed"): ("accelerating",) for c in ("cranking", "ramping", "winding", "revving", "scaling",
                                                             "stepping", "amping", "jacking", "dialing", "dialling")

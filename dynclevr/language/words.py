@@ -31,6 +31,8 @@ INTERJECTIONS = {"so", "um", "umm", "uh", "uhm", "er", "erm", "hmm", "hm", "well
                  "gyatt", "bruh", "skibidi",
                  # and a showman's ('Wowee, what a smash, ...')
                  "wow", "wowee", "whoa", "gosh", "golly", "yikes", "jeez",
+                 # and a weary viewer's ('Ugh, right, the brown SUV at the beginning: ...')
+                 "ugh", "argh", "meh",
                  # a cab driver's horn, a New Yorker's 'nu' and 'oy'
                  "honk", "beep", "nu", "oy", "oi", "shh", "shhh", "psst"} | CHAT
 COMMA_INTERJECTIONS = {"right", "now", "like"}
