@@ -117,7 +117,7 @@ def rendered(tmp_path_factory):
     """One rendered, annotated scene: data dir, config, runner."""
     root = tmp_path_factory.mktemp("baselines")
     user = root / "bl.toml"
-    user.write_text("[splits.bl]\nseed = 7\nscenes = 1\n")
+    user.write_text("[splits.bl]\nseed = 7\nscenes = 1\n[video]\nframes = 60\n")   # half the paper's 2 s: half the parse
     cfg = Config.load(user)
     data = root / "full"
     r = Runner(cfg, cfg.split("bl"), data, echo=lambda *a: None)
@@ -144,7 +144,7 @@ def _video_only(src_data, dst_data):
 def test_per_frame_parse_reads_only_the_video(rendered, tmp_path):
     data, cfg, _ = rendered
     pf = _per_frame_cfg()
-    pf.data["splits"] = cfg.data["splits"]
+    pf.data["splits"], pf.data["video"] = cfg.data["splits"], cfg.data["video"]
     Runner(pf, pf.split("bl"), data, echo=lambda *a: None).run("parse-scene", [0])
     expected = (data / "bl" / "parsed-perframe" / "000000.mcap").read_bytes()
     alone = tmp_path / "alone"
