@@ -7,15 +7,6 @@ from dynclevr.camera import Camera
 from dynclevr.scene import Collision, Scene4D, SceneObject
 from dynclevr.video import CALIBRATION, IMAGE, POSE, TF
 
-# The longest files first: `make test` hands whole files to its two workers in collection order, and the
-# question-parser file (minutes on one worker) collected late left the other worker idle at the end.
-FIRST = ("test_qparser.py", "test_pipeline.py", "test_install.py", "test_tracker.py")
-
-
-def pytest_collection_modifyitems(items):
-    rank = {name: k for k, name in enumerate(FIRST)}
-    items.sort(key=lambda item: rank.get(item.path.name, len(FIRST)))   # stable: each file keeps its own order
-
 
 @pytest.fixture
 def tiny_scene() -> Scene4D:
