@@ -26,7 +26,7 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      speaker_clauses_dropped, ticket_fields_read, wagers_read)
+                                      in_verse, speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5131,3 +5131,30 @@ def test_the_part_not_seen_a_state_left_in_and_a_vehicle_s_victim_are_read():
     # the part seen stays the video's own time, and 'right' among directions stays a direction
     assert parser.parse("Does the bus hit the car in the part we have seen?")[0] == "Events"
     assert parser.parse("Right, is the bus moving left at the start?") is None
+
+
+def test_a_limerick_s_lines_a_quiz_host_s_stakes_and_a_monk_s_unseen_time_are_read():
+    parser = QuestionParser.load()
+    limerick, world, points, audience, breath, unseen, blink = parser.analyse_batch([
+        "When the clip has just started to hum, / There's one with its engine on, vrum! / It is gaining in speed, / "
+        "Growing faster, agreed; / Now, which sort of vehicle is that one, chum?",
+        "In a world where the red mountain bike had started off fast... would it have run into the cyan dirt bike? "
+        "Oh, I love this one!",
+        "Contestant, for double points: does the brown pickup collide with anything at all during the video?",
+        "Something's hovering up there in the opening moments! Can you tell our studio audience what colour that "
+        "floating vehicle is?",
+        "Imagine, just for a breath, that the cruiser had been resting in stillness from the start... would it then "
+        "have bumped into the purple car?",
+        "After the frames we have been shown, in the time not yet seen, will the blue bus be in a collision?",
+        "Here's a brown one and a red aeroplane. At the very first blink, is the brown one going faster than that red "
+        "aeroplane?"])
+    # the verse's line breaks read as spaces, and its rhyme's filler ('vrum!', 'agreed;') as nothing
+    assert limerick.program == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert limerick.read_as[0] == ("vrum / agreed", "nothing, a verse's filler")
+    assert world.program[4] == "Counterfactual_moving_fast" and breath.program[3] == "Counterfactual_static"
+    assert points.program[0] == "Events" and audience.program[-1] == "query_attributes[color]"
+    assert unseen.program[0] == "futureEvents" and blink.program[-2:] == ["start", "faster_velocity"]
+    # a slash between answers or a form's fields is no line of verse
+    assert not in_verse("Item: purple SUV / When: beginning / Record: direction it is heading")
+    assert not in_verse("Choose one (front / back / left / right / up / down): Which way is the bus moving?")
+    assert parser.parse("Q11) Does the blue chopper hit anything during the video? Yes / No")[0] == "Events"

@@ -1984,17 +1984,40 @@ CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", 
 CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+|\s[-—–]+)\s+)")
 
 
+# A question written as verse, its line breaks written ' / ' ('A cyan car, one fine day, / Hit the brown one, oh,
+# what a fray! / At the instant they met, / ...'): four lines or more of three words or more, each break after a mark
+# or before a capital (so that 'yes / no', 'front / back / left' and 'Item: SUV / When: start' stay as written)
+VERSE_BREAK = re.compile(r"(?<=[,;:.!?…])\s+/\s+|\s+/\s+(?=[A-Z\"'(])")
+VERSE_CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+\s+/|\s/)\s+|(?:[,;:.!?…]+|\s[-—–]+)\s+)")
+
+
+def in_verse(text: str) -> bool:
+    lines = re.split(r"\s+/\s+", text)
+    return len(lines) >= 4 and len(VERSE_BREAK.findall(text)) == len(lines) - 1 and "=" not in text and \
+        all(len(line.split()) >= 3 for line in lines)
+
+
+def verse_joined(text: str) -> str:
+    """A question in verse as one run of prose: its line breaks as spaces (each line's own mark kept)."""
+    return VERSE_BREAK.sub(" ", text) if in_verse(text) else text
+
+
 def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
     """'Something runs into the gray minivan , and I want to know : what kind of vehicle is it ?' -> 'Something runs
     into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own that
-    hold a word of `unknown`, and those clauses; None where none is."""
-    parts = CLAUSE_BREAK.split(text)
-    clauses, marks = parts[::2], parts[1::2] + [""]
+    hold a word of `unknown`, and those clauses; None where none is. In verse a clause is also a line, and any clause
+    may be the rhyme's filler ('oh, what a fray!', 'with some pluck?'), whoever it opens on."""
+    verse = in_verse(text)
+    parts = (VERSE_CLAUSE_BREAK if verse else CLAUSE_BREAK).split(text)
+    clauses, marks = parts[::2], [m.replace("/", "").rstrip() + " " for m in parts[1::2]] + [""]
     dropped = []
     for k, clause in enumerate(clauses):
         words = tokenize(clause)
         opening = next((w for w in words if w not in CLAUSE_LINKS), "")
-        if not (set(words) & unknown) or opening not in SPEAKER or mentions(words) or _says_something(words) or \
+        if opening == "let" and words[words.index("let") + 1:][:2] in (["'", "s"], ["us"]):   # 'Let's see if ...'
+            opening = "us"
+        if not (set(words) & unknown) or not verse and opening not in SPEAKER or mentions(words) or \
+                _says_something(words) or \
                 set(words) & (set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"}):
             continue
         dropped.append(clause)

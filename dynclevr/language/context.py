@@ -32,6 +32,9 @@ CONTEXT_OPENERS = {"so", "ok", "okay", "and", "now", "but", "well", "alright", "
 CONDITIONS_SAID = {("what", "if"): ("if",), ("let", "'", "s", "say"): ("suppose",), ("lets", "say"): ("suppose",),
                    ("say",): ("suppose",), ("hypothetically", ":"): ("suppose",), ("hypothetically", ","): ("suppose",),
                    ("hypothetically",): ("suppose",), ("consider",): ("suppose",), ("think",): ("suppose",),
+                   **{("in", a, world, *where): ("if",) for a in ("a", "another")
+                      for world in ("world", "version", "timeline", "scenario", "universe", "reality")
+                      for where in (("where",), ("in", "which"))},
                    **{(w,): (w,) for w in ("suppose", "supposing", "imagine", "assume", "assuming", "pretend", "if",
                                            "picture", "envision", "envisage", "visualise", "visualize")}}
 WHETHER = {"tell", "know", "see", "sure", "wonder", "wondering", "check", "ask", "asking", "unsure", "clear", "say"}

@@ -58,7 +58,8 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       interjections_dropped, owners_dropped, person_remark_dropped, preamble_dropped,
                                       prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
                                       requested_as_asked, restatements_read, soothing_dropped, speaker_asides_dropped,
-                                      speaker_clauses_dropped, ticket_fields_read, wagers_read, word_given_dropped)
+                                      in_verse, speaker_clauses_dropped, ticket_fields_read, verse_joined,
+                                      wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -250,7 +251,8 @@ class QuestionParser:
                    (unknown := _unknown_named(p.reason)) and (cut := speaker_clauses_dropped(text, unknown))}
         for (i, (_, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
             if again.program:
-                parses[i] = replace(again, read_as=((dropped, "nothing, the speaker's own words"), *again.read_as))
+                said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
+                parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
         return parses
 
     def _analysed(self, texts: list[str]) -> list[Parse]:
@@ -332,7 +334,7 @@ class QuestionParser:
         be parsed; the words read as others; and the words as the rules left them, before any was read as another."""
         if not isinstance(text, str) or not text.strip():
             return [], "empty question", (), []
-        text, coded = code_as_said(text)
+        text, coded = code_as_said(verse_joined(text))
         words = tokenize(text)
         if not words:
             return [], "empty question", (), []

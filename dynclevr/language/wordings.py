@@ -578,12 +578,12 @@ def heading_as_direction(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
 _START = ("at", "the", "start")
 STAYED = ("stayed", "remained", "kept", "stood")
 STILL = ("still", "put", "stationary", "motionless", "parked", "stopped")
-UNSEEN_PARTS = ("part", "frames", "bit", "footage", "portion", "stretch", "section", "rest")
+UNSEEN_PARTS = ("part", "frames", "bit", "footage", "portion", "stretch", "section", "rest", "time")
 UNSEEN = (*((who, *neg) for who in ("we", "you", "they") for neg in (
     ("never", "get", "to", "see"), ("have", "not", "seen"), ("do", "not", "see"), ("never", "see"), ("did", "not", "see"),
     ("will", "not", "see"), ("can", "not", "see"), ("have", "not", "been", "shown"), ("were", "not", "shown"))),
           *((who, "have", "not", "shown", "us") for who in ("they", "you")), ("not", "shown"), ("not", "yet", "shown"),
-          ("never", "shown"), ("unseen",))
+          ("not", "seen"), ("not", "yet", "seen"), ("never", "shown"), ("unseen",))
 IDIOMS = phrase_table({
     **{p: _START for p in (("right", "off", "the", "bat"), ("off", "the", "bat"), ("from", "the", "get", "-", "go"),
                            ("from", "the", "get", "go"), ("from", "the", "word", "go"), ("out", "of", "the", "gate"),
@@ -1285,6 +1285,9 @@ IDIOMS = phrase_table({
     **{(got, verb): (past,) for got in ("got", "get") for verb, past in (("collide", "collided"),
                                                                           ("crash", "crashed"), ("bump", "bumped"))},
     **{(p, "the", "first", "moment"): _START for p in ("in", "at")},
+    # ... and a verse's first blink (WordNet reads 'blinking' as 'crashing')
+    **{(p, "the", *very, "first", "blink"): _START for p in ("in", "at") for very in ((), ("very",))},
+    **{("for", "a", b): ("for", "a", "moment") for b in ("breath", "heartbeat", "blink")},
     # a learner's 'is stop' ('the dirtbike is stop already?')
     **{(be, "stop"): (be, "static") for be in ("is", "was", "are", "were")},
     **{(make, its, *grand, "entrance"): (come, "into", "view") for make, come in (("makes", "comes"), ("made", "came"),
@@ -1791,7 +1794,7 @@ IDIOMS = phrase_table({
     **{("just", "to", c, "on", "my", "end", ","): () for c in ("confirm", "check", "verify")},
     **{("may", "i", v): ("tell", "me") for v in ("confirm", "ask", "check", "verify")},
     **{(c, "you", "confirm", "the"): ("tell", "me", "the") for c in ("could", "can", "would")},
-    **{(*c, "ladies", "and", g, p): (p,) * (c != () and p == ":") for c in ((), (",",))
+    **{(*c, "ladies", "and", g, p): (p,) * (c != () and p in (":", "!")) for c in ((), (",",))
        for g in ("gentlemen", "gents") for p in (",", ":", "!")},
     **{("if", "i", "may", "have", "your", "attention", p): () for p in (",", ":")},
     # a teacher's 'can anyone tell me'; a controller's 'say again' (read as how often) and ', over?'; a preacher's
@@ -1810,6 +1813,12 @@ IDIOMS = phrase_table({
     **{(",", w, "we", t, "?"): ("?",) for w in ("do", "would") for t in ("think", "reckon", "know", "say")},
     **{(q, s): (s,) for q in ("perfectly", "utterly") for s in ("still", "static", "stationary", "motionless")},
     **{("hang", "onto", "your", "hats", p): () for p in (":", ",", "!", ";")},
+    # a quiz host's stakes ('Contestant, for double points: does ...'), which no vehicle points
+    **{(*c, "for", *n, "points", p): () for c in ((",",), ()) for p in (":", ",", "!", ";")
+       for n in (("double",), ("triple",), ("bonus",), ("extra",), ("all", "the"), ("the", "bonus"))},
+    # ... and whom the answer is told ('Can you tell our studio audience what colour ...?')
+    **{(tell, our, *studio, audience): (tell, "me") for tell in ("tell", "show") for our in ("our", "the")
+       for studio in ((), ("studio",), ("lovely",), ("home",)) for audience in ("audience", "viewers", "listeners")},
     # a children's presenter's 'boys and girls' and '? What do you think?'; a jazz host's 'cool cats' (read as 'car');
     # a soap narrator's 'Previously on 'Fast Hearts':'
     **{(",", "boys", "and", "girls", p): (p,) for p in (",", "?", ":", "!")}, ("boys", "and", "girls", ","): (),
