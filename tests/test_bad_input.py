@@ -255,6 +255,15 @@ def _children(pid: int) -> list[int]:
     return [int(p) for p in out.split()]
 
 
+def _descendants(pid: int) -> list[int]:
+    """The process's children and theirs: the pool's workers are the fork server's, which is the main process's."""
+    return [d for c in _children(pid) for d in (c, *_descendants(c))]
+
+
+def _workers(pid: int) -> list[int]:
+    return [w for c in _children(pid) if "forkserver" in Path(f"/proc/{c}/cmdline").read_text() for w in _children(c)]
+
+
 def _alive(pid: int) -> bool:
     try:
         state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
@@ -278,11 +287,11 @@ def _render_with_workers(data):
     main = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.time() + 60
-    while len(_children(main.pid)) < 2 and time.time() < deadline:
+    while len(_workers(main.pid)) < 2 and time.time() < deadline:
         time.sleep(0.1)
     try:
-        workers = _children(main.pid)
-        assert len(workers) >= 2, "the pool never started"
+        workers = _descendants(main.pid)
+        assert len(_workers(main.pid)) >= 2, "the pool never started"
         yield main, workers
     finally:
         with contextlib.suppress(ProcessLookupError):
@@ -312,7 +321,7 @@ def test_ctrl_c_stops_cleanly_and_says_how_to_go_on(data):
     with _render_with_workers(data) as (main, workers):
         os.killpg(main.pid, signal.SIGINT)   # what a terminal sends: the whole process group
         _, err = main.communicate(timeout=120)
-        assert main.returncode == 130
+        assert main.returncode == 130, err
         assert err.strip().splitlines()[-1].startswith("interrupted: render stopped after ") and \
             err.strip().endswith("run the same command again to go on"), err
         time.sleep(5)   # (multiprocessing's resource tracker leaves when it notices its parent is gone)
