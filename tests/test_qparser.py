@@ -5158,3 +5158,25 @@ def test_a_limerick_s_lines_a_quiz_host_s_stakes_and_a_monk_s_unseen_time_are_re
     assert not in_verse("Item: purple SUV / When: beginning / Record: direction it is heading")
     assert not in_verse("Choose one (front / back / left / right / up / down): Which way is the bus moving?")
     assert parser.parse("Q11) Does the blue chopper hit anything during the video? Yes / No")[0] == "Events"
+
+
+def test_a_game_master_s_creatures_a_tarot_reader_s_cards_and_an_email_s_reminders_are_read():
+    parser = QuestionParser.load()
+    creature, beast, card, circling, bother = parser.parse_batch([
+        "Does the yellow creature ever smash into the minivan at any moment in this encounter? Speak true, adventurers.",
+        "Gaze upon the field as the scene opens: one creature is moving fast. What colour is that speedy beast?",
+        "Draw the first card, the beginning: is the road bike moving faster than the blue bendy bus?",
+        "Circling back once more: was there contact between the cyan tandem bike and the brown bus anywhere in the "
+        "video? Cheers.",
+        "Sorry to bother you again (not really): what colour is the vehicle whose engine is turned on in the first "
+        "frames?"])
+    assert creature == ["Events", "Objects", "filter_attributes[yellow]", "unique", "filter_collision", "Objects",
+                        "filter_attributes[minivan]", "unique", "filter_collision", "exist"]
+    assert beast == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+    assert card == ["Objects", "filter_attributes[road_bike]", "unique", "Objects", "filter_attributes[blue]",
+                    "filter_attributes[articulated_bus]", "unique", "start", "faster_velocity"]
+    assert circling[0] == "Events" and bother[-1] == "query_attributes[color]"
+    # a card is no car ('Mark the gray aeroplane's card' had asked whether it hit a car)
+    assert parser.parse("Mark the gray aeroplane's card, querent: was it involved in a crash anywhere in the video?") \
+        != ["Events", "Objects", "filter_attributes[gray]", "filter_attributes[aeroplane]", "unique",
+            "filter_collision", "Objects", "filter_attributes[car]", "unique", "filter_collision", "exist"]

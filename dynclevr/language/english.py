@@ -20,6 +20,7 @@ from pathlib import Path
 from dynclevr import DynclevrError
 
 ZIPF = 3.5
+INFLECTIONS = {"s", "es", "ed", "ing", "er", "ers", "est", "ly", "n"}
 ENGLISH_FILE = Path(__file__).with_name("english.txt")
 HEADER = ("# Made by `python -m dynclevr.language.english` from wordfreq's English list and the question parser's typo "
           "fixing\n# (dynclevr/language/english.py says how); do not edit.\n")
@@ -51,8 +52,9 @@ def build(parser) -> list[str]:
     def same_word(w: str, fixed: str) -> bool:
         """Whether the fix is the word itself in another form ('buses' -> 'bus', 'comin' -> 'coming', 'blu' ->
         'blue', 'alot' -> 'a lot'), which the writer meant."""
-        return STEMMER.stemWord(w) == STEMMER.stemWord(fixed) or fixed.startswith(w) or w.startswith(fixed) or \
-            fixed.replace(" ", "") == w
+        rest = w[len(fixed):] if w.startswith(fixed) else None   # 'buses', but not 'card' ('car') or 'bust'
+        return STEMMER.stemWord(w) == STEMMER.stemWord(fixed) or fixed.startswith(w) or \
+            rest in INFLECTIONS or rest == "d" and fixed.endswith("e") or fixed.replace(" ", "") == w
 
     return sorted(w for w in top_n_list("en", 100_000)
                   if w.isascii() and w.isalpha() and len(w) >= 3 and zipf_frequency(w, "en") >= ZIPF

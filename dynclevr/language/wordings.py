@@ -1723,6 +1723,12 @@ IDIOMS = phrase_table({
     **{(*d, c, "on"): ("look", "at") for d in ((), ("double", "-")) for c in ("click", "drill", "deep", "dive")},
     **{(*d, c, "on"): ("looking", "at") for d in ((), ("double", "-")) for c in ("clicking", "drilling")},
     **{(c, "back", o): (look, "at") for c, look in (("circle", "look"), ("circling", "looking")) for o in ("on", "to")},
+    # ... and an email's reminders before the question ('Circling back once more: was there ...?', 'Reminding you
+    # once again:', 'Sorry to bother you again (not really):'), whose 'back' and 'again' ask no direction or count
+    **{(*j, *c, *again, *p): () for j in ((), ("just",)) for c in (("circling", "back"), ("reminding", "you"),
+                                                                 ("sorry", "to", "bother", "you"))
+       for again in ((), ("again",), ("once", "again"), ("once", "more"), ("one", "more", "time"))
+       for p in ((":",), (",",), ("(", "not", "really", ")", ":"))},
     **{(*w, "we", c, "back", *o): () for w in (("before",), ("when",), ("once",), ("as",)) for c in ("circle", "loop")
        for o in ((), ("on", "it"))},
     ("net", "-", "net", ","): (), ("net", "-", "net"): (), (",", "so", "we", "'", "re", "all", "aligned"): (),
