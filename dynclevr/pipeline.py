@@ -572,8 +572,10 @@ def _pool_context():
     the seconds that importing torch, scipy and the stage take in each spawned worker, over and over through a run
     of thirteen stage runs. Like spawn, a worker shares no state with this process. (The server is started again,
     the same way, if it has died.)"""
-    from multiprocessing import forkserver
+    from multiprocessing import forkserver, get_all_start_methods
 
+    if "forkserver" not in get_all_start_methods():   # (Windows)
+        return get_context("spawn")
     ctx = get_context("forkserver")
     ctx.set_forkserver_preload(["dynclevr.fork_server",
                                 *("dynclevr.stages." + name.replace("-", "_") for name in ORDER + BASELINES)])
