@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import torch
 
-from dynclevr import WEIGHTS_DIR
+from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError
 from dynclevr.config import Config, ConfigError
 from dynclevr.assets.catalogue import SUBTYPES
@@ -5151,3 +5151,52 @@ def test_a_game_master_s_creatures_a_tarot_reader_s_cards_and_an_email_s_reminde
     assert parser.parse("Mark the gray aeroplane's card, querent: was it involved in a crash anywhere in the video?") \
         != ["Events", "Objects", "filter_attributes[gray]", "filter_attributes[aeroplane]", "unique",
             "filter_collision", "Objects", "filter_attributes[car]", "unique", "filter_collision", "exist"]
+
+
+def test_an_address_a_simile_a_listing_s_heading_and_an_auditor_s_requests_are_read():
+    parser = QuestionParser.load()
+    lord, sign, heading, per, sought, asserted, should, along, completeness, line, entry = parser.analyse_batch([
+        "When it all kicks off, is the green one outrunnin' the gray road bike? Lord, reminds me of racin' Earl to "
+        "the good spot.",
+        "Aries, is the red mountain bike going to bump into the yellow dirtbike after the video ends?",
+        "Rich brown tones, sporty attitude: in the opening frames, is the brown sedan travelling faster than the "
+        "purple car?",
+        "Per our review of the footage, please confirm whether the blue airliner was party to any collision at all "
+        "during the video, yes or no.",
+        "We seek assurance that the purple fighter jet increases its speed right at the start; is that the case?",
+        "Management asserts that the red aeroplane is floating in the air in the first frames. Can you confirm the "
+        "assertion?",
+        "Should the cyan one have started out slow, would it have run into the red one?",
+        "If the biplane had been floating all along from the start, would it have crashed into the yellow dirt bike?",
+        "The cyan airliner sustained an impact; for completeness of the file, what colour is the object that smashed "
+        "into it?",
+        "Once the picture cuts off, will the gray chopper end up bumpin' into anything further down the line?",
+        "Upon the red motorbike's entry into view, what was its speed: static, slow or fast?"])
+    assert lord.program[-2:] == ["start", "faster_velocity"]
+    assert lord.read_as[0] == ("Lord", "nothing, the speaker's own words")
+    assert sign.program[0] == "futureEvents" and sign.read_as[0] == ("aries", "nothing, a digression")
+    assert heading.program == ["Objects", "filter_attributes[brown]", "filter_attributes[sedan]", "unique", "Objects",
+                               "filter_attributes[purple]", "filter_attributes[car]", "unique", "start",
+                               "faster_velocity"]
+    assert per.program == ["Events", "Objects", "filter_attributes[blue]", "filter_attributes[airliner]", "unique",
+                           "filter_collision", "exist"]
+    assert sought.program[-2:] == ["start", "is_accelerating"] and asserted.program[-2:] == ["start", "is_floating"]
+    assert should.program[3] == "Counterfactual_moving_slow" and along.program[3] == "Counterfactual_floating"
+    assert completeness.program[-1] == "query_attributes[color]" and line.program[0] == "futureEvents"
+    assert entry.program[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # a simile that says something of the domain stays, and so the refusal; 'should' alone asks an ought
+    assert parser.parse("Did that plane ever hit anything, the way my line tangled with every stump in the lake?") \
+        is None
+    assert parser.parse("Should the truck have stopped?") is None
+    assert parser.parse("Is the red car moving fast at the start, like my old Evinrude?")[-1] == \
+        "is_moving_velocity[fast]"
+    evinrude = parser.analyse_batch(["Had the purple city bus been pickin' up speed from the start, engine open like "
+                                     "my old Evinrude, would it and the yellow biplane have collided?"])[0]
+    assert evinrude.program[4] == "Counterfactual_accelerating" and evinrude.read_as[0][0] == "like my old Evinrude"
+    assert parser.parse("Anywhere in the whole video, does the green road bike get into a bump with somethin'?")[0] \
+        == "Events"
+    # the video's stop however its premise goes on ('the footage stops but the future doesn't:')
+    stops, rolls = parser.parse_batch([
+        "Gemini, the footage stops but the future doesn't: will the city bus hit anything?",
+        "The video stops, but the story goes on: will the red car hit the bus?"])
+    assert stops[0] == rolls[0] == "futureEvents"

@@ -651,9 +651,13 @@ CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"],
               *HEARSAY,
               # ... or someone's ('Someone says the bus was parked. Was it?', 'A friend claims that ...')
               *((*who, said, *that) for who in (["someone"], ["somebody"], ["a", "friend"], ["my", "friend"],
-                                                ["a", "colleague"], ["a", "viewer"], ["a", "witness"], ["people"])
+                                                ["a", "colleague"], ["a", "viewer"], ["a", "witness"], ["people"],
+                                                ["management"], ["the", "client"])
                 for said in ("says", "said", "claims", "claimed", "reports", "reported", "predicts", "predicted",
-                             "thinks", "reckons", "insists", "argues", "swears") for that in ((), ("that",))),
+                             "thinks", "reckons", "insists", "argues", "swears", "asserts", "asserted", "states",
+                             "stated", "maintains") for that in ((), ("that",))),
+              # ... or an auditor's ('We seek assurance that ...; is that the case?')
+              *(("we", seek, "assurance", "that") for seek in ("seek", "require", "need", "request")),
               # ... or one's own hunch ('My hunch says ...', 'my forecast is that ...', 'Here's my bet: ...')
               *((*mine, hunch, *said) for mine in (["my"], ["here", "'", "s", "my"]) for hunch in HUNCHES
                 for said in ([":"], ["says"], ["says", "that"], ["is", "that"], ["tells", "me"])
@@ -673,6 +677,9 @@ CONFIRM_ENDS = [[end, *q, "?"] for end in (".", ";", ",")
                           ["is", "that", "not", "so"], ["is", "not", "that", "so"], ["correct"], ["accurate"],
                           ["yes"], ["right"], ["do", "you", "agree"], ["would", "you", "agree"], ["agreed"], ["true"],
                           ["am", "i", "right"], ["am", "i", "correct"],
+                          *([aux, this, "the", "case"] for aux in ("is", "was") for this in ("that", "this", "it")),
+                          *([can, who, "confirm", "the", what] for can in ("can", "could") for who in ("we", "you")
+                            for what in ("assertion", "claim", "statement")),
                           ["true", "or", "false"], ["can", "we", "confirm", "that"], ["can", "you", "confirm", "that"],
                           ["can", "anyone", "confirm", "that"], ["can", "we", "confirm"], ["can", "you", "confirm"],
                           *(["does", that, "hold", *up] for that in ("that", "this", "it") for up in ([], ["up"])),
@@ -1894,7 +1901,8 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     nothing, or the words as they are and ()."""
     # (a reason's tag closes it: 'because slowing down solves everything , right ? if ...')
     k = next((k for k in range(1, min(len(words) - 1, 16)) if words[k] in (":", "-", ";") or words[k] == "," and (
-        words[k + 1] in QUESTION_OPENERS or words[k + 1] == "which") or words[k] == "?" and words[k - 1] in TAGGING),
+        words[k + 1] in QUESTION_OPENERS | {"which"} or words[k + 1:k + 3] in (["please", v] for v in REQUESTING)) or
+        words[k] == "?" and words[k - 1] in TAGGING),
              None)
     if k is None:
         return words, ()
@@ -1906,8 +1914,10 @@ def preamble_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     # a heading says where the question says it too: a forecaster's 'checking the barometer as the clip opens : what
     # kind of vehicle is the one moving fast right at the start ?')
     started = main[:1] != [] and main[0] not in ("and", "then") and bool(START_WORDS.intersection(main))
+    filmed = bool(FILM_WORDS.intersection(main))   # ('per our review of the footage , ... during the video')
     said = [w for w in pre if w not in ("yes", "no", "/", "from", "in", "at", "on", "to", "of", "per")
-            and not (started and w in START_SAID)]
+            and not (started and w in START_SAID) and not (filmed and w in FILM_WORDS)
+            and not (w in COLOR_NAMES and w in main)]   # a listing's 'rich brown tones :' of the brown sedan
     # (a clause of time, its word perhaps misspelt: 'at the very beginnng ,')
     quiet = words[k] != "?" and pre[0] not in TIME_OPENERS | PLACE_OPENERS and not _says_something(said) and not (
         STOP_CUES | FUTURE_CUES | CONDITION_LABELS | {"?", ".", "top", "bottom", "post"}) & set(said) or \
@@ -1975,12 +1985,14 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 
 # A clause of the speaker's own, about the speaker ('I want to know', 'so I label it right', 'for we must not forget
-# the humble sedan', 'I keep mixing them up lol'): read only where the parser would refuse the question for a word it
-# does not know, and only the clauses that hold such a word, open on the speaker, and say nothing of a vehicle, a
-# colour, a time, a motion, a collision or a person (`speaker_clauses_dropped`)
+# the humble sedan', 'I keep mixing them up lol'), or of no one's: a simile ('..., like my old Evinrude', 'the way
+# my line tangled'), anything said after the question ('? Lord, reminds me of Earl.'): read only where the parser would refuse the question for a word it does not know, and only
+# the clauses that hold such a word and say nothing of a vehicle, a colour, a time, a motion, a collision or a person
+# (`speaker_clauses_dropped`)
 SPEAKER = {"i", "we", "my", "our", "me", "us"}
 CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", "oh", "because", "cause", "cos", "yet",
                 "though", "although", "which", "that", "since"}
+SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"])
 CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+|\s[-—–]+)\s+)")
 
 
@@ -2002,23 +2014,34 @@ def verse_joined(text: str) -> str:
     return VERSE_BREAK.sub(" ", text) if in_verse(text) else text
 
 
+def _filler(words: list[str], unknown: set[str]) -> bool:
+    """Whether a clause holds a word of `unknown` and says nothing of the domain."""
+    return bool(set(words) & unknown) and not mentions(words) and not _says_something(words) and not set(words) & (
+        set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"})
+
+
 def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
     """'Something runs into the gray minivan , and I want to know : what kind of vehicle is it ?' -> 'Something runs
-    into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own that
-    hold a word of `unknown`, and those clauses; None where none is. In verse a clause is also a line, and any clause
+    into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own (or a
+    simile, or what follows the question) that hold a word of `unknown`, and those clauses; None
+    where none is. In verse a clause is also a line, and any clause
     may be the rhyme's filler ('oh, what a fray!', 'with some pluck?'), whoever it opens on."""
     verse = in_verse(text)
     parts = (VERSE_CLAUSE_BREAK if verse else CLAUSE_BREAK).split(text)
     clauses, marks = parts[::2], [m.replace("/", "").rstrip() + " " for m in parts[1::2]] + [""]
+    asked = max((k for k, m in enumerate(marks) if "?" in m), default=len(clauses))
     dropped = []
     for k, clause in enumerate(clauses):
         words = tokenize(clause)
         opening = next((w for w in words if w not in CLAUSE_LINKS), "")
         if opening == "let" and words[words.index("let") + 1:][:2] in (["'", "s"], ["us"]):   # 'Let's see if ...'
             opening = "us"
-        if not (set(words) & unknown) or not verse and opening not in SPEAKER or mentions(words) or \
-                _says_something(words) or \
-                set(words) & (set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"}):
+        own = verse or opening in SPEAKER or k > asked or any(words[:len(o)] == o for o in SIMILE_OPENERS)
+        if not own or not _filler(words, unknown):
+            head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
+            if like and head.strip() and _filler(tokenize(like + tail), unknown):
+                dropped.append((like + tail).strip())
+                clauses[k] = head
             continue
         dropped.append(clause)
         clauses[k] = ""

@@ -1229,10 +1229,11 @@ def change_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
 
 
 def inverted_condition_as_if(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
-    """'should the cyan scooter have been fast as the clip begins , would it have ...' -> 'if the cyan scooter had
-    been fast ...': a condition said by inverting 'should' (not 'should the truck have stopped ?', which asks what
+    """'should the cyan scooter have been fast as the clip begins , would it have ...', 'should the cyan one have
+    started out slow , ...' -> 'if the cyan scooter had been fast ...': a condition said by inverting 'should' (not 'should the truck have stopped ?', which asks what
     ought to have been). With the words read so, or the words as they are and ()."""
-    have = next((k for k in range(2, min(len(words), 8)) if words[k:k + 2] == ["have", "been"]), None)
+    have = next((k for k in range(2, min(len(words) - 1, 8)) if words[k] == "have" and (
+        words[k + 1].endswith("ed") or words[k + 1] in PARTICIPLES.values())), None)
     if words[:1] != ["should"] or have is None or not mentions(words[1:have]) or not any(
             a == "," and b in ("would", "will", "does", "did", "is", "was") for a, b in zip(words, words[1:])):
         return words, ()

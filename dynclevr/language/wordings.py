@@ -2103,6 +2103,24 @@ IDIOMS = phrase_table({
                                          ("quicken", "accelerate"), ("quickened", "accelerated"))
        for w in ("its", "her", "the", "his")},
     **{("tell", d, "old", m): ("tell", "me") for d in ("an", "this", "your") for m in ("man", "woman", "angler")},
+    # an auditor's ('... ; is that the case ?'), a listing's ('upon its entry into view'), a yarn's ('when the show
+    # first starts', 'further down the line')
+    **{(a, t, "the", "case", "?"): ("is", "that", "right", "?") for a in ("is", "was") for t in ("that", "this", "it")},
+    **{("entry", "into", v): ("coming", "into", v) for v in ("view", "frame", "sight", "shot")},
+    **{("the", "show", *f, v): ("the", "video", v) for f in ((), ("first",))
+       for v in ("starts", "begins", "opens", "started", "began", "opened", "ends", "stops", "ended", "stopped")},
+    **{(*f, "down", "the", "line"): ("later",) for f in (("further",), ("farther",), ("somewhere",))},
+    # 'the footage stops but the future does not :', 'the tape is frozen but destiny rolls on': the video's stop
+    **{(*c, "but", *t, x, *v, p): (p,) for c in ((), (",",)) for t in ((), ("the",))
+       for x in ("future", "run", "story", "tale", "world", "race", "game", "destiny", "fate", "action", "time", "life")
+       for v in (("does", "not"), ("did", "not"), ("goes", "on"), ("rolls", "on"), ("carries", "on"),
+                 ("keeps", "going"), ("continues",), ("marches", "on")) for p in (":", ";", ",")},
+    # 'had been floating all along (from the start)', 'anywhere in the video'; an auditor's 'for completeness of the
+    # file ,'
+    **{("anywhere", "in", "the", *w, f): ("in", "the", f) for f in FILM_WORDS for w in ((), ("whole",), ("entire",))},
+    ("all", "along"): _START, **{("all", "along", w, "the", "start"): _START for w in ("at", "from")},
+    **{("for", *t, "completeness", *f, p): () for t in ((), ("the", "sake", "of")) for p in (",", ";", ":")
+       for f in ((), ("of", "the", "file"), ("of", "the", "record"), ("'", "s", "sake"))},
 }.items())
 COMING = ("comes", "come", "came", "coming")
 SPEED_CARRIED = {"carrying": "moving", "carry": "move", "carried": "moved", "carries": "moves"}
