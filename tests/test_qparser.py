@@ -5200,3 +5200,25 @@ def test_an_address_a_simile_a_listing_s_heading_and_an_auditor_s_requests_are_r
         "Gemini, the footage stops but the future doesn't: will the city bus hit anything?",
         "The video stops, but the story goes on: will the red car hit the bus?"])
     assert stops[0] == rolls[0] == "futureEvents"
+
+
+def test_a_form_letter_s_references_and_a_field_note_s_predicates_are_read():
+    parser = QuestionParser.load()
+    reference, undersigned, purpose, note, surging, ascertain = parser.parse_batch([
+        "Kindly advise this office of the kind of vehicle that is moving fast when the video begins (reference "
+        "VF-041).",
+        "This office seeks written confirmation as to whether the cyan dirtbike and the red station wagon collided with "
+        "each other.",
+        "Please give the colour of whatever is hovering in the air as the reel begins, for the item level description.",
+        "Yellow pickup in the first frames. Moving fast? Yes or no.",
+        "Purple pickup, opening frames. Going faster and faster?",
+        "Be advised that the undersigned must ascertain whether the blue vehicle is moving slowly at the beginning of "
+        "the footage. Kindly tick yes or no."])
+    assert reference == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[shape]"]
+    assert undersigned[0] == "Events" and undersigned[-1] == "exist"
+    assert purpose[-1] == "query_attributes[color]" and ascertain[-1] == "is_moving_velocity[slow]"
+    assert note[-2:] == ["start", "is_moving_velocity[fast]"] and surging[-2:] == ["start", "is_accelerating"]
+    # a speed compared with something that is no vehicle is no comparison of two vehicles
+    assert parser.parse("When the purple minivan hits the red pickup: moving fast? Faster than any ice.") is None
+    # a note's predicate after a sentence that says something of its own stays unread
+    assert parser.parse("The yellow pickup is fast. Moving fast?") is None

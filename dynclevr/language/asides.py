@@ -411,6 +411,10 @@ def _offers_speed(span: list[str]) -> bool:
     return any(tuple(span[k:k + len(c)]) == c for k in range(len(span)) for c in SPEED_CHOICES)
 
 
+REFERENCE_WORDS = {"ref", "reference", "case", "file", "form", "item", "section", "schedule", "docket", "claim",
+                   "policy", "ticket", "invoice", "account"}
+
+
 def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
     the digressions read as nothing, or the words as they are and ()."""
@@ -423,7 +427,9 @@ def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, s
     inside = words[opened + 1:closed] if closed is not None else []
     noted = bool(inside) and words[opened - 1:opened] == ["?"] and words[closed + 1:] in ([], ["."]) and not (
         set(inside) - set(COLOR_NAMES)) & SAYING and not asks_impact(inside)
-    if closed is not None and (noted or not _says_something(inside)) and \
+    # (a form's reference, its number no time: '(ref. DIR-0402)', '(case no. 55-Q)')
+    cited = inside[:1] and inside[0] in REFERENCE_WORDS and not mentions(inside) and not asks_impact(inside)
+    if closed is not None and (noted or cited or not _says_something(inside)) and \
             _says_something(words[:opened] + words[closed + 1:]):
         aside = words[opened:closed + 1]
         rest, read = digressions_dropped(words[:opened] + words[closed + 1:])
@@ -1986,7 +1992,8 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 
 # A clause of the speaker's own, about the speaker ('I want to know', 'so I label it right', 'for we must not forget
 # the humble sedan', 'I keep mixing them up lol'), or of no one's: a simile ('..., like my old Evinrude', 'the way
-# my line tangled'), anything said after the question ('? Lord, reminds me of Earl.'): read only where the parser would refuse the question for a word it does not know, and only
+# my line tangled'), a purpose ('..., for the finding aid'), anything said after the question ('? Lord, reminds me of
+# Earl.'): read only where the parser would refuse the question for a word it does not know, and only
 # the clauses that hold such a word and say nothing of a vehicle, a colour, a time, a motion, a collision or a person
 # (`speaker_clauses_dropped`)
 SPEAKER = {"i", "we", "my", "our", "me", "us"}
@@ -2029,14 +2036,19 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
     verse = in_verse(text)
     parts = (VERSE_CLAUSE_BREAK if verse else CLAUSE_BREAK).split(text)
     clauses, marks = parts[::2], [m.replace("/", "").rstrip() + " " for m in parts[1::2]] + [""]
-    asked = max((k for k, m in enumerate(marks) if "?" in m), default=len(clauses))
+    # (where the question is a request, its sentence's stop: 'Kindly indicate whether ... . Kindly sign and date.')
+    asked = max((k for k, m in enumerate(marks) if "?" in m), default=None)
+    if asked is None:
+        asked = next((k for k, m in enumerate(marks) if "." in m and mentions(tokenize(" ".join(clauses[:k + 1])))),
+                     len(clauses))
     dropped = []
     for k, clause in enumerate(clauses):
         words = tokenize(clause)
         opening = next((w for w in words if w not in CLAUSE_LINKS), "")
         if opening == "let" and words[words.index("let") + 1:][:2] in (["'", "s"], ["us"]):   # 'Let's see if ...'
             opening = "us"
-        own = verse or opening in SPEAKER or k > asked or any(words[:len(o)] == o for o in SIMILE_OPENERS)
+        own = verse or opening in SPEAKER or k > asked or any(words[:len(o)] == o for o in SIMILE_OPENERS) or \
+            k and words[:1] == ["for"]   # a purpose ('..., for entry in the accident register')
         if not own or not _filler(words, unknown):
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
             if like and head.strip() and _filler(tokenize(like + tail), unknown):

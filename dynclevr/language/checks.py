@@ -658,6 +658,25 @@ def comparison_unsaid(words: list[str], program: list[str]) -> str:
             "faster (or slower) than the other")
 
 
+THAN_SKIPPED = {"any", "the", "a", "an", "all", "every", "for", "of", "that", "this", "those"}
+THAN_REFERRING = {"latter", "former", "other", "others", "rest"}
+
+
+def compared_with_no_vehicle(words: list[str], program: list[str], known: set[str]) -> str:
+    """Why a reading comparing two vehicles' speeds is not the question's ('' when it is): every speed said compared
+    is compared with something the parser does not know ('... moving fast? Faster than any ice, surely.' was read as
+    the minivan faster than the pickup)."""
+    if not program or operation(program[-1]) not in SPEED_COMPARISONS:
+        return ""
+    compared = [next((w for w in words[k + 1:k + 4] if w not in THAN_SKIPPED), "") for k, w in enumerate(words)
+                if w == "than"]
+    odd = [w for w in compared if w.isalpha() and w not in known | OBJECT_WORDS | THAN_REFERRING]
+    if not odd or len(odd) < len(compared):
+        return ""
+    return (f"the question compares a speed with '{odd[0]}', which is no vehicle here (questions compare two "
+            "vehicles' speeds)")
+
+
 PACE_WORDS = {"fast", "quick", "quickly", "slow", "slowly", "rapid", "rapidly", "speedy"}
 GETTING = {"getting", "gets", "got", "get", "going", "becoming", "becomes", "became", "growing", "and"}
 

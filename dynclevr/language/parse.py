@@ -63,6 +63,7 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
+                                      compared_with_no_vehicle,
                                       comparison_imagined, comparison_unread, comparison_unsaid,
                                       condition_subject_first, condition_unsaid, cut_said, direction_unasked,
                                       direction_unsaid, end_unread, floating_unread, floating_unsaid, form_unasked,
@@ -314,6 +315,7 @@ class QuestionParser:
             or future_unread(said, c.program, cut_said(tokenize(text), said).split() + read)
             or both_imagined(said, c.program) or speed_unsaid(read, c.program) or floating_unsaid(read, c.program)
             or comparison_imagined(read, c.program) or comparison_unsaid(read, c.program)
+            or compared_with_no_vehicle(read, c.program, self.known)
             or comparison_unread(read, c.program)
             or imagining_unread(said, c.program, tokenize(text)) or floating_unread(said, c.program)
             or condition_unsaid(said + [w for a, _ in c.read_as for w in a.split()], c.program)

@@ -13,7 +13,7 @@ import unicodedata
 from difflib import SequenceMatcher
 
 from dynclevr.colors import COLOR_NAMES
-from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, phrase_table, phrases_as_said
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.tokenize import SPELLINGS
 from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
@@ -777,9 +777,22 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             set(out[stop + 1:-1]) <= SLASHED | {",", "or"} and len(set(out[stop + 1:-1]) & SLASHED) >= 2:
         read.append((out[stop], ":"))
         out = [*out[:stop], ":", *out[stop + 1:]]
+    # a field note's predicate, asked of the vehicle its sentence before names ('Yellow pickup in the first frames.
+    # Moving fast?', 'Purple pickup, opening frames. Going faster and faster?')
+    stop = max((k for k, w in enumerate(out[:-1]) if w in (".", "?")), default=None)
+    if stop and out[stop] == "." and out[-1:] == ["?"] and out[stop + 1] in NOTED_PREDICATES and \
+            mentions(out[:stop]) and not (QUESTION_OPENERS | {".", "?", "it", "they"}) & set(out[:stop]) and \
+            not mentions(out[stop + 1:]):
+        read.append((".", ":"))
+        out = [*out[:stop], ":", *out[stop + 1:]]
     if not read:
         return words, ()
     return out, tuple(dict.fromkeys(read))
+
+
+NOTED_PREDICATES = {"moving", "going", "travelling", "traveling", "driving", "static", "stationary", "parked", "still",
+                    "slow", "fast", "hovering", "floating", "airborne", "accelerating", "speeding", "gaining",
+                    "picking", "heading", "headed", "speedier", "faster", "slower", "quicker"}
 
 
 def _pair_collides(words: list[str], k: int) -> bool:

@@ -2115,6 +2115,14 @@ IDIOMS = phrase_table({
        for x in ("future", "run", "story", "tale", "world", "race", "game", "destiny", "fate", "action", "time", "life")
        for v in (("does", "not"), ("did", "not"), ("goes", "on"), ("rolls", "on"), ("carries", "on"),
                  ("keeps", "going"), ("continues",), ("marches", "on")) for p in (":", ";", ",")},
+    # an office's form letter: 'the undersigned requires ...', 'this office seeks written confirmation as to whether'
+    **{(*who, *v): ("tell", "me") for who in (("the", "undersigned"), ("this", "office"), ("the", "office"),
+                                             ("the", "bureau"), ("the", "department"), ("this", "department"))
+       for v in (("requires",), ("requests",), ("respectfully", "requests"), ("must", "establish"),
+                 ("must", "ascertain"), ("is", "required", "to", "establish"), ("seeks",), ("needs",),
+                 ("hereby", "requests"), ("requests", "that", "you", "state"))},
+    **{(*a, c, *t): ("whether",) for a in ((), ("a",), ("written",), ("a", "written")) for c in (
+        "confirmation", "determination", "statement") for t in (("of", "whether"), ("as", "to", "whether"))},
     # 'had been floating all along (from the start)', 'anywhere in the video'; an auditor's 'for completeness of the
     # file ,'
     **{("anywhere", "in", "the", *w, f): ("in", "the", f) for f in FILM_WORDS for w in ((), ("whole",), ("entire",))},
