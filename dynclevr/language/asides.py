@@ -1993,8 +1993,8 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 # A clause of the speaker's own, about the speaker ('I want to know', 'so I label it right', 'for we must not forget
 # the humble sedan', 'I keep mixing them up lol'), or of no one's: a simile ('..., like my old Evinrude', 'the way
 # my line tangled'), a purpose ('..., for the finding aid'), anything said after the question ('? Lord, reminds me of
-# Earl.'): read only where the parser would refuse the question for a word it does not know, and only
-# the clauses that hold such a word and say nothing of a vehicle, a colour, a time, a motion, a collision or a person
+# Earl.'): read only where the parser would refuse the question for a word it does not know, and only the clauses
+# that hold such a word and say nothing of a vehicle, a colour, a time, a motion, a collision or a person
 # (`speaker_clauses_dropped`)
 SPEAKER = {"i", "we", "my", "our", "me", "us"}
 CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", "oh", "because", "cause", "cos", "yet",
@@ -2030,9 +2030,9 @@ def _filler(words: list[str], unknown: set[str]) -> bool:
 def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
     """'Something runs into the gray minivan , and I want to know : what kind of vehicle is it ?' -> 'Something runs
     into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own (or a
-    simile, or what follows the question) that hold a word of `unknown`, and those clauses; None
-    where none is. In verse a clause is also a line, and any clause
-    may be the rhyme's filler ('oh, what a fray!', 'with some pluck?'), whoever it opens on."""
+    simile, a purpose, what follows the question) that hold a word of `unknown`, and those clauses; None where none
+    is. In verse a clause is also a line, and any clause may be the rhyme's filler ('oh, what a fray!', 'with some
+    pluck?'), whoever it opens on."""
     verse = in_verse(text)
     parts = (VERSE_CLAUSE_BREAK if verse else CLAUSE_BREAK).split(text)
     clauses, marks = parts[::2], [m.replace("/", "").rstrip() + " " for m in parts[1::2]] + [""]

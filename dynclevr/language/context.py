@@ -1230,8 +1230,9 @@ def change_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
 
 def inverted_condition_as_if(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'should the cyan scooter have been fast as the clip begins , would it have ...', 'should the cyan one have
-    started out slow , ...' -> 'if the cyan scooter had been fast ...': a condition said by inverting 'should' (not 'should the truck have stopped ?', which asks what
-    ought to have been). With the words read so, or the words as they are and ()."""
+    started out slow , ...' -> 'if the cyan scooter had been fast ...': a condition said by inverting 'should' (not
+    'should the truck have stopped ?', which asks what ought to have been). With the words read so, or the words as
+    they are and ()."""
     have = next((k for k in range(2, min(len(words) - 1, 8)) if words[k] == "have" and (
         words[k + 1].endswith("ed") or words[k + 1] in PARTICIPLES.values())), None)
     if words[:1] != ["should"] or have is None or not mentions(words[1:have]) or not any(

@@ -2103,9 +2103,7 @@ IDIOMS = phrase_table({
                                          ("quicken", "accelerate"), ("quickened", "accelerated"))
        for w in ("its", "her", "the", "his")},
     **{("tell", d, "old", m): ("tell", "me") for d in ("an", "this", "your") for m in ("man", "woman", "angler")},
-    # an auditor's ('... ; is that the case ?'), a listing's ('upon its entry into view'), a yarn's ('when the show
-    # first starts', 'further down the line')
-    **{(a, t, "the", "case", "?"): ("is", "that", "right", "?") for a in ("is", "was") for t in ("that", "this", "it")},
+    # a listing's ('upon its entry into view'), a yarn's ('when the show first starts', 'further down the line')
     **{("entry", "into", v): ("coming", "into", v) for v in ("view", "frame", "sight", "shot")},
     **{("the", "show", *f, v): ("the", "video", v) for f in ((), ("first",))
        for v in ("starts", "begins", "opens", "started", "began", "opened", "ends", "stops", "ended", "stopped")},
