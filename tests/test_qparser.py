@@ -2164,9 +2164,12 @@ def test_a_category_a_question_after_a_semicolon_and_a_condition_labelled_or_poi
     assert " ".join(parser.parse("Suppose the airliner had started out slow; would it still hit the jet?")) == \
         "Objects filter_attributes[airliner] unique Counterfactual_moving_slow Objects filter_attributes[airliner] " \
         "unique filter_collision Objects filter_attributes[jet] unique filter_collision exist"
-    # a ground vehicle 'flying' out of the gate goes fast; it does not float
-    assert_refused(parser, {"Run it back with a twist: the blue dirtbike comes flying out of the gate fast from the "
-                            "opening frame. Does it collide with the brown bus then?": "flying"})
+    # a ground vehicle 'flying' out of the gate starts, fast; it does not float
+    assert " ".join(parser.parse("Run it back with a twist: the blue dirtbike comes flying out of the gate fast from "
+                                 "the opening frame. Does it collide with the brown bus then?")) == \
+        "Objects filter_attributes[blue] filter_attributes[dirtbike] unique Counterfactual_moving_fast Objects " \
+        "filter_attributes[blue] filter_attributes[dirtbike] unique filter_collision Objects filter_attributes[brown] " \
+        "filter_attributes[bus] unique filter_collision exist"
 
 
 def test_regional_names_an_instruction_first_a_video_stopped_part_way_and_choices_in_brackets():

@@ -418,6 +418,14 @@ REFERENCE_WORDS = {"ref", "reference", "case", "file", "form", "item", "section"
 def digressions_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'so , jen , and this is the part i love , was the red sedan moving ?' -> 'was the red sedan moving ?'. With
     the digressions read as nothing, or the words as they are and ()."""
+    # (a transcript's stage direction in square brackets, never a unit: 'in the first frames [ indicating ] ,')
+    opened = next((k for k, w in enumerate(words) if w == "["), None)
+    closed = next((k for k in range(opened + 2, min(len(words), opened + 16)) if words[k] == "]"), None) \
+        if opened is not None else None
+    if closed is not None and not _says_something(words[opened + 1:closed]) and \
+            _says_something(words[:opened] + words[closed + 1:]):
+        rest, read = digressions_dropped(words[:opened] + words[closed + 1:])
+        return rest, ((" ".join(words[opened:closed + 1]), "nothing, a stage direction"), *read)
     # (an aside in brackets: 'supposing the minivan had been moving rapidly ( mark this , apprentice ) , would ...')
     opened = next((k for k, w in enumerate(words) if w == "("), None)
     closed = next((k for k in range(opened + 3, min(len(words), opened + 16)) if words[k] == ")"), None) \
@@ -1130,7 +1138,8 @@ def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str]
     # it ...'; not in an inverted clause's: 'when into the purple wagon it bumped')
     k = next((k for k in range(1, start) if rest[k] == pronoun and rest[k - 1] in SUBJECT_AFTER), None) or next(
         (k for k in range(start, len(rest)) if rest[k] in (pronoun, own)), None)
-    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and k is not None:
+    if rest[start:start + 1] and rest[start] in QUESTION_OPENERS | {"suppose", "if", "imagine"} and k is not None \
+            and rest[start:start + 3] != ["what", "-", "if"]:   # (a label: 'mountain bike , what-if : fast ...')
         # ('what was its speed the moment it ...' -> 'what was the red fighter 's speed ...')
         return [*rest[:k], *topic, *(["'", "s"] if rest[k] == own else []), *rest[k + 1:]], read
     return words, ()
@@ -1649,6 +1658,9 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
             continue
         if end is not None and "or" in heading and _offers_speed(heading):
             break   # the answers offered first ('Static, slow or fast: which describes the bike when ...?')
+        if end is not None and " what - if " in f" {' '.join(heading)} " and not (
+                {"if", "suppose", "imagine", "had", "were"} & set(words[end + 1:])):
+            break   # the label of a condition said after it ('What-if for you: bicycle stopped dead from the start.')
         if end is not None and _purpose(words[:end], words[end + 1:]) and words[end] == ":":
             pass   # 'For my accident-reconstruction class:', 'Teacher here, setting up a what-if for my class:'
         elif end is not None and words[end] == ":" and _headline(heading, words[end + 1:]):
@@ -2063,3 +2075,30 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
     if not dropped or not any(c.strip() for c in clauses):
         return None
     return "".join(c + m for c, m in zip(clauses, marks)).strip(), " / ".join(dropped)
+
+
+# A remark after the question ('...? looks parked but the motion estimate is noisy', '...? guessing yes, verify',
+# '...? Over.'): read only where the parser would refuse the question with it, and only where the remark names no
+# vehicle and says no time, condition, comparison, negation or collision that the question could be asking
+# (`remark_after_dropped`)
+REMARK_KEEPS = (CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING | START_WORDS | START_ADJECTIVES
+                | END_WORDS | END_SAID | FUTURE_CUES | TIME_SAID | NEGATIONS | COMPARING | COMES_IN_WORDS | NAMING
+                | PLURALS | set(COLOR_NAMES) | OTHER_COLOURS
+                | {"?", "after", "before", "later", "then", "until", "once", "beyond", "afterwards", "next", "would",
+                   "will", "than", "first", "last", "end"}
+                | {"yes", "no", "y", "n", "true", "false", "binary", "or"})   # an answer's form: '? (y/n)'
+
+
+def remark_after_dropped(text: str) -> tuple[str, str] | None:
+    """'Is the station wagon static at the start? looks parked but the motion estimate is noisy' -> ('Is the station
+    wagon static at the start?', 'looks parked but the motion estimate is noisy'); None where nothing follows the
+    question's last mark or what follows may say what is asked."""
+    if not isinstance(text, str):
+        return None
+    asked = text.rfind("?")
+    remark = text[asked + 1:].strip()
+    words = tokenize(remark)
+    if asked < 0 or not words or mentions(words) or REMARK_KEEPS & set(words) or asks_impact(words) or \
+            any(impact_like(w) for w in words if len(w) > 4):
+        return None
+    return text[:asked + 1], remark

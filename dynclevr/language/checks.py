@@ -30,7 +30,7 @@ from __future__ import annotations
 
 from difflib import SequenceMatcher
 
-from dynclevr.language.context import _run_on_question, _sentence_spans
+from dynclevr.language.context import _instructs, _run_on_question, _sentence_spans
 from dynclevr.language.references import OBJECT_WORDS, coordinated, generalises, mentions, placeholders
 from dynclevr.language.refusals import _asked
 from dynclevr.language.times import END_SAID, FILM_WORDS
@@ -395,6 +395,20 @@ def collision_at_start(words: list[str], program: list[str]) -> str:
         return ""
     return ("the question asks about a collision at the start, which no question here asks (they ask whether vehicles "
             "collide during the video or after it)")
+
+
+def instruction_unread(words: list[str], program: list[str]) -> str:
+    """Why a reading of what the video shows is not the question's ('' when it is): a sentence of the question tells
+    a change to a vehicle ('swap in a fast speed for the biplane . does it then crash into ...?'), which no reading
+    of the video asks."""
+    if any(t.startswith("Counterfactual") for t in program):
+        return ""
+    told = next((told for s in (words[a:b] for a, b in _sentence_spans(words)) if (told := _instructs(s))
+                 and mentions(s)), None)
+    if told is None:
+        return ""
+    return (f"the question tells a change ('{told}'), but its nearest reading asks what the video shows: ask 'if X "
+            "had been ... from the start, would it hit Y?'")
 
 
 VIDEO_PARTS = (["early", "in"], ["late", "in"], ["later", "in"], ["halfway"], ["midway"], ["in", "the", "middle"])

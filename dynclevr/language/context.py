@@ -717,7 +717,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         question = question[len(back) + (question[len(back):len(back) + 1] == [","]):]
         conditions[-1] = _condition_said(context[-1], True)
     if any(c is None and not _stated(s) and not _imagining_only(s) and (
-            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or _opening(s)[:1] == ["set"]
+            s[-1] == "?" or mentions(s) and (IMAGINED_SAID & set(s) or _instructs(s)
                                              or _opening(s)[:1] == ["let"] and "be" in s
                                              or "if" in s and s[s.index("if") - 1] not in WHETHER))
            for s, c in zip(context, conditions)) or back and not conditions[-1]:
@@ -1061,6 +1061,7 @@ def afterthoughts_read(words: list[str], known=None) -> tuple[list[str], tuple[t
 
 SET_VERBS = {"set", "sets", "setting", "initialise", "initialised", "initialize", "initialized", "reset", "change",
              "changed", "changing"}
+START_TAILS = [[p, "the", *s] for p in ("from", "at") for s in (["start"], ["beginning"], ["first", "frame"])]
 SET_VALUES = {"static": "static", "stationary": "static", "zero": "static", "0": "static", "slow": "slow",
               "low": "slow", "fast": "fast", "high": "fast"}
 
@@ -1097,7 +1098,7 @@ def settings_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, 
         while words[end:end + 1] and words[end] in SPEED_NOUNS | {"bin", "bucket", "class", "category", "speeds"}:
             end += 1
         said = ["the", *words[a:b], "had", "been", SET_VALUES[value[0]], "from", "the", "start"]
-        end += 3 * (words[end:end + 3] == said[-3:])
+        end += next((len(t) for t in START_TAILS if words[end:end + len(t)] == t), 0)
         k -= bool(k) and words[k - 1] in ("we", "you", "i", "they")   # 'if we set ...'
         # a setting said as a sentence of its own ('Set the scooter's initial speed to fast. Does it then hit ...?')
         # is a condition, not a statement of what the video shows
@@ -1191,7 +1192,11 @@ RETOLD_LINKS = (["so", "that"], ["such", "that"], ["so"], ["where"], ["with"], [
 # from the start, standing still. Would it collide with the green airliner then?', 'Give the dirtbike a running engine
 # from the very start. Does it then collide ...?'): the grammar's condition, of the one state it says
 CHANGING = {"pin", "give", "make", "have", "let", "set", "keep", "hold", "put", "fix", "freeze", "park", "send",
-            "start", "launch", "leave", "change", "switch", "turn", "grant", "allow", "restate", "rerun", "replay"}
+            "start", "launch", "leave", "change", "switch", "turn", "grant", "allow", "restate", "rerun", "replay",
+            "swap", "switched"}   # a data scientist's 'swap in a fast initial speed for the biplane:'
+# ... of them, those that say an instruction wherever they open a sentence (never a noun: 'Start of the clip.'): a
+# context sentence of one is a change, never read as what the video shows
+INSTRUCTING = {"pin", "set", "fix", "freeze", "change", "switch", "grant", "swap", "switched", "force"}
 HELD = (("accelerating", ({"accelerating", "accelerate", "engine"}, (("speeding", "up"), ("picking", "up", "speed")))),
         ("static", ({"static", "stationary", "still", "motionless", "parked", "immobile", "unmoving", "standstill"},
                     (("in", "place"), ("at", "rest")))),
@@ -1214,10 +1219,12 @@ def change_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     mountain bike had been static from the start . would ...': a first sentence that tells a change at the start to
     a vehicle it names ('Grant the gray plane a slow start instead; would ...?'), before a question about a
     collision. With the words read so, or the words as they are and ()."""
-    end = next((k for k, w in enumerate(words) if w in (".", ";", ":", "!")), None)
-    if end is None or words[0] not in CHANGING or not asks_impact(words[end + 1:]):
+    label = _labelled(words)
+    end = next((k for k, w in enumerate(words) if k > label and w in (".", ";", ":", "!")), None)
+    if end is None or words[label] not in CHANGING or words[label + 1:label + 2] == ["of"] or \
+            not asks_impact(words[end + 1:]):   # ('Start of the clip, the bus is parked.' tells no change)
         return words, ()
-    sentence = words[:end]
+    sentence = words[label:end]
     named = mentions(sentence)
     start = bool((START_WORDS | {"first", "initial", "initially"}) & set(sentence))   # 'from the start', 'a slow start'
     state = _held_state(sentence)
@@ -1226,6 +1233,22 @@ def change_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
     first, last, _ = named[0]
     condition = ["suppose", "the", *sentence[first:last], "had", "been", state, "from", "the", "start", "."]
     return condition + words[end + 1:], ((" ".join(words[:end + 1]), " ".join(condition)),)
+
+
+def _instructs(sentence: list[str]) -> str | None:
+    """The verb a sentence opens on (after its label) that tells a change to a vehicle ('swap in a fast speed for the
+    biplane', 'freeze the gray cruiser'; 'set' whatever follows: 'Set v0(yellow scooter) := fast.'), or None."""
+    said = _opening(sentence[_labelled(sentence):])
+    told = [w for w in said[1:4] if w not in ("the", "a", "an", "in", "up")][:1]
+    return said[0] if said[:1] and said[0] in INSTRUCTING and (said[0] == "set" or told and (
+        told[0] in NAMING | set(COLOR_NAMES) or told[0] in SET_VALUES)) else None   # not 'freeze the film'
+
+
+
+def _labelled(sentence: list[str]) -> int:
+    """Where a sentence says something after its condition's label ('ablation : freeze the cruiser ...' -> 2), or 0."""
+    colon = sentence.index(":") if ":" in sentence[:4] else None
+    return colon + 1 if colon and CONDITION_LABELS & set(sentence[:colon]) else 0
 
 
 def inverted_condition_as_if(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:

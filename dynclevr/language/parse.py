@@ -54,25 +54,25 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, addressees_dropped, asides_dropped, calls_read,
                                       corrections_dropped, digressions_dropped, dislocated_as_asked,
                                       distractors_dropped, examination_as_asked, forecast_dropped, framing_dropped,
-                                      grumble_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked,
+                                      grumble_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked, in_verse,
                                       interjections_dropped, owners_dropped, person_remark_dropped, preamble_dropped,
                                       prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
-                                      requested_as_asked, restatements_read, soothing_dropped, speaker_asides_dropped,
-                                      in_verse, speaker_clauses_dropped, ticket_fields_read, verse_joined,
+                                      remark_after_dropped, requested_as_asked, restatements_read, soothing_dropped,
+                                      speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read, verse_joined,
                                       wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
-                                      compared_with_no_vehicle,
-                                      comparison_imagined, comparison_unread, comparison_unsaid,
-                                      condition_subject_first, condition_unsaid, cut_said, direction_unasked,
-                                      direction_unsaid, end_unread, floating_unread, floating_unsaid, form_unasked,
-                                      form_unmatched, future_unread, heading_unread, holding_unsaid, imagining_unread,
-                                      impact_unsaid, moment_unread, motion_foretold, motion_unfiltered, motion_unread,
-                                      named_attribute, operation, own_attribute_asked, pointed_back, property_unread,
-                                      reversed_reading, size_unread, speed_class_turned, speed_unsaid,
-                                      start_speed_at_collision, still_continuing, than_as_said, than_turned,
-                                      time_symbol_said, time_unasked, uncompared, visibility_unread, what_happens)
+                                      compared_with_no_vehicle, comparison_imagined, comparison_unread,
+                                      comparison_unsaid, condition_subject_first, condition_unsaid, cut_said,
+                                      direction_unasked, direction_unsaid, end_unread, floating_unread, floating_unsaid,
+                                      form_unasked, form_unmatched, future_unread, heading_unread, holding_unsaid,
+                                      imagining_unread, impact_unsaid, instruction_unread, moment_unread,
+                                      motion_foretold, motion_unfiltered, motion_unread, named_attribute, operation,
+                                      own_attribute_asked, pointed_back, property_unread, reversed_reading, size_unread,
+                                      speed_class_turned, speed_unsaid, start_speed_at_collision, still_continuing,
+                                      than_as_said, than_turned, time_symbol_said, time_unasked, uncompared,
+                                      visibility_unread, what_happens)
 from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, change_as_imagined, check_ins_stated, closing_mark_added,
                                        context_as_question, found_then_asked, fragments_joined,
@@ -254,6 +254,13 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
+        # ... and a question refused with a remark after it, read again without the remark
+        retries = {i: cut for i, (text, p) in enumerate(zip(texts, parses)) if p.program is None and
+                   (cut := remark_after_dropped(text))}
+        for (i, (_, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
+            if again.program:
+                parses[i] = replace(again, read_as=((dropped, "nothing, a remark after the question"),
+                                                    *again.read_as))
         return parses
 
     def _analysed(self, texts: list[str]) -> list[Parse]:
@@ -306,6 +313,7 @@ class QuestionParser:
             or direction_unasked(said, c.program) or direction_unsaid(said, read, c.program)
             or holding_unsaid(said, c.program) or moment_unread(said, c.program) or heading_unread(said, c.program)
             or time_unasked(said, c.program) or collision_at_start(said, c.program) or clock_unasked(said, c.program)
+            or instruction_unread(said, c.program)
             or anything_unasked(said, c.program)
             or (not any(map(impact_like, set(read) - self.known)) and impact_unsaid(read, c.program))
             or form_unasked(said, c.program)
@@ -436,8 +444,11 @@ class QuestionParser:
         checked += found + someone
         words, fronted_request = fronted_whether_as_asked(words)
         checked += fronted_request
+        # (a vehicle spoken to in a sentence before the question: 'Brown aircraft, you hit the cyan chopper. Were you
+        # slow at the moment of impact?')
+        words, spoken_to = addressed_as_named(words)
         words, context = context_as_question(words, self.known)
-        context = checked + context
+        context = checked + spoken_to + context
         context = prompted + kind + restated + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)
@@ -445,8 +456,7 @@ class QuestionParser:
         words, owned = owners_dropped(words)
         words, own_place = speaker_asides_dropped(words)
         owned += own_place
-        words, spoken_to = addressed_as_named(words)
-        owned += spoken_to
+
         words, teased = hooks_dropped(words)
         words, labelled = asides_dropped(words)
         words, grumbled = grumble_dropped(words)

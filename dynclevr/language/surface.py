@@ -303,7 +303,11 @@ def glosses_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ..
             break
         inside = out[a + 1:b]
         name = inside[inside[:1] in (["the"], ["a"], ["an"]):]
-        if any(inside[:len(g)] == g for g in GLOSS_OPENERS) and not NAMING.intersection(inside):
+        # (or after the state it glosses, as the brief to writers says it: 'floating (hovering, not falling)',
+        # 'speeding up (engine on)')
+        if (any(inside[:len(g)] == g for g in GLOSS_OPENERS) or a and out[a - 1] in GLOSSED_STATES and inside and (
+                inside[0].endswith("ing") or inside[0] in GLOSS_STARTS | {"engine"}) and not set(inside) & GLOSS_KEEPS
+                and not asks_impact(inside)) and not NAMING.intersection(inside):
             read.append((" ".join(out[a:b + 1]), "nothing, a gloss"))
             out[a:b + 1] = []
             continue
@@ -770,6 +774,11 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         b = out.index(")", a)
         if out[b + 1:] in ([], ["?"], ["."]):
             out = [*out[:a], ":", *out[a + 1:b], *out[b + 1:]]
+    # (after a radio's sign-off: '... as the video opens. Static, slow or fast? Over.')
+    over = next((e for e in SIGNED_OFF if out[-len(e):] == e), None)
+    if over:
+        read.append((" ".join(over[1:]), "nothing, a sign-off"))
+        out = out[:1 - len(over)]
     # choices said as a sentence of their own ('How fast is the bus at the start. Stationary, slow or fast?'): the
     # question's own (the last sentence was read as the question)
     stop = max((k for k, w in enumerate(out[:-1]) if w in (".", "?")), default=None)
@@ -790,6 +799,7 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     return out, tuple(dict.fromkeys(read))
 
 
+SIGNED_OFF = [["?", "over", *out, *stop] for out in ((), ("and", "out")) for stop in ((), (".",))]
 NOTED_PREDICATES = {"moving", "going", "travelling", "traveling", "driving", "static", "stationary", "parked", "still",
                     "slow", "fast", "hovering", "floating", "airborne", "accelerating", "speeding", "gaining",
                     "picking", "heading", "headed", "speedier", "faster", "slower", "quicker"}
@@ -823,6 +833,10 @@ SPELT_BY_EAR = set(COLOR_NAMES) | NAMING | {"private", "station", "decker", "pic
 NOT_SPELT_BY_EAR = OTHER_COLOURS | OTHER_VEHICLES | {"plain", "read", "rode", "great", "tricky", "track", "tracks",
                                                       "boys"}   # a gangster's ('The boys need to know.')
 NAME_SAID = SPELT_BY_EAR - set(COLOR_NAMES)
+# the first words of two-word names ('school bass' is a school bus; 'the bus carry' is no 'bus car')
+NAME_OPENERS = {"articulated", "city", "decker", "dirt", "double", "fighter", "mountain", "pickup", "private",
+                "regular", "road", "school", "station", "tandem", "utility"}
+BEFORE_REAL_NAME = set(COLOR_NAMES) | NAME_OPENERS
 BEFORE_NAME = DETERMINERS | SPELT_BY_EAR
 NAMED_AFTER = NAME_SAID | GENERIC | GENERIC_NOUNS
 
@@ -843,10 +857,10 @@ def spelt_by_ear(words: list[str], index: dict[str, list[str]], readable: set[st
     fixed = [heard.get(w, w) for w in words]
     # in a vehicle's description: a colour before a vehicle's name, a name's word after a determiner, a colour or
     # another name's word, or before one ('beyond the truncation point' is no 'bendy'); a common English word of
-    # `real` only after a colour or a name's word, where no other word could stand ('the yellow bass', 'the school
-    # bass'; 'the boys' are no 'bus')
+    # `real` only after a colour or a name's first word, where no other word could stand ('the yellow bass', 'the
+    # school bass'; 'the boys' are no 'bus', 'what speed does the bus carry' no 'bus car')
     out = [w if said not in heard or (nxt in NAMED_AFTER if w in COLOR_NAMES else
-                                      (before in SPELT_BY_EAR if said in real else before in BEFORE_NAME)
+                                      (before in BEFORE_REAL_NAME if said in real else before in BEFORE_NAME)
                                       or nxt in NAMED_AFTER and said not in real)
            else said for w, said, before, nxt in zip(fixed, words, [""] + fixed, fixed[1:] + [""])]
     read = tuple((said, w) for said, w in zip(words, out) if said != w)

@@ -1895,8 +1895,29 @@ IDIOMS = phrase_table({
     **{(*o, "the", "stalls"): _START for o in (("out", "of"), ("from",), ("in",), ("outta",))},
     **{(*c, *a, "the", "stalls", *f, "open", *e): _START for c in ((), (",",)) for a in (("as",), ("when",))
        for f in (("fly",), ("flew",), ("swing",), ("burst",), ("spring",)) for e in ((), (",",))},
-    **{(*c, d, "the", h, "straight", *e): ((",",) if c and e else ()) for c in ((), (",",))
-       for d in ("down", "up", "along", "into", "on") for h in ("home", "back", "far") for e in ((), (",",))},
+    **{(*c, d, "the", *h, "straight", *e): ((",",) if c and e else ()) for c in ((), (",",))
+       for d in ("down", "up", "along", "into", "on") for h in (("home",), ("back",), ("far",), ())
+       for e in ((), (",",))},
+    # ... a runner breaking or flying from the stalls starts ('breaks from the stalls', 'had broken fast from the
+    # start', 'had flown out of the stalls fast': no collision's break, no floating), and 'all race long'
+    **{(b, o, "the", g): (start,) for b, start in (("break", "start"), ("breaks", "starts"), ("broke", "started"),
+                                                   ("broken", "started"), ("breaking", "starting"),
+                                                   ("fly", "start"), ("flies", "starts"), ("flew", "started"),
+                                                   ("flown", "started"), ("flying", "starting"))
+       for o in ("from", "out") for g in ("stalls", "gates", "gate", "blocks")},
+    **{(b, "out", "of", "the", g): (start,) for b, start in (("fly", "start"), ("flies", "starts"),
+                                                            ("flew", "started"), ("flown", "started"),
+                                                            ("flying", "starting"), ("broke", "started"),
+                                                            ("broken", "started"), ("breaks", "starts"))
+       for g in ("stalls", "gates", "gate", "blocks")},
+    **{(b, pace): ("started", pace) for b in ("broke", "broken") for pace in ("fast", "slow", "slowly", "quickly")},
+    ("all", "race", "long"): (),
+    **{(*c, "in", "the", "thick", "of", *it): () for c in ((), (",",))
+       for it in (("it",), ("things",), ("the", "action"))},
+    # 'Turn back the clock, imagine ...': the imagining's own opener
+    **{(*t, *e): () for t in (("turn", "back", "the", "clock"), ("turn", "the", "clock", "back"),
+                              ("turning", "back", "the", "clock"), ("turning", "the", "clock", "back"))
+       for e in ((",",), (":",), (";",), ("-",))},
     # a therapist's ('Let us gently sit with the moment they collide :', 'in your own time', 'there are no wrong
     # answers here :') and a ringmaster's ('Behold the bus , children of all ages :', 'feast your eyes on')
     **{(*let, *g, v, "with"): () for let in (("let", "us"), ("let", "'", "s"), ("lets",))
@@ -2074,8 +2095,24 @@ IDIOMS = phrase_table({
     **{("come", "closer", ",", *c): () for c in ((), ("come", "closer", ","))},
     **{("step", "up", "and", "tell", "me"): ("tell", "me"), ("step", "right", "this", "way", "into"): ("imagine",)},
     **{("straight", "up", p): () for p in (",", "-", ":")},
-    **{("take", "your", "time", *w, p): () for w in ((), ("with", "this", "one"), ("with", "this", "one", ",", "speller"))
-       for p in (",", ":", ";", "-")},
+    **{(*a, "take", "your", "time", *w, p): () for w in ((), ("with", "this", "one"), ("with", "this", "one", ",", "speller"))
+       for p in (",", ":", ";", "-") for a in ((), ("and",))},
+    # an air traffic controller's 'stopped dead' and 'that traffic' (the one aircraft named before: 'One unit
+    # hovering at the start. Say colour of that traffic.')
+    **{(st, "dead"): (st,) for st in ("stopped", "stop", "stops", "halted", "stood", "sat")},
+    **{(d, "traffic"): (d, "vehicle") for d in ("that", "this")},
+    # a cartographer's path that brings a vehicle into collision, or a track that shows one ('would its path have
+    # brought it into collision with the cruiser', 'does the scooter's track show a collision with anything')
+    **{("its", p, "have", "brought", "it", "into", *a, "collision", "with"): ("it", "have", "collided", "with")
+       for p in ("path", "route", "track", "course", "trajectory") for a in ((), ("a",))},
+    **{("'", "s", p, show, "a", "collision"): ("have", "a", "collision")
+       for p in ("path", "route", "track", "course", "trajectory") for show in ("show", "record", "mark")},
+    # a data scientist's vectors ('direction vector for the tandem at the start: which way is it heading?')
+    **{(q, "vector"): (q,) for q in ("direction", "heading")},   # (a velocity vector is no speed class)
+    # a barrister's 'I'll ask you to assume ...' (the condition's own opener)
+    **{(*i, "ask", "you", "to", a): (a,) for i in (("i", "'", "ll"), ("i", "will"), ("i", "'", "d"), ("i", "would"),
+                                                   ("let", "me"))
+       for a in ("assume", "suppose", "imagine", "consider", "accept")},
     # a scout leader's ('eyes peeled ,', 'Think back over the clip , troop :')
     **{(*k, "eyes", "peeled", *p): () for k in ((), ("keep", "your")) for p in ((), (",",))},
     **{("think", "back", o, "the", f, p): () for o in ("over", "to", "on") for f in ("clip", "video", "footage")
