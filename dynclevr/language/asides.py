@@ -2033,6 +2033,9 @@ def verse_joined(text: str) -> str:
     return VERSE_BREAK.sub(" ", text) if in_verse(text) else text
 
 
+VERSION = re.compile(r"\b(?:v|ver\.? ?|version ?|build ?)?\d+(?:\.\d+){2,3}\b|\bv\d+(?:\.\d+)*\b", re.IGNORECASE)
+
+
 def _filler(words: list[str], unknown: set[str]) -> bool:
     """Whether a clause holds a word of `unknown` and says nothing of the domain."""
     return bool(set(words) & unknown) and not mentions(words) and not _says_something(words) and not set(words) & (
@@ -2053,13 +2056,16 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
     if asked is None:
         asked = next((k for k, m in enumerate(marks) if "." in m and mentions(tokenize(" ".join(clauses[:k + 1])))),
                      len(clauses))
+    # (a heading before the question's colon or dash: a bug report's 'Regression since 2.0.5 --')
+    heading = next((k for k, m in enumerate(marks[:asked]) if ":" in m or m.strip()[:1] in ("-", "—", "–")), -1)
     dropped = []
     for k, clause in enumerate(clauses):
-        words = tokenize(clause)
+        words = tokenize(VERSION.sub(" version ", clause))   # ('on 1.8.0', 'v3.8': no time)
         opening = next((w for w in words if w not in CLAUSE_LINKS), "")
         if opening == "let" and words[words.index("let") + 1:][:2] in (["'", "s"], ["us"]):   # 'Let's see if ...'
             opening = "us"
-        own = verse or opening in SPEAKER or k > asked or any(words[:len(o)] == o for o in SIMILE_OPENERS) or \
+        own = verse or opening in SPEAKER or k > asked or k <= heading or \
+            any(words[:len(o)] == o for o in SIMILE_OPENERS) or \
             k and words[:1] == ["for"]   # a purpose ('..., for entry in the accident register')
         if not own or not _filler(words, unknown):
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
@@ -2071,6 +2077,8 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         clauses[k] = ""
         if "?" in marks[k] and k and clauses[k - 1]:   # the question's own mark stays with it
             marks[k - 1] = marks[k - 1].rstrip().rstrip(",;:-—–") + "? "
+        elif ":" in marks[k] and k and clauses[k - 1]:   # and a heading's ('Quick one, no judgement pls: is ...')
+            marks[k - 1] = marks[k - 1].rstrip().rstrip(",;:-—–") + ": "
         marks[k] = ""
     if not dropped or not any(c.strip() for c in clauses):
         return None
@@ -2089,6 +2097,10 @@ REMARK_KEEPS = (CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING 
                 | {"yes", "no", "y", "n", "true", "false", "binary", "or"})   # an answer's form: '? (y/n)'
 
 
+TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build", "version", "ver", "priority",
+                  "severity", "filed", "repro", "reproduced", "regression", "tool", "observed", "result"}
+
+
 def remark_after_dropped(text: str) -> tuple[str, str] | None:
     """'Is the station wagon static at the start? looks parked but the motion estimate is noisy' -> ('Is the station
     wagon static at the start?', 'looks parked but the motion estimate is noisy'); None where nothing follows the
@@ -2098,7 +2110,12 @@ def remark_after_dropped(text: str) -> tuple[str, str] | None:
     asked = text.rfind("?")
     remark = text[asked + 1:].strip()
     words = tokenize(remark)
-    if asked < 0 or not words or mentions(words) or REMARK_KEEPS & set(words) or asks_impact(words) or \
+    if asked < 0 or not words:
+        return None
+    # (a bug report's expected and actual answers and its version: '? Expected yes/no, actual null. v3.8')
+    if words[0] in TICKET_REMARKS or VERSION.match(remark):
+        return None if (CONDITION_OPENERS | IMAGINED_SAID) & set(words) else (text[:asked + 1], remark)
+    if mentions(words) or REMARK_KEEPS & set(words) or asks_impact(words) or \
             any(impact_like(w) for w in words if len(w) > 4):
         return None
     return text[:asked + 1], remark

@@ -102,16 +102,16 @@ from dynclevr.language.tokenize import SPELLINGS, tokenize
 from dynclevr.language.vocab import (SPECIALS, UNK_ID, Vocab, dropped_g, rejoined, run_together, scanned, slipped,
                                      slips, sound_index, stretched)
 from dynclevr.language.wordings import (alternatives_as_asked, attention_as_subject, attributes_offered_dropped,
-                                        clause_comma_added, choices_as_which, class_as_asked, cleft_as_asked,
-                                        comparative_as_said, condition_named_as_said, contact_made_as_active,
-                                        contest_as_compared, drive_on_as_hit, floating_plane_as_vehicle,
-                                        pair_colour_shared, fronted_value_as_asked, fronted_whether_as_asked,
-                                        heading_as_direction, height_as_aloft, idioms_as_said, imperative_as_stated,
-                                        inverted_as_asked, let_dropped, negative_question_as_asked,
-                                        noun_phrase_as_question, opposed_dropped, request_after_setting,
-                                        request_as_imperative, restated_dropped, similes_dropped, speed_as_subject,
-                                        struck_as_active, tail_as_question, trajectory_as_collision, type_as_said,
-                                        type_of_category_as_vehicle, verbless_comparison_asked)
+                                        clause_comma_added, choices_as_which, class_as_asked, classed_as_asked,
+                                        cleft_as_asked, comparative_as_said, condition_named_as_said,
+                                        contact_made_as_active, contest_as_compared, drive_on_as_hit,
+                                        floating_plane_as_vehicle, pair_colour_shared, fronted_value_as_asked,
+                                        fronted_whether_as_asked, heading_as_direction, height_as_aloft, idioms_as_said,
+                                        imperative_as_stated, inverted_as_asked, let_dropped,
+                                        negative_question_as_asked, noun_phrase_as_question, opposed_dropped,
+                                        request_after_setting, request_as_imperative, restated_dropped, similes_dropped,
+                                        speed_as_subject, struck_as_active, tail_as_question, trajectory_as_collision,
+                                        type_as_said, type_of_category_as_vehicle, verbless_comparison_asked)
 from dynclevr.language.words import (AUXILIARIES, COMES_IN_WORDS, COMPARISONS, CONDITION_WORDS, DETERMINERS, DURATIONS,
                                      GENERIC, GENERIC_NOUNS, LOOKS, MOTION_NOUNS, NAMING, NUMBERS, OTHER_COLOURS,
                                      PLURALS, SPEED_CLASS_WORDS, SPEED_NOUNS, SPEED_ORDER, START_WORDS, TIME_OPENERS,
@@ -254,13 +254,18 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
-        # ... and a question refused with a remark after it, read again without the remark
+        # ... and a question refused with a remark after it, read again without the remark (and then without the
+        # clauses of its own that hold a word it does not know)
         retries = {i: cut for i, (text, p) in enumerate(zip(texts, parses)) if p.program is None and
                    (cut := remark_after_dropped(text))}
-        for (i, (_, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
+        for (i, (cut, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
+            remark = (dropped, "nothing, a remark after the question")
+            if again.program is None and (unknown := _unknown_named(again.reason)) and \
+                    (cut_again := speaker_clauses_dropped(cut, unknown)):
+                again = replace(self._analysed([cut_again[0]])[0], read_as=(
+                    (cut_again[1], "nothing, the speaker's own words"), *again.read_as))
             if again.program:
-                parses[i] = replace(again, read_as=((dropped, "nothing, a remark after the question"),
-                                                    *again.read_as))
+                parses[i] = replace(again, read_as=(remark, *again.read_as))
         return parses
 
     def _analysed(self, texts: list[str]) -> list[Parse]:
@@ -504,6 +509,8 @@ class QuestionParser:
         negative = fronted + negative
         words, asked = noun_phrase_as_question(words)
         words, classed = class_as_asked(words)
+        words, classed_as = classed_as_asked(words)
+        classed += classed_as
         asked += classed
         words, aloft = height_as_aloft(words)
         words, heading = heading_as_direction(words)

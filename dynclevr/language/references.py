@@ -80,6 +80,8 @@ _SHADES = {(said, colour) for shade, colour in COLOUR_SHADES.items() for said in
 _ORDINARY = {((bus, "(", "the", plain, sort, ")"), "regular bus") for bus in ("bus", "omnibus")
              for plain in ("ordinary", "regular", "normal", "usual", "standard", "plain")
              for sort in ("sort", "kind", "type", "variety")}
+# a plane that is no aeroplane: an architect's 'the ground plane', 'the image plane'
+_FLAT = {((f, "plane"), f) for f in ("ground", "image", "picture", "horizontal", "vertical", "floor", "focal")}
 # A category as people say it, for a sub-type said with its category ('the fighter plane', 'the sedan car').
 CATEGORY_SAID = {"aeroplane": ("aeroplane", "plane", "aircraft"), "bicycle": ("bicycle", "bike"),
                  "bus": ("bus", "coach"), "car": ("car", "automobile", "motorcar", "motor car"),
@@ -108,7 +110,7 @@ _EVERYDAY = phrase_table((w, tuple(said.split())) for w, said in sorted(
     {(w, said) for name, said in [*((v.replace("_", " "), v.replace("_", " ")) for v in SUBTYPES),
                                   *EVERYDAY_NAMES.items()] for w in _written(name)}
     | {((*v.split("_"), *c.split()), v.replace("_", " ")) for v in SUBTYPES for c in CATEGORY_SAID[SUBTYPES[v][0]]}
-    | _SHADES | _ORDINARY, key=lambda kv: (-len(kv[0]), kv)))
+    | _SHADES | _ORDINARY | _FLAT, key=lambda kv: (-len(kv[0]), kv)))
 
 
 _PAIRED: dict[int, tuple[object, dict]] = {}

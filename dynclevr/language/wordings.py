@@ -488,6 +488,35 @@ def class_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     return words, ()
 
 
+CLASSING = {"classified", "classed", "categorised", "categorized", "described", "rated", "labelled", "labeled",
+            "logged", "recorded", "graded", "filed", "shaded", "marked", "entered", "characterised", "characterized"}
+
+
+CLASS_VERBS = {"classify", "class", "categorise", "categorize", "describe", "rate", "label", "log", "record",
+               "grade", "file", "shade", "mark", "enter", "characterise", "characterize", "put", "color", "colour"}
+
+
+def classed_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'how should the brown car be classified in the opening moments : static , slow or fast ?' -> 'what is the
+    speed of the brown car in the opening moments : ...': a vehicle, or its speed, to be put in the class the choices
+    offer. With the words read so, or the words as they are and ()."""
+    k = next((k for k in range(len(words) - 1) if words[k:k + 2] in (["how", "should"], ["how", "would"],
+                                                                     ["how", "shall"])), None)
+    # (or its classing said by the speaker: 'how should I shade the double-decker's speed at that moment : ...')
+    if k is not None and words[k + 2:k + 3] in (["i"], ["we"], ["one"], ["you"]) and words[k + 3:k + 4] and \
+            words[k + 3] in CLASS_VERBS and {"static", "slow", "fast"} <= set(words):
+        out = [*words[:k], "what", "is", *words[k + 4:]]
+        return out, ((" ".join(words[k:k + 4]), "what is"),)
+    be = words.index("be", k + 2) if k is not None and "be" in words[k + 2:k + 10] else None
+    if be is None or words[be + 1:be + 2] == [] or words[be + 1] not in CLASSING or not (
+            {"static", "slow", "fast"} <= set(words) or {"speed", "velocity", "pace"} & set(words[k + 2:be])):
+        return words, ()
+    subject = words[k + 2:be]
+    asked = ["what", "is", *subject] if {"speed", "velocity", "pace"} & set(subject) else \
+        ["what", "is", "the", "speed", "of", *subject]
+    return [*words[:k], *asked, *words[be + 2:]], ((" ".join(words[k:be + 2]), " ".join(asked)),)
+
+
 def noun_phrase_as_question(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """A question said as the noun phrase it asks for ('speed of the red car at the start?', 'the colour of the
     thing that floats?', 'blue scooter speed at the start?'), or asked for by 'tell me' ('tell me the speed of the
@@ -2109,6 +2138,22 @@ IDIOMS = phrase_table({
        for p in ("path", "route", "track", "course", "trajectory") for show in ("show", "record", "mark")},
     # a data scientist's vectors ('direction vector for the tandem at the start: which way is it heading?')
     **{(q, "vector"): (q,) for q in ("direction", "heading")},   # (a velocity vector is no speed class)
+    # a support agent's 'can you help me identify' (tell me)
+    **{(*c, "help", "me", v): ("tell", "me") for c in ((), ("can", "you"), ("could", "you"))
+       for v in ("identify", "find", "determine", "tell", "figure", "establish", "confirm", "know")},
+    # an architect's 'along what heading' (the direction), a duration the whole video lasts, a vehicle's finish (its paint),
+    # 'how would one categorise the bus's speed', 'does the bus carry the greater speed of the two'
+    **{(p, w, h): ("in", w, "direction") for p in ("along", "under", "with") for w in ("what", "which")
+       for h in ("heading", "bearing", "course", "direction")},
+    **{(o, "the", *f, "duration", "of", "the"): ("in", "the") for o in ("over", "for", "during", "throughout")
+       for f in ((), ("full",), ("entire",), ("whole",))},
+    **{(c, "is", "its", f): (c, "is", "it") for c in ("colour", "color") for f in ("finish", "paint", "paintwork")},
+    **{("how", "would", w, v): ("what", "is") for w in ("one", "you", "we", "i")
+       for v in ("categorise", "categorize", "classify", "describe", "rate", "class")},
+    **{(c, "the", g, "speed", "of", "the", "two"): ("move", "faster") for g in ("greater", "higher")
+       for c in ("carry", "have", "carries", "has", "hold", "holds")},
+    **{(c, "the", g, "speed", "of", "the", "two"): ("move", "slower") for g in ("lesser", "lower", "smaller")
+       for c in ("carry", "have", "carries", "has", "hold", "holds")},
     # a barrister's 'I'll ask you to assume ...' (the condition's own opener)
     **{(*i, "ask", "you", "to", a): (a,) for i in (("i", "'", "ll"), ("i", "will"), ("i", "'", "d"), ("i", "would"),
                                                    ("let", "me"))

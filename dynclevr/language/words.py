@@ -183,7 +183,9 @@ STOPPED_SAID = (["stop"], ["stops"], ["stopped"], ["halted"], ["paused"], ["froz
                 *([*v, "cut", "off"] for v in (["is"], ["was"], ["gets"], ["got"], ["has", "been"])),
                 *(["'", "s", *been, p] for p in ("stopped", "halted", "paused", "frozen") for been in ((), ("been",))),
                 # learners' ('Video is stopping in the middle', 'Video is cut in between')
-                ["is", "stopping"], *([*v, "cut", "in", "between"] for v in ((), ("is",), ("was",))))
+                ["is", "stopping"], *([*v, "cut", "in", "between"] for v in ((), ("is",), ("was",))),
+                # a narrator's ('Our footage falls silent part-way through.')
+                *([f, "silent"] for f in ("falls", "fell", "goes", "went", "gone")))
 START_ADJECTIVES = {"initial", "starting", "start", "beginning", "first", "opening"}
 REST_WORDS = {"static", "stationary", "still", "stop", "stops", "stopped", "stopping", "parked", "park", "rest",
               "motionless", "standing", "stand", "stands", "stood", "standstill", "halt", "halted", "idle", "stay",
