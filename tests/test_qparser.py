@@ -25,7 +25,8 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      in_verse, speaker_clauses_dropped, ticket_fields_read, wagers_read)
+                                      in_verse, remark_after_dropped, speaker_clauses_dropped, ticket_fields_read,
+                                      wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5225,3 +5226,62 @@ def test_a_form_letter_s_references_and_a_field_note_s_predicates_are_read():
     assert parser.parse("When the purple minivan hits the red pickup: moving fast? Faster than any ice.") is None
     # a note's predicate after a sentence that says something of its own stays unread
     assert parser.parse("The yellow pickup is fast. Moving fast?") is None
+
+
+def test_an_instruction_a_remark_after_the_question_a_sign_off_and_a_stage_direction_are_read():
+    parser = QuestionParser.load()
+    swap, ablation, remark, over, spoken, bracket, stalls, carry = parser.parse_batch([
+        "swap in a fast initial speed for the brown biplane: does it then crash into the purple biplane?",
+        "ablation: freeze the gray cruiser, static from the first frame. would it still hit the gray dirtbike?",
+        "is the station wagon static at the start? looks parked but the motion estimate is noisy",
+        "Give me the cyan cruiser's speed as the video opens. Static, slow or fast? Over.",
+        "Brown aircraft, you hit the cyan chopper. Were you slow at the moment of impact? Over.",
+        "Q. The brown one, in the first frames [indicating], was it merely creeping along, moving slowly?",
+        "If the brown tandem bike had flown out of the stalls fast from the start, would it still have hit the green "
+        "station wagon?",
+        "What speed does the bus carry as it appears?"])
+    assert swap[4] == "Counterfactual_moving_fast" and ablation[4] == "Counterfactual_static"
+    assert remark == ["Objects", "filter_attributes[wagon]", "unique", "start", "is_static"]
+    assert over[-2:] == ["start", "query_moving_velocity"] and spoken[-1] == "is_moving_velocity[slow]"
+    assert bracket[-1] == "is_moving_velocity[slow]" and stalls[4] == "Counterfactual_moving_fast"
+    assert carry[-2:] == ["come_in_frame", "query_moving_velocity"] and "filter_attributes[car]" not in carry
+    # a change told without its time is refused, never read as what the video shows; 'freeze the film' and 'give me'
+    # tell none, and 'start of the clip' is no 'start the bus'
+    told = parser.analyse_batch(["swap in a fast speed for the brown biplane. does it then crash into the purple "
+                                 "biplane?"])[0]
+    assert told.program is None and "tells a change" in told.reason
+    film, start = parser.parse_batch([
+        "Freeze the film at the event where the car hits the cyan jet: what's the car's speed there, static, slow or "
+        "fast?", "Start of the clip, the bus is parked. Does it hit the car?"])
+    assert film[-1] == "query_moving_velocity" and start[0] == "Events"
+    # an answer's form after the question stays with it, and so does a remark that names a vehicle
+    assert parser.parse("Subject: yellow motorbike; State @ start = not moving? (y/n)") is None
+    assert remark_after_dropped("At the start, is the yellow bus slower than the green airliner? (bus vs plane, odd "
+                                "pair, but ok)") is None
+    assert remark_after_dropped("Is the bus fast? Looks it.") == ("Is the bus fast?", "Looks it.")
+
+
+def test_a_bug_report_an_architect_s_elements_and_a_speed_to_be_classified_are_read():
+    parser = QuestionParser.load()
+    report, heading, element, ground, classed, shaded, along = parser.parse_batch([
+        "At the start of the clip, is the yellow bicycle moving faster than the cyan scooter? Expected yes/no -- "
+        "actual answer flips on reload. 7.2.1",
+        "Regression since 2.0.5 -- did the dirtbike and the cruiser collide at any point in the video? Expected "
+        "answer: yes or no; actual: the tool hangs.",
+        "At the outset, is the red element slower than the purple cruiser?",
+        "As the clip opens, is the cyan tandem bike moving at a slow pace across the ground plane?",
+        "For the speed schedule, how should the brown car be classified in the opening moments: static, slow or fast?",
+        "Where the cyan double-decker meets the purple double-decker, how should I shade the cyan double-decker's "
+        "speed at that moment: static, slow or fast?",
+        "Along what heading is the cyan cruiser travelling at the instant it strikes the brown scooter?"])
+    assert report[-1] == "faster_velocity" and heading[0] == "Events" and element[-1] == "slower_velocity"
+    assert ground == ["Objects", "filter_attributes[cyan]", "filter_attributes[tandem_bike]", "unique", "start",
+                      "is_moving_velocity[slow]"]
+    assert classed[-2:] == ["start", "query_moving_velocity"] and shaded[-1] == "query_moving_velocity"
+    assert along[-1] == "query_moving_direction"
+    # a label of a condition said after it, and a runner's stalls
+    what_if, straight = parser.parse_batch([
+        "What-if for you: bicycle stopped dead from the start. Does it hit the blue station wagon in that case? Over.",
+        "Red double-decker, cyan motorbike, side by side down the straight: did the red double-decker and the cyan "
+        "motorbike collide at any point?"])
+    assert what_if[3] == "Counterfactual_static" and straight[0] == "Events"
