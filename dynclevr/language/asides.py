@@ -2077,8 +2077,8 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         clauses[k] = ""
         if "?" in marks[k] and k and clauses[k - 1]:   # the question's own mark stays with it
             marks[k - 1] = marks[k - 1].rstrip().rstrip(",;:-—–") + "? "
-        elif ":" in marks[k] and k and clauses[k - 1]:   # and a heading's ('Quick one, no judgement pls: is ...')
-            marks[k - 1] = marks[k - 1].rstrip().rstrip(",;:-—–") + ": "
+        elif ":" in marks[k] and k and clauses[k - 1] and marks[k - 1].strip() == ",":
+            marks[k - 1] = ": "   # and a heading's ('Quick one, no judgement pls: is ...')
         marks[k] = ""
     if not dropped or not any(c.strip() for c in clauses):
         return None
@@ -2099,6 +2099,29 @@ REMARK_KEEPS = (CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING 
 
 TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build", "version", "ver", "priority",
                   "severity", "filed", "repro", "reproduced", "regression", "tool", "observed", "result"}
+
+
+def simile_closing_dropped(text: str) -> tuple[str, str] | None:
+    """'Is the red jet hovering in the air, like a meringue that won't settle?' -> ('Is the red jet hovering in the
+    air?', 'like a meringue that won't settle'): a simile closing the question (after a comma, or a dash), that names
+    nothing the question could ask; None where there is none."""
+    if not isinstance(text, str) or not text.rstrip().endswith("?"):
+        return None
+    body = text.rstrip()[:-1]
+    cut = max(body.rfind(", "), body.rfind(" — "), body.rfind(" - "))
+    # (or said within the clause: ', its engine awake like a dragon stirring from its hoard?')
+    cut = body.rfind(" like ") if " like " in body[max(cut, 0):] and body.rfind(" like ") > cut + 3 else cut
+    simile = body[cut:].lstrip(",—- ").strip() if cut > 0 else ""
+    words = [] if re.search(r"[.?!:;…]", simile) else tokenize(simile)   # (the question's own last clause)
+    if "or" in tokenize(body[:cut])[-6:]:
+        return None   # (the question's other side: '..., or'd they pass like two boats on the lake?')
+    if not words or not (any(words[:len(o)] == o for o in SIMILE_OPENERS) or words[0] == "as" and words[1:2] and
+                         words[1] not in ASKING | {"it", "they", "the", "soon", "fast", "slow", "slowly", "quickly"}
+                         | COMES_IN_WORDS) or \
+            mentions(words) or REMARK_KEEPS & set(words) - NEGATIONS - {"would", "will", "never"} or \
+            asks_impact(words):   # (one that speaks of a collision stays: '..., the way my line tangled with ...?')
+        return None
+    return body[:cut].rstrip() + "?", simile
 
 
 def remark_after_dropped(text: str) -> tuple[str, str] | None:

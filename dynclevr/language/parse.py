@@ -57,9 +57,10 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       grumble_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked, in_verse,
                                       interjections_dropped, owners_dropped, person_remark_dropped, preamble_dropped,
                                       prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
-                                      remark_after_dropped, requested_as_asked, restatements_read, soothing_dropped,
-                                      speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read, verse_joined,
-                                      wagers_read, word_given_dropped)
+                                      remark_after_dropped, requested_as_asked, restatements_read,
+                                      simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
+                                      speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
+                                      word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -254,19 +255,25 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
-        # ... and a question refused with a remark after it, read again without the remark (and then without the
-        # clauses of its own that hold a word it does not know)
+        # ... and one refused with a remark after it or a simile closing it, read again without them
+        for cutter, said in ((remark_after_dropped, "nothing, a remark after the question"),
+                             (simile_closing_dropped, "nothing, a simile")):
+            self._read_cut(texts, parses, cutter, said)
+        return parses
+
+    def _read_cut(self, texts: list[str], parses: list[Parse], cutter, said: str) -> None:
+        """Each refused question that `cutter` cuts read again without what it cuts (and then without the clauses
+        of its own that hold a word the parser does not know); where that reads, the reading, the cut as `said`."""
         retries = {i: cut for i, (text, p) in enumerate(zip(texts, parses)) if p.program is None and
-                   (cut := remark_after_dropped(text))}
+                   (cut := cutter(text))}
         for (i, (cut, dropped)), again in zip(retries.items(), self._analysed([cut for cut, _ in retries.values()])):
-            remark = (dropped, "nothing, a remark after the question")
+            remark = (dropped, said)
             if again.program is None and (unknown := _unknown_named(again.reason)) and \
                     (cut_again := speaker_clauses_dropped(cut, unknown)):
                 again = replace(self._analysed([cut_again[0]])[0], read_as=(
                     (cut_again[1], "nothing, the speaker's own words"), *again.read_as))
             if again.program:
                 parses[i] = replace(again, read_as=(remark, *again.read_as))
-        return parses
 
     def _analysed(self, texts: list[str]) -> list[Parse]:
         # Each question is read as said and, where it opens with a clause of time, with the clause put last

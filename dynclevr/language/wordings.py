@@ -2138,6 +2138,14 @@ IDIOMS = phrase_table({
        for p in ("path", "route", "track", "course", "trajectory") for show in ("show", "record", "mark")},
     # a data scientist's vectors ('direction vector for the tandem at the start: which way is it heading?')
     **{(q, "vector"): (q,) for q in ("direction", "heading")},   # (a velocity vector is no speed class)
+    # a mathematician's 'strictly less than that of' (a speed's, the one quantity compared here) and 'is there an
+    # instant in the video at which they collide'
+    **{("strictly", c): (c,) for c in ("less", "greater", "smaller", "larger", "lower", "higher", "slower", "faster")},
+    **{(*st, c, "than", "that", "of"): (k, "than", "that", "of") for st in ((), ("strictly",))
+       for c, k in (("less", "lower"), ("smaller", "lower"), ("greater", "higher"), ("larger", "higher"),
+                    ("bigger", "higher"))},
+    **{("is", "there", a, i, "in", "the", f, "at", w): ("do",) for a in ("a", "an", "any", "some")
+       for i in ("instant", "moment", "time", "point", "frame") for f in FILM_WORDS for w in ("which", "when")},
     # a support agent's 'can you help me identify' (tell me)
     **{(*c, "help", "me", v): ("tell", "me") for c in ((), ("can", "you"), ("could", "you"))
        for v in ("identify", "find", "determine", "tell", "figure", "establish", "confirm", "know")},
