@@ -25,8 +25,8 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      in_verse, remark_after_dropped, speaker_clauses_dropped, ticket_fields_read,
-                                      wagers_read)
+                                      heading_dropped, in_verse, remark_after_dropped, simile_closing_dropped,
+                                      speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5285,3 +5285,27 @@ def test_a_bug_report_an_architect_s_elements_and_a_speed_to_be_classified_are_r
         "Red double-decker, cyan motorbike, side by side down the straight: did the red double-decker and the cyan "
         "motorbike collide at any point?"])
     assert what_if[3] == "Counterfactual_static" and straight[0] == "Events"
+
+
+def test_a_simile_closing_the_question_and_a_heading_that_says_nothing_new_are_read_as_nothing():
+    parser = QuestionParser.load()
+    meringue, dragon, strictly, instant = parser.parse_batch([
+        "Just as the video starts, is the red jet hovering in the air, like a meringue that won't settle?",
+        "Is the gray car quickening its pace when the video begins, its engine awake like a dragon stirring from its "
+        "hoard?",
+        "When the brown cruiser and the blue vehicle collide, is the speed of the brown cruiser strictly smaller than "
+        "that of the blue vehicle?",
+        "Is there an instant in the video at which the red vehicle and the green city bus collide?"])
+    assert meringue[-1] == "is_floating" and dragon[-1] == "is_accelerating"
+    assert strictly[-1] == "slower_velocity" and instant[0] == "Events" and instant[-1] == "exist"
+    # a simile that is the question's other side, or stands before a sentence of its own, stays
+    assert simile_closing_dropped("Did the green bus bump into the plane, or'd they pass like two boats on the lake "
+                                  "at dawn?") is None
+    assert simile_closing_dropped("The red utility bike slams into a vehicle, like rockfall hitting the route: what "
+                                  "kind of vehicle does it hit?") is None
+    # a heading goes only where it says nothing the question does not say again
+    assert heading_dropped("Family-sized and refreshingly cyan: when the cyan station wagon hits the gray one, is it "
+                           "moving slower than the gray one?")[1] == "Family-sized and refreshingly cyan"
+    assert heading_dropped("for t > T_cut: does the jet hit anything?") is None
+    assert heading_dropped("Put the brown bus and the green sedan side by side at the start of the video: is the "
+                           "brown bus travelling faster than the green sedan?") is None

@@ -2124,6 +2124,27 @@ def simile_closing_dropped(text: str) -> tuple[str, str] | None:
     return body[:cut].rstrip() + "?", simile
 
 
+def heading_dropped(text: str) -> tuple[str, str] | None:
+    """'Put the brown bus and the green sedan side by side on the baking sheet at the start of the video: is the brown
+    bus travelling faster than the green sedan?' -> ('is the brown bus ...?', 'Put the brown bus ...'): a heading
+    before the question's colon that says nothing the question does not say again (its vehicles, its time) and
+    imagines nothing; None where there is none."""
+    if not isinstance(text, str) or ":" not in text or not text.rstrip().endswith("?"):
+        return None
+    heading, _, question = text.partition(":")
+    said, asked = tokenize(heading), tokenize(question)
+    runs = mentions(said)
+    # what the heading says beside its vehicles and the words the question says again: nothing, in words
+    rest = [w for k, w in enumerate(said) if not any(a <= k < b for a, b, _ in runs) and w not in asked]
+    if not said or not asked or re.search(r"[?!]", heading) or \
+            not {tuple(r) for _, _, r in runs} <= {tuple(r) for _, _, r in mentions(asked)} or \
+            _says_something(rest) or any(not (w.isalpha() or w in (",", "-", "'", ".")) for w in rest) or \
+            (CONDITION_OPENERS | IMAGINED_SAID | IMAGINING | CONDITION_LABELS | STOP_CUES | FUTURE_CUES
+             | {"set", "cut"}) & set(said) or asks_impact(said) and not asks_impact(asked):
+        return None
+    return question.strip(), heading.strip()
+
+
 def remark_after_dropped(text: str) -> tuple[str, str] | None:
     """'Is the station wagon static at the start? looks parked but the motion estimate is noisy' -> ('Is the station
     wagon static at the start?', 'looks parked but the motion estimate is noisy'); None where nothing follows the

@@ -54,13 +54,13 @@ from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, addressees_dropped, asides_dropped, calls_read,
                                       corrections_dropped, digressions_dropped, dislocated_as_asked,
                                       distractors_dropped, examination_as_asked, forecast_dropped, framing_dropped,
-                                      grumble_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked, in_verse,
-                                      interjections_dropped, owners_dropped, person_remark_dropped, preamble_dropped,
-                                      prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
-                                      remark_after_dropped, requested_as_asked, restatements_read,
-                                      simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
-                                      speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
-                                      word_given_dropped)
+                                      grumble_dropped, heading_dropped, hedges_dropped, hooks_dropped,
+                                      hypothesis_as_asked, in_verse, interjections_dropped, owners_dropped,
+                                      person_remark_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
+                                      radio_as_asked, ramble_dropped, remark_after_dropped, requested_as_asked,
+                                      restatements_read, simile_closing_dropped, soothing_dropped,
+                                      speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read, verse_joined,
+                                      wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -255,9 +255,11 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
-        # ... and one refused with a remark after it or a simile closing it, read again without them
+        # ... and one refused with a remark after it, a simile closing it or a heading before it, read again without
+        # them
         for cutter, said in ((remark_after_dropped, "nothing, a remark after the question"),
-                             (simile_closing_dropped, "nothing, a simile")):
+                             (simile_closing_dropped, "nothing, a simile"),
+                             (heading_dropped, "nothing, a heading that says nothing the question does not")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 
