@@ -2067,6 +2067,10 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         own = verse or opening in SPEAKER or k > asked or k <= heading or \
             any(words[:len(o)] == o for o in SIMILE_OPENERS) or \
             k and words[:1] == ["for"]   # a purpose ('..., for entry in the accident register')
+        # (a clause of the speaker's own time: 'before we loosen anything up', 'while I think')
+        ours = words[:1] in (["before"], ["while"], ["until"]) and words[1:2] and words[1] in SPEAKER
+        if ours and _filler(words[2:], unknown):
+            own, words = True, words[2:]
         if not own or not _filler(words, unknown):
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
             if like and head.strip() and _filler(tokenize(like + tail), unknown):

@@ -60,7 +60,8 @@ def time_clause_closed(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
 # A time said by its frame or its clock ('at t = 0', 'at frame 0'), and the first frame that shows an object ('in
 # the first frame in which it is visible'): the grammar's start and its coming into view.
 TIME_ZERO = (["t", "=", "0"], ["t", "0"], ["t0"], ["time", "0"], ["time", "zero"], ["frame", "0"], ["frame", "zero"],
-             ["frame", "1"], ["frame", "one"])
+             ["frame", "1"], ["frame", "one"],
+             ["0000", "hours"], ["0000", "hrs"], ["0000"], ["zero", "hundred", "hours"])   # a watch log's clock
 SEEN = (["is", "visible"], ["is", "seen"], ["appears"], ["shows", "up"], ["becomes", "visible"], ["is", "in", "view"],
         ["comes", "into", "view"], ["is", "in", "sight"])
 

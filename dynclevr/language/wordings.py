@@ -501,12 +501,14 @@ def classed_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str]
     speed of the brown car in the opening moments : ...': a vehicle, or its speed, to be put in the class the choices
     offer. With the words read so, or the words as they are and ()."""
     k = next((k for k in range(len(words) - 1) if words[k:k + 2] in (["how", "should"], ["how", "would"],
-                                                                     ["how", "shall"])), None)
-    # (or its classing said by the speaker: 'how should I shade the double-decker's speed at that moment : ...')
+                                                                     ["how", "shall"], ["how", "do"])), None)
+    # (or its classing said by the speaker: 'how should I shade the double-decker's speed at that moment : ...',
+    # 'how do I log it : stationary , slow or fast ?')
     if k is not None and words[k + 2:k + 3] in (["i"], ["we"], ["one"], ["you"]) and words[k + 3:k + 4] and \
             words[k + 3] in CLASS_VERBS and {"static", "slow", "fast"} <= set(words):
-        out = [*words[:k], "what", "is", *words[k + 4:]]
-        return out, ((" ".join(words[k:k + 4]), "what is"),)
+        asked = ["what", "is", "its", "speed"] if words[k + 4:k + 5] == ["it"] else ["what", "is"]
+        out = [*words[:k], *asked, *words[k + 4 + (words[k + 4:k + 5] == ["it"]):]]
+        return out, ((" ".join(words[k:k + 4 + (words[k + 4:k + 5] == ["it"])]), " ".join(asked)),)
     be = words.index("be", k + 2) if k is not None and "be" in words[k + 2:k + 10] else None
     if be is None or words[be + 1:be + 2] == [] or words[be + 1] not in CLASSING or not (
             {"static", "slow", "fast"} <= set(words) or {"speed", "velocity", "pace"} & set(words[k + 2:be])):
@@ -2146,6 +2148,13 @@ IDIOMS = phrase_table({
                     ("bigger", "higher"))},
     **{("is", "there", a, i, "in", "the", f, "at", w): ("do",) for a in ("a", "an", "any", "some")
        for i in ("instant", "moment", "time", "point", "frame") for f in FILM_WORDS for w in ("which", "when")},
+    # the frames the speaker has seen ('after the frames we've watched', 'after the frames we have beheld'), and a
+    # speaker's word before the choices ('..., I'm talking static, slow or fast?', 'and I'll give ya the options,')
+    **{("after", "the", f, "we", *a, v): ("after", "the", "video") for f in ("frames", "footage", "clip", "video")
+       for a in ((), ("'", "ve"), ("have",), ("'", "ve", "been"), ("have", "been"), ("were",), ("'", "re"))
+       for v in ("seen", "watched", "beheld", "shown", "viewed", "got", "given", "saw")},
+    **{(",", "i", "'", "m", "talking"): (",",), (",", "and", "i", "'", "ll", "give", "you", "the", "options", ","): (",",),
+       (",", "and", "i", "'", "ll", "give", "ya", "the", "options", ","): (",",)},
     # a support agent's 'can you help me identify' (tell me)
     **{(*c, "help", "me", v): ("tell", "me") for c in ((), ("can", "you"), ("could", "you"))
        for v in ("identify", "find", "determine", "tell", "figure", "establish", "confirm", "know")},
