@@ -2101,10 +2101,6 @@ REMARK_KEEPS = (CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING 
                 | {"yes", "no", "y", "n", "true", "false", "binary", "or"})   # an answer's form: '? (y/n)'
 
 
-TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build", "version", "ver", "priority",
-                  "severity", "filed", "repro", "reproduced", "regression", "tool", "observed", "result"}
-
-
 def simile_closing_dropped(text: str) -> tuple[str, str] | None:
     """'Is the red jet hovering in the air, like a meringue that won't settle?' -> ('Is the red jet hovering in the
     air?', 'like a meringue that won't settle'): a simile closing the question (after a comma, or a dash), that names
@@ -2129,10 +2125,11 @@ def simile_closing_dropped(text: str) -> tuple[str, str] | None:
 
 
 def heading_dropped(text: str) -> tuple[str, str] | None:
-    """'Put the brown bus and the green sedan side by side on the baking sheet at the start of the video: is the brown
-    bus travelling faster than the green sedan?' -> ('is the brown bus ...?', 'Put the brown bus ...'): a heading
-    before the question's colon that says nothing the question does not say again (its vehicles, its time) and
-    imagines nothing; None where there is none."""
+    """'Family-sized and refreshingly cyan: when the cyan station wagon hits the gray one, is it moving slower than
+    the gray one?' -> ('when the cyan station wagon hits ...?', 'Family-sized and refreshingly cyan'): a heading
+    before the question's colon that, beside the vehicles the question names again, says nothing the question does
+    not say too (no time, stop, condition, setting or symbol); None where there is none ('Put the brown bus ... at the
+    start of the video: is the brown bus travelling faster ...?' says a time the question does not)."""
     if not isinstance(text, str) or ":" not in text or not text.rstrip().endswith("?"):
         return None
     heading, _, question = text.partition(":")
@@ -2147,6 +2144,10 @@ def heading_dropped(text: str) -> tuple[str, str] | None:
              | {"set", "cut"}) & set(said) or asks_impact(said) and not asks_impact(asked):
         return None
     return question.strip(), heading.strip()
+
+
+TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build", "version", "ver", "priority",
+                  "severity", "filed", "repro", "reproduced", "regression", "tool", "observed", "result"}
 
 
 def remark_after_dropped(text: str) -> tuple[str, str] | None:

@@ -1244,7 +1244,6 @@ def _instructs(sentence: list[str]) -> str | None:
         told[0] in NAMING | set(COLOR_NAMES) or told[0] in SET_VALUES)) else None   # not 'freeze the film'
 
 
-
 def _labelled(sentence: list[str]) -> int:
     """Where a sentence says something after its condition's label ('ablation : freeze the cruiser ...' -> 2), or 0."""
     colon = sentence.index(":") if ":" in sentence[:4] else None
