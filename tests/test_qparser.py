@@ -25,8 +25,8 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
                                       hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
                                       proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      heading_dropped, in_verse, remark_after_dropped, simile_closing_dropped,
-                                      speaker_clauses_dropped, ticket_fields_read, wagers_read)
+                                      heading_dropped, in_verse, log_stamp_dropped, remark_after_dropped,
+                                      simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5309,3 +5309,18 @@ def test_a_simile_closing_the_question_and_a_heading_that_says_nothing_new_are_r
     assert heading_dropped("for t > T_cut: does the jet hit anything?") is None
     assert heading_dropped("Put the brown bus and the green sedan side by side at the start of the video: is the "
                            "brown bus travelling faster than the green sedan?") is None
+
+
+def test_a_field_log_s_clock_and_a_contract_s_parties_are_read_as_nothing():
+    parser = QuestionParser.load()
+    speed, conjecture, party, bound = parser.parse_batch([
+        "1849h. Car at the start of the clip. Speed class: static, slow or fast?",
+        "1655h. Conjecture: city bus moving fast at the beginning. Would it have slammed into the SUV?",
+        "At the commencement of the video, does the brown car, hereinafter the Party of the First Part, move faster "
+        "than the brown biplane, hereinafter the Party of the Second Part?",
+        "Is the brown fighter jet moving fast at the commencement of the video, the parties being duly bound?"])
+    assert speed == ["Objects", "filter_attributes[car]", "unique", "start", "query_moving_velocity"]
+    assert conjecture[3] == "Counterfactual_moving_fast" and party[-1] == "faster_velocity"
+    assert bound[-1] == "is_moving_velocity[fast]"
+    # a watch log's midnight is the video's start, not a log's clock
+    assert log_stamp_dropped(["0000h", ".", "is", "it", "fast", "?"])[1] == ()

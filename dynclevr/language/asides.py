@@ -2103,8 +2103,9 @@ REMARK_KEEPS = (CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING 
 
 def simile_closing_dropped(text: str) -> tuple[str, str] | None:
     """'Is the red jet hovering in the air, like a meringue that won't settle?' -> ('Is the red jet hovering in the
-    air?', 'like a meringue that won't settle'): a simile closing the question (after a comma, or a dash), that names
-    nothing the question could ask; None where there is none."""
+    air?', 'like a meringue that won't settle'): a simile closing the question (after a comma, or a dash), or a
+    closing clause of three words or more that says nothing at all ('..., the parties being duly bound?'; not a tag,
+    ', genre?'), that names nothing the question could ask; None where there is none."""
     if not isinstance(text, str) or not text.rstrip().endswith("?"):
         return None
     body = text.rstrip()[:-1]
@@ -2117,7 +2118,7 @@ def simile_closing_dropped(text: str) -> tuple[str, str] | None:
         return None   # (the question's other side: '..., or'd they pass like two boats on the lake?')
     if not words or not (any(words[:len(o)] == o for o in SIMILE_OPENERS) or words[0] == "as" and words[1:2] and
                          words[1] not in ASKING | {"it", "they", "the", "soon", "fast", "slow", "slowly", "quickly"}
-                         | COMES_IN_WORDS) or \
+                         | COMES_IN_WORDS or len(words) >= 3 and not _says_something(words)) or \
             mentions(words) or REMARK_KEEPS & set(words) - NEGATIONS - {"would", "will", "never"} or \
             asks_impact(words):   # (one that speaks of a collision stays: '..., the way my line tangled with ...?')
         return None
@@ -2144,6 +2145,20 @@ def heading_dropped(text: str) -> tuple[str, str] | None:
              | {"set", "cut"}) & set(said) or asks_impact(said) and not asks_impact(asked):
         return None
     return question.strip(), heading.strip()
+
+
+# A log's clock stamp before its entry ('0615h. Yellow biplane under continuous watch. ...'): the hour of the log, not
+# the video's time (a watch log's '0000 hours' is its start: `times.TIME_ZERO`)
+LOG_STAMP = re.compile(r"\d{3,4}(?:h|hrs|hours)")
+
+
+def log_stamp_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'0615h . yellow biplane ...' -> 'yellow biplane ...'. With the words read so, or the words as they are and
+    ()."""
+    if words[:1] and LOG_STAMP.fullmatch(words[0]) and words[0][:4] != "0000" and words[1:2] in ([","], ["."], [":"],
+                                                                                                 ["-"]):
+        return words[2:], ((" ".join(words[:2]), "nothing, a log's clock"),)
+    return words, ()
 
 
 TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build", "version", "ver", "priority",

@@ -55,10 +55,10 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       corrections_dropped, digressions_dropped, dislocated_as_asked,
                                       distractors_dropped, examination_as_asked, forecast_dropped, framing_dropped,
                                       grumble_dropped, heading_dropped, hedges_dropped, hooks_dropped,
-                                      hypothesis_as_asked, in_verse, interjections_dropped, owners_dropped,
-                                      person_remark_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
-                                      radio_as_asked, ramble_dropped, remark_after_dropped, requested_as_asked,
-                                      restatements_read, simile_closing_dropped, soothing_dropped,
+                                      hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
+                                      owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
+                                      proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
+                                      requested_as_asked, restatements_read, simile_closing_dropped, soothing_dropped,
                                       speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read, verse_joined,
                                       wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
@@ -375,6 +375,8 @@ class QuestionParser:
         words = [held.get(w, w) for w in words]
         words, trailed = trailing_off_read(words)
         words, given = word_given_dropped(words)
+        words, stamped = log_stamp_dropped(words)
+        given += stamped
         trailed += given
         words = closing_mark_added(words)
         words, clause_comma = clause_comma_added(words)

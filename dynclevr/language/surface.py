@@ -787,9 +787,10 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
         read.append((out[stop], ":"))
         out = [*out[:stop], ":", *out[stop + 1:]]
     # a field note's predicate, asked of the vehicle its sentence before names ('Yellow pickup in the first frames.
-    # Moving fast?', 'Purple pickup, opening frames. Going faster and faster?')
+    # Moving fast?', 'Purple pickup, opening frames. Going faster and faster?'), or what is asked of it ('Car at the
+    # start of the clip. Speed class: static, slow or fast?')
     stop = max((k for k, w in enumerate(out[:-1]) if w in (".", "?")), default=None)
-    if stop and out[stop] == "." and out[-1:] == ["?"] and out[stop + 1] in NOTED_PREDICATES and \
+    if stop and out[stop] == "." and out[-1:] == ["?"] and out[stop + 1] in NOTED_PREDICATES | NOTED_QUERIES and \
             mentions(out[:stop]) and not (QUESTION_OPENERS | {".", "?", "it", "they"}) & set(out[:stop]) and \
             not mentions(out[stop + 1:]):
         read.append((".", ":"))
@@ -800,6 +801,8 @@ def shorthand_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
 
 
 SIGNED_OFF = [["?", "over", *out, *stop] for out in ((), ("and", "out")) for stop in ((), (".",))]
+NOTED_QUERIES = {"speed", "pace", "velocity", "direction", "bearing", "heading", "colour", "color", "motion",
+                 "movement"}
 NOTED_PREDICATES = {"moving", "going", "travelling", "traveling", "driving", "static", "stationary", "parked", "still",
                     "slow", "fast", "hovering", "floating", "airborne", "accelerating", "speeding", "gaining",
                     "picking", "heading", "headed", "speedier", "faster", "slower", "quicker"}

@@ -2155,6 +2155,9 @@ IDIOMS = phrase_table({
        for v in ("seen", "watched", "beheld", "shown", "viewed", "got", "given", "saw")},
     **{(",", "i", "'", "m", "talking"): (",",), (",", "and", "i", "'", "ll", "give", "you", "the", "options", ","): (",",),
        (",", "and", "i", "'", "ll", "give", "ya", "the", "options", ","): (",",)},
+    # a contract's name for a party ('the cyan cruiser, hereinafter the Party of the First Part, ...')
+    **{(",", "hereinafter", *r, "the", "party", "of", "the", o, "part", p): (p,)
+       for r in ((), ("referred", "to", "as"), ("called",)) for o in ("first", "second", "third") for p in (",", "?")},
     # a support agent's 'can you help me identify' (tell me)
     **{(*c, "help", "me", v): ("tell", "me") for c in ((), ("can", "you"), ("could", "you"))
        for v in ("identify", "find", "determine", "tell", "figure", "establish", "confirm", "know")},

@@ -68,7 +68,8 @@ CONDITION_LABELS = {"counterfactual", "intervention", "hypothetical", "hypothesi
                     "whatif", "twist", "cf", "variable", "treatment", "manipulation", "manipulate",
                     "contingency",   # mission control's ('Contingency: if the cyan aeroplane had been ...')
                     "variation", "variant", "tweak", "modification", "alteration", "perturbation",   # a physicist's
-                    "ablation"}   # a data scientist's
+                    "ablation",   # a data scientist's
+                    "conjecture", "speculation", "supposition"}   # a field log's
 # ... of them, a label that makes what follows imagined ('Hypothetical: brown SUV starts slow -> collision with ...?')
 IMAGINING_LABELS = {"assume", "assuming", "hypothetical", "hypothetically", "counterfactual", "cf", "what-if", "whatif",
                     "intervention", "alt"}   # a chat's 'alt timeline: red pickup starts fast -> ...
