@@ -21,11 +21,11 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language.evaluate import typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_named, asides_dropped,
-                                      corrections_dropped, digressions_dropped,
-                                      distractors_dropped, dislocated_as_asked, examination_as_asked, framing_dropped,
-                                      hedges_dropped, hypothesis_as_asked, interjections_dropped, preamble_dropped,
-                                      proof_as_asked, prompt_dropped, radio_as_asked, requested_as_asked,
-                                      heading_dropped, in_verse, log_stamp_dropped, remark_after_dropped,
+                                      corrections_dropped, digressions_dropped, dislocated_as_asked,
+                                      distractors_dropped, examination_as_asked, framing_dropped, heading_dropped,
+                                      hedges_dropped, hypothesis_as_asked, in_verse, interjections_dropped,
+                                      log_stamp_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
+                                      radio_as_asked, remark_after_dropped, requested_as_asked, script_cues_dropped,
                                       simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
@@ -5324,3 +5324,44 @@ def test_a_field_log_s_clock_and_a_contract_s_parties_are_read_as_nothing():
     assert bound[-1] == "is_moving_velocity[fast]"
     # a watch log's midnight is the video's start, not a log's clock
     assert log_stamp_dropped(["0000h", ".", "is", "it", "fast", "?"])[1] == ()
+
+
+def test_a_screenplay_s_cues_a_textbook_s_comparison_and_a_stream_s_emotes_are_read():
+    parser = QuestionParser.load()
+    felix, hale, june, briggs, flynn = parser.parse_batch([
+        "INT. EDIT SUITE - NIGHT. FELIX (half to himself) Which way is the blue sedan heading when this thing starts?",
+        "INT. SIMULATION LAB - DAY. DR. HALE (thoughtfully, tapping the glass) Suppose the red bus had had its engine "
+        "on from the very start. Would it bump into the cyan bendy bus?",
+        "INT. CONTROL ROOM - LATE. The playback halts mid-clip. JO (pausing the clip) Later on, after where this "
+        "stops, will the city bike crash into another vehicle?",
+        "COACH BRIGGS (pausing on the opening frame, skeptical) When the clip begins, is the red mountain bike moving "
+        "slower than the yellow dirt bike?",
+        "INT. TOUR COMPANY OFFICE - DAY. FLYNN (disbelieving) The double-decker, when it crashes into the biplane. Is "
+        "it going fast? Is that right?"])
+    assert felix == ["Objects", "filter_attributes[blue]", "filter_attributes[sedan]", "unique", "start",
+                     "query_moving_direction"]
+    assert hale[4] == "Counterfactual_accelerating" and june[0] == "futureEvents" and briggs[-1] == "slower_velocity"
+    assert flynn[-1] == "is_moving_velocity[fast]" and "get_frame" in flynn
+    # a parenthetical that says a time the line does not, or a collision, stays with its cue
+    assert script_cues_dropped("MAX (rewinding to the opening frame) How fast is the red car going?") is None
+    assert script_cues_dropped("ANA (after the crash) Is the red car fast?") is None
+    assert script_cues_dropped("Is the red car fast at the start?") is None
+    # a textbook's comparison said first, its 'second body' and 'observed to collide'; a streamer's emotes and chat
+    faster, slower, body, paused, kekw = parser.parse_batch([
+        "16. Compare the initial speeds of the brown motorbike and the cyan cruiser. Is the brown motorbike the "
+        "faster of the two?",
+        "63. At the initial instant, compare the gray station wagon with the red pickup. Is the gray station wagon "
+        "the slower?",
+        "5. The cyan dirt bike is observed to collide with a second body. Identify the type of that body.",
+        "Clip's paused here chat PauseChamp, is the gray school bus gonna crash into anything after this?",
+        "Is the red car moving fast at the start KEKW, or is it slow?"])
+    assert faster == ["Objects", "filter_attributes[brown]", "filter_attributes[motorbike]", "unique", "Objects",
+                      "filter_attributes[cyan]", "filter_attributes[cruiser]", "unique", "start", "faster_velocity"]
+    assert slower[-2:] == ["start", "slower_velocity"] and body[-2:] == ["unique", "query_attributes[shape]"]
+    assert paused[0] == "futureEvents" and kekw is not None
+    # 'Quick one,' is a label, not a speed; 'end to end' is the whole video, not its end; 'more and more' says nothing
+    quick, ends, more = parser.parse_batch([
+        "Quick one, is the red car static at the start?",
+        "At any point in the clip, does the gray double-decker hit the yellow minivan? Check it end to end.",
+        "Which kind of vehicle is speeding up more and more when the video begins?"])
+    assert quick[-1] == "is_static" and ends[0] == "Events" and more[-1] == "query_attributes[shape]"

@@ -24,10 +24,10 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIA
                                      GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS,
                                      INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS,
                                      NAMING, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
-                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SPEAKER_AND_LISTENER, SPEED_CHOICES,
-                                     SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS, STATIC_SAID, STOP_CUES,
-                                     TIME_OPENERS, UNNAMED, YES_NO_OPENERS, asks_impact, impact_like,
-                                     phrase_starts)
+                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS,
+                                     SPEAKER_AND_LISTENER, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES,
+                                     START_WORDS, STATIC_SAID, STOP_CUES, STREAM_EMOTES, TIME_OPENERS, UNNAMED,
+                                     YES_NO_OPENERS, asks_impact, impact_like, phrase_starts)
 
 # whom a spoken question is addressed to, after a greeting ('hey assistant, does ...', 'ok google is ...', 'yo chat')
 VOCATIVES = {"assistant", "chat", "folks", "guys", "everyone", "everybody", "siri", "alexa", "google", "computer",
@@ -225,19 +225,26 @@ def _exclaimed(words: list[str], k: int) -> int:
     return end
 
 
+# ... and a streamer's or a presenter's audience, spoken to without a comma before ('paused here chat , is ...',
+# 'paused chat PauseChamp , is ...')
+AUDIENCES = {"chat", "guys", "folks"}
+AUDIENCE_AFTER = {"here", "there", "now", "again", "today", "tonight"}   # (not an Australian's 'flat chat')
+
+
 def _addressed(words: list[str]) -> list[range]:
     """Where the question names whom it is asked, between commas, first or at the end ('is it fast , honey ?'), with
     its adjectives (', old friend ,', a scribe's opening 'O gentle reader ,', a priest's ', my brothers and sisters
     :')."""
     return [range(j - n, j + 1) for j in range(1, len(words) - 1) if words[j] in ADDRESSED
-            and words[j + 1] in (",", "?", "!", ".", ":", ";") for n in (0, 1, 2, 3)
+            and words[j + 1] in {",", "?", "!", ".", ":", ";"} | STREAM_EMOTES for n in (0, 1, 2, 3)
             if (j - n == 0 or j - n > 0 and words[j - n - 1] == ",") and (
                 set(words[j - n:j]) <= ADDRESS_ADJECTIVES or "and" in words[j - n:j]
-                and set(words[j - n:j]) <= ADDRESS_ADJECTIVES | ADDRESSED | {"and"})]
+                and set(words[j - n:j]) <= ADDRESS_ADJECTIVES | ADDRESSED | {"and"})
+            or n == 0 and words[j] in AUDIENCES and (words[j - 1] in AUDIENCE_AFTER or words[j + 1] in STREAM_EMOTES)]
 
 
 def _without(words: list[str], addressed: list[range]) -> list[str]:
-    dropped = {k for a in addressed for k in (a.start - 1, *a)}
+    dropped = {k for a in addressed for k in (a.start - 1, *a) if k >= a.start or words[k] == ","}
     return [w for j, w in enumerate(words) if j not in dropped]
 
 
@@ -349,7 +356,8 @@ def interjections_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
     # a speaker's fillers within the question ('the um green sedan'), with the commas around them
     within = [j for j in range(k, end) if words[j] in FILLERS]
     if within:
-        fillers = set(within) | {j + 1 for j in within if words[j + 1:j + 2] == [","]} | {
+        fillers = set(within) | {j + 1 for j in within if words[j + 1:j + 2] == [","]   # (an emote ends its clause)
+                                 and words[j] not in STREAM_EMOTES} | {
             j - 1 for j in within if words[j - 1] == "," and words[j + 1:j + 2] in ([","], ["?"], ["."], [])}
         closing = ((" ".join(words[j] for j in within), "nothing, a filler"), *closing)
         kept = [w for j, w in enumerate(words[:end]) if j not in fillers]
@@ -1685,7 +1693,9 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
     if any(a == "this" and b in OBJECT_WORDS for a, b in zip(words, words[1:])):   # 'is this green bus ...'
         read.append(("this", "the"))
         words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
-    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-")), None)
+    # ('Quick one, is ...': the label's comma, where 'quick' would be read as a speed)
+    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-") or
+                w == "," and k == 2 and words[0] == "quick" and words[1] in QUICK_LABELS), None)
     if end and all(_label(w) or w in INTERJECTIONS | VOCATIVES | CLIP_NAMED for w in words[:end]) and \
             any(map(_label, words[:end])) and words[end + 1:end + 2] and \
             words[end + 1] in QUESTION_OPENERS | TIME_OPENERS | CONDITION_WORDS:   # 'Q2: at the start, is ...'
@@ -2183,3 +2193,46 @@ def remark_after_dropped(text: str) -> tuple[str, str] | None:
             any(impact_like(w) for w in words if len(w) > 4):
         return None
     return text[:asked + 1], remark
+
+
+# A screenplay's page: its transitions and scene headings ('FADE IN: INT. EDITING BAY - DAY.') and the cue of the
+# character who speaks the question ('MARCUS (flatly)'), capitals in the script's own text; the action lines between
+# them stay (one may say the video stopped: 'The playback halts mid-clip.')
+SCRIPT_TRANSITION = re.compile(r"(?:(?:FADE IN|(?:SMASH |MATCH )?CUT TO|DISSOLVE TO)\s*:\s*)+")
+SCENE_HEADING = re.compile(r"(?:INT|EXT|INT\./EXT|I/E)\.\s+[A-Z0-9][A-Z0-9 '&/,-]*\.\s*")
+CHARACTER_CUE = re.compile(r"(?:(?<=^)|(?<=[.!?]\s))((?:[A-Z][A-Z'-]*[A-Z]\.?|\d+)(?:\s+(?:[A-Z][A-Z'-]*[A-Z]\.?|\d+))*)"
+                           r"(?:\s*\(([^()]*)\))?\s+(?=[\"“A-Z])")
+
+
+# what an actor's parenthetical may say that the line needs, by kind: a kind the line says too it need not
+CUE_KEEPS = (START_WORDS | START_ADJECTIVES, FUTURE_CUES | STOP_CUES | END_WORDS | END_SAID,
+             CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING, COMPARING, COMES_IN_WORDS,
+             set(COLOR_NAMES) | OTHER_COLOURS | NAMING | PLURALS)
+
+
+def script_cues_dropped(text: str) -> tuple[str, str] | None:
+    """'INT. EDIT SUITE - NIGHT. FELIX (half to himself) Which way is the blue sedan heading when this thing
+    starts?' -> ('Which way is the blue sedan heading when this thing starts?', 'INT. EDIT SUITE - NIGHT. FELIX (half
+    to himself)'): a screenplay's transitions, scene headings and the speaker's cue; his parenthetical goes with it
+    only where it names nothing the dialogue could need that the dialogue does not say (no vehicle, time, stop,
+    condition or collision). None where there is no cue, or the cue is not before the question."""
+    if not isinstance(text, str):
+        return None
+    head = SCRIPT_TRANSITION.match(text)
+    start = head.end() if head else 0
+    heading = SCENE_HEADING.match(text, start)
+    start = heading.end() if heading else start
+    cues = [m for m in CHARACTER_CUE.finditer(text, start) if m.start() >= start and
+            not OBJECT_WORDS & set(tokenize(m.group(1))) and "?" in text[m.end():]]
+    if not cues or "?" in text[:cues[-1].start()]:
+        return None
+    cue = cues[-1]
+    spoken = tokenize(text[cue.end():])
+    aside = tokenize(cue.group(2) or "")
+    aside = [w for k, w in enumerate(aside) if not (w == "over" and aside[k + 1:k + 2] and
+                                                    aside[k + 1] in DETERMINERS | OWNERS | {"his", "her", "their"})]
+    if mentions(aside) or asks_impact(aside) and not asks_impact(spoken) or \
+            any(kind & set(aside) and not kind & set(spoken) for kind in CUE_KEEPS):
+        return None
+    dropped = [text[:start].strip(), text[cue.start():cue.end()].strip()]
+    return (text[start:cue.start()] + text[cue.end():]).strip(), " ".join(filter(None, dropped))

@@ -853,8 +853,8 @@ def form_unmatched(words: list[str], program: list[str]) -> str:
                 "type): no question here asks it as yes or no")
     # 'what type of aeroplane is it at the start?' read as its direction: a type or colour asked is no motion
     kind = head[1] if head[:1] in (["what"], ["which"]) and head[1:2] and head[1] in ATTRIBUTE_NOUNS else None
-    if kind and head[2:4] != ["of", "speed"] and operation(program[-1]) in ("query_moving_velocity",
-                                                                              "query_moving_direction"):
+    if kind and head[2:4] not in (["of", m] for m in ("speed", "motion", "movement", "pace")) and \
+            operation(program[-1]) in ("query_moving_velocity", "query_moving_direction"):
         return (f"the question asks the {kind}, but its nearest reading asks a speed or a direction: no question here "
                 "reads it")
     # '..., zzq colour is it' read as whether the plane floats: a colour or type asked of 'it' is no yes or no

@@ -821,6 +821,18 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         out[struck:struck + 1] = _said(others[0])
         used.add(others[0])
         named = mentions(out)
+    # 'Compare the wagon with the pickup. Is the wagon the slower?': the comparison is with the context's other one
+    compared = next((k for k in range(len(out) - 2) if out[k] == "the" and out[k + 1] in ("faster", "slower")
+                     and out[k + 2] in ("?", "one", "vehicle", "of")), None)
+    others = [r for r in fullest if not _named(r, named)]
+    if compared is not None and len({r for _, _, r in named}) == 1 and len(fullest) == 2 and len(others) == 1:
+        end = compared + 2 + (out[compared + 2] in ("one", "vehicle")) + \
+            3 * (out[compared + 2:compared + 5] == ["of", "the", "two"])
+        said = [out[compared + 1], "than", *_said(others[0])]
+        read.append((" ".join(out[compared:end]), " ".join(said)))
+        out[compared:end] = said
+        used.add(others[0])
+        named, plural = mentions(out), plural and _at(out, PLURAL_PRONOUNS)
     if plural:   # the context's two, none named in the question, in the order it names them ('Here is the bus.
         # Here is the car. Do they crash?')
         others = [r for r in (fullest if not named and len(fullest) == 2 else latest) if not _named(r, named)]
@@ -874,7 +886,7 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
             moment, k, p = _moment(context[-1:], fullest), out.index("?") if "?" in out else len(out), ()
         else:
             moment, k, p = [], 0, ()
-            started = next((s for s in reversed(context) if START_WORDS & set(s)), None)
+            started = next((s for s in reversed(context) if (START_WORDS | {"initial"}) & set(s)), None)
             # ... and the end, which no question asks: the whole text is read, and refused ('the red car zai zuihou
             # is it static ma?', 'zuihou' said 'at the end')
             if not started and not (own_time or asks_impact(out)) and any(

@@ -58,9 +58,10 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
                                       owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
                                       proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
-                                      requested_as_asked, restatements_read, simile_closing_dropped, soothing_dropped,
-                                      speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read, verse_joined,
-                                      wagers_read, word_given_dropped)
+                                      requested_as_asked, restatements_read, script_cues_dropped,
+                                      simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
+                                      speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
+                                      word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -255,11 +256,12 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
-        # ... and one refused with a remark after it, a simile closing it or a heading before it, read again without
-        # them
+        # ... and one refused with a remark after it, a simile closing it, a heading before it or a screenplay's
+        # scene heading and cue, read again without them
         for cutter, said in ((remark_after_dropped, "nothing, a remark after the question"),
                              (simile_closing_dropped, "nothing, a simile"),
-                             (heading_dropped, "nothing, a heading that says nothing the question does not")):
+                             (heading_dropped, "nothing, a heading that says nothing the question does not"),
+                             (script_cues_dropped, "nothing, a screenplay's heading and cue")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 

@@ -106,7 +106,10 @@ END_OPENERS = (["once"], ["when"], ["as", "soon", "as"], ["by", "the", "time"], 
                ["given", "that"], ["given"], ["now", "that"], ["with"], ["supposing"], ["supposing", "that"],
                ["provided"], ["provided", "that"], ["if"], ["assuming"], ["assuming", "that"], ["suppose"],
                ["suppose", "that"],
-               *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")))
+               *([p, "the", "point", w] for p in ("beyond", "past", "after") for w in ("where", "at", "when")),
+               *([p, "where"] for p in ("beyond", "past", "after")))
+END_OPENERS = tuple(sorted(END_OPENERS, key=len, reverse=True))   # 'after where it stops' before 'after'
+
 FILM_WORDS = {"video", "clip", "footage", "film", "recording", "movie", "sequence", "cartoon", "animation", "stream",
               "replay", "feed", "tape", "playback", "livestream"}
 # the verbs of a video's stop ('paused', 'cut', 'ends'), without the auxiliaries and particles said with them
@@ -212,7 +215,13 @@ def _video_end(words: list[str], before: list[str] = ()) -> tuple[int, int] | No
         j = i + len(opener or []) + (words[i + len(opener or []):i + len(opener or []) + 1] in (
             ["the"], ["this"], ["my"], ["our"], ["your"]))
         j += words[j:j + 1] != [] and words[j] in FILM_KINDS and words[j + 1:j + 2] != [] and words[j + 1] in FILM_WORDS
-        named = words[j:j + 1] == ["it"] and opener and FILM_WORDS.intersection([*before, *words[:i]])
+        if opener and opener[-1] == "where" and words[j - 1] == "this" and words[j:j + 1] != [] and \
+                words[j] not in FILM_WORDS:
+            j -= 1   # 'after where this stops': 'this' the video itself
+        named = words[j:j + 1] in (["it"], ["this"]) and opener and (
+            FILM_WORDS.intersection([*before, *words[:i]]) or
+            # ('past where it stops' before any vehicle is named: only the video stops there)
+            opener[-1] == "where" and not OBJECT_WORDS.intersection([*before, *words[:i]]))
         if words[j:j + 1] == [] or words[j] not in FILM_WORDS and not named:
             continue
         # said alone, the video stopped ('clip's cut off early , ...'), not ended ('the video is over . did ...?'

@@ -419,6 +419,12 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
     again = ((" ".join(words[-4:]), "?"),) if len(words) > 4 and words[-4] == words[-1] == "?" and \
         words[-3] == "or" and words[-2] in ("no", "not", "nah", "nope") else ()
     words = words[:-3] if again else words
+    # '... is it going fast ? is that right ?': a yes/no question, then asked whether its statement is right
+    checked = next((t for t in AGREEING_TAGS if len(t) > 2 and words[-len(t) - 2:] == ["?", *t, "?"]), None)
+    if checked and any(w in YES_NO_OPENERS and (k == 0 or words[k - 1] in (",", ".", "?"))
+                       for k, w in enumerate(words[:-len(checked) - 2])):
+        again += ((" ".join(checked) + " ?", "nothing, the question asked again"),)
+        words = words[:-len(checked) - 1]
     end = words[-1:] if words[-1:] in (["?"], ["."]) else []
     body = words[:len(words) - len(end)]
     if body[-2:] == [",", "or"]:   # 'is it slower than the bus , or ?' (a learner's tag)
@@ -691,6 +697,13 @@ IDIOMS = phrase_table({
                                                                           ("poor",), ("hapless",))
        for n in ("victim", "target", "partner") for tail in ((), ("in", "the", "crash"), ("in", "the", "collision"))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
+    # speeding up 'more and more' is speeding up ('which kind of vehicle is speeding up more and more')
+    **{(v, *u, "more", "and", "more"): (v, *u) for v, u in (("speeding", ("up",)), ("accelerating", ()),
+                                                           ("picking", ("up", "speed")))},
+    # a textbook's 'is observed to collide' says it collides, and its 'a second body' is another object, not a time
+    **{(b, o, "to", v): (h,) for b in ("is", "was") for o in ("observed", "seen", "found")
+       for v, h in (("collide", "collides"), ("hit", "hits"), ("strike", "strikes"))},
+    **{("a", "second", n): ("another", n) for n in ("body", "object", "vehicle", "thing")},
     ("pray", "tell", ","): (), ("pray", "tell"): (), ("party", "to"): ("involved", "in"),
     **{(f, "itself", "party", "to"): (g, "involved", "in") for f, g in (("find", "get"), ("finds", "gets"),
                                                                          ("found", "got"))},
@@ -1655,7 +1668,7 @@ IDIOMS = phrase_table({
     # starting speed had been slow')
     ("from", "start"): ("from", "the", "start"),
     **{(*f, s, "to", *t, e): ("during", "the", "video") for f in (("from",), ()) for s, e in (
-        ("start", "finish"), ("beginning", "end"), ("start", "end")) for t in ((), ("the",))},
+        ("start", "finish"), ("beginning", "end"), ("start", "end"), ("end", "end")) for t in ((), ("the",))},
     **{(*f, *t, "first", m, "to", *t, "last"): ("during", "the", "video") for f in (("from",), ())   # a physicist's
        for t in ((), ("the",)) for m in ("moment", "frame", "instant")},                            # 'first moment to last'
     **{("the", "point", *where, "it", stops): ("the", "cut") for where in (("where",), ("at", "which"), ("when",))
@@ -2258,7 +2271,8 @@ _TIMES_SAID = {"time", "start", "beginning", "end", "frame", "frames", "first", 
 _NAMES_NONE = {"one", "it", "its", "them", "that", "this", "other", "another", "vehicle", "object", "thing"}
 
 
-SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames", "video", "clip"}
+SIMILE_AFTER = {"along", "start", "starts", "begins", "outset", "first", "beginning", "frames", "video", "clip",
+                "partway", "halfway", "midway", "early", "short"}   # (and the video stopped: 'cuts out partway , like ...')
 # ('from the start , like ...', 'at the start of the video , like a runaway balloon :')
 SIMILE_OPENERS = {"like", "as"}
 AFLOAT_RESTATED = {"up", "aloft", "floating", "hovering", "drifting"}

@@ -39,8 +39,13 @@ COMMA_INTERJECTIONS = {"right", "now", "like"}
 # a code-switcher's or a regional English's particles, said before a clause's comma as well as last ('the video stops
 # halfway na, so ...', 'it hits the bus lah, or not?')
 PARTICLES = {"lah", "leh", "lor", "abi", "na", "yaar", "diba", "naman", "po", "sha", "ah", "wor"}   # (Hong Kong's 'ah')
+# a streamer's chat's emotes, said anywhere ('Green car meets red bus KEKW, is ...', 'paused here chat PauseChamp,')
+STREAM_EMOTES = {"kekw", "monkas", "monkaw", "pog", "pogchamp", "poggers", "pogu", "lul", "lulw", "omegalul", "kappa",
+                 "sadge", "pepega", "copium", "pausechamp", "modcheck", "pepehands", "pepelaugh", "peeposad",
+                 "weirdchamp", "residentsleeper", "biblethump", "wutface", "notlikethis", "kreygasm", "catjam",
+                 "5head", "3head", "feelsbadman", "feelsgoodman", "hypers", "jebaited", "widepeepohappy", "monkahmm"}
 FILLERS = {"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm", "already", "literally", "basically", "seriously",
-           "honestly", "quite", "totally", "whatsoever", "indeed", "plumb", "pray"}
+           "honestly", "quite", "totally", "whatsoever", "indeed", "plumb", "pray"} | STREAM_EMOTES
 # ... and the chat's words it closes with ('does the bus hit anything lol': the decoder turned on the unknown word)
 CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "plz", "thx", "ty", "tia", "btw",
                          "thanks", "cheers", "tho",
@@ -50,8 +55,7 @@ CLOSING_INTERJECTIONS = {"lol", "lmao", "rofl", "haha", "hahaha", "xd", "pls", "
                          # ... and a radio's ('..., affirmative?'; not 'over', which may end a video)
                          "affirmative", "roger", "ne", "desu", "nani",
                          # ... and a streamer's chat's emotes ('does it hit anything KEKW')
-                         "kekw", "monkas", "pog", "pogchamp", "poggers", "lul", "omegalul", "kappa", "sadge", "pepega",
-                         "copium", "gyatt", "bruh", "skibidi", "ong"} | CHAT
+                         "gyatt", "bruh", "skibidi", "ong"} | STREAM_EMOTES | CHAT
 
 
 SENTENCE_ENDS = {".", "!", "?"}
@@ -326,6 +330,8 @@ COMES_IN_WORDS = {"appear", "appears", "enter", "enters", "shows", "show", "come
 IMPACT_STEMS = ("impact", "collid", "collision", "hit", "crash", "bump", "strik", "struck", "smash", "slam", "contact",
                 "touch", "bang", "knock", "ram", "accident", "meet", "fender", "wreck", "pileup", "clash", "crunch",
                 "shunt", "tangl")
+# ... and words that only begin like one ('a load ramping on the circuit', 'at random')
+NOT_IMPACTS = ("ramp", "random", "rambl")
 # 'comes into view', 'swims into focus'
 SIGHT_WORDS = {"view", "sight", "frame", "picture", "scene", "shot", "camera", "focus"}
 
@@ -375,8 +381,8 @@ def impact_like(word: str) -> bool:
 def asks_impact(words: list[str]) -> bool:
     """Whether the question is about collisions: an impact's word ('collides', 'struck'), or 'into' not of coming
     into view ('runs into', 'bangs into')."""
-    return any(w.startswith(IMPACT_STEMS) or w == "into" and not set(words[k + 1:k + 3]) & SIGHT_WORDS
-               for k, w in enumerate(words))
+    return any(w.startswith(IMPACT_STEMS) and not w.startswith(NOT_IMPACTS)
+               or w == "into" and not set(words[k + 1:k + 3]) & SIGHT_WORDS for k, w in enumerate(words))
 
 
 def _head(words: list[str]) -> list[str]:
