@@ -21,12 +21,13 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language.evaluate import typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_named, asides_dropped,
-                                      corrections_dropped, digressions_dropped, dislocated_as_asked,
-                                      distractors_dropped, examination_as_asked, framing_dropped, heading_dropped,
-                                      hedges_dropped, hypothesis_as_asked, in_verse, interjections_dropped,
-                                      log_stamp_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
-                                      radio_as_asked, remark_after_dropped, requested_as_asked, script_cues_dropped,
-                                      simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
+                                      corrections_dropped, description_dropped, digressions_dropped,
+                                      dislocated_as_asked, distractors_dropped, examination_as_asked, framing_dropped,
+                                      heading_dropped, hedges_dropped, hypothesis_as_asked, in_verse,
+                                      interjections_dropped, log_stamp_dropped, preamble_dropped, prompt_dropped,
+                                      proof_as_asked, radio_as_asked, remark_after_dropped, requested_as_asked,
+                                      script_cues_dropped, simile_closing_dropped, speaker_clauses_dropped,
+                                      ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5365,3 +5366,38 @@ def test_a_screenplay_s_cues_a_textbook_s_comparison_and_a_stream_s_emotes_are_r
         "At any point in the clip, does the gray double-decker hit the yellow minivan? Check it end to end.",
         "Which kind of vehicle is speeding up more and more when the video begins?"])
     assert quick[-1] == "is_static" and ends[0] == "Events" and more[-1] == "query_attributes[shape]"
+
+
+def test_a_menu_s_flourishes_a_claim_said_right_and_lagging_in_speed_are_read():
+    parser = QuestionParser.load()
+    entrance, duet, beside, pairing, right, lag = parser.parse_batch([
+        "The brown pickup, making its grand entrance from the kitchen doors as it first comes into view: is it not "
+        "moving, slow or fast upon arrival?",
+        "A daring duet of the dirtbike and the cruiser, tossed together over the course of the video: do the two "
+        "ever collide?",
+        "The brown tandem bike, plated beside the green one at the start of the video: is the brown tandem bike "
+        "moving faster than the green one?",
+        "A pairing of the yellow pickup and the red pickup, simmered together over the whole video: do they collide?",
+        "She asks whether it's right that the blue SUV was moving slowly when it crashed into the cruiser.",
+        "When first the tale is told, does the gray chopper lag in speed behind the yellow motorbike?"])
+    assert entrance[-2:] == ["come_in_frame", "query_moving_velocity"] and duet[0] == "Events"
+    # (the green one beside the tandem bike is another vehicle, named by its colour alone)
+    assert beside == ["Objects", "filter_attributes[brown]", "filter_attributes[tandem_bike]", "unique", "Objects",
+                      "filter_attributes[green]", "unique", "start", "faster_velocity"]
+    assert pairing[0] == "Events" and right[-1] == "is_moving_velocity[slow]" and lag[-1] == "slower_velocity"
+    # a flourish goes only where it says nothing more: not a state, a stop or a collision the question does not ask
+    assert description_dropped("The red car, served sizzling off the grill at the start of the video: is it moving "
+                               "fast?")[1] == "served sizzling off the grill"
+    assert description_dropped("The red car, parked by the kitchen at the start of the video: is it moving?") is None
+    assert description_dropped("The red car, crashing through the kitchen at the start of the video: is it fast?") \
+        is None
+    assert description_dropped("The red car, at the start of the video: is it fast?") is None
+    # ... nor a heading that asks, a heading with symbols or the vehicles' plural; a coming into view is kept
+    for heading in ("As the cyan tandem bike steps into view upon this stage, what is its speed category: static, "
+                    "slow, or fast?",
+                    "Set v0(yellow scooter) := fast. Does the yellow scooter then hit the purple sedan?",
+                    "Of the two minivans, the grey one: what colour was the vehicle it collided with?"):
+        assert description_dropped(heading) is None
+    assert description_dropped("Eyes on the cyan scooter as it rolls into view here: is it static, moving slowly or "
+                               "moving fast?") == ("the cyan scooter as it rolls into view here: is it static, moving "
+                                                  "slowly or moving fast?", "eyes on")

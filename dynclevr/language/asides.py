@@ -14,7 +14,7 @@ import re
 
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.context import _sentence_spans, coordinated_subject
-from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, generalises, mentions
+from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, catalogue_names, generalises, mentions
 from dynclevr.language.tokenize import tokenize
 from dynclevr.language.times import END_SAID, FILM_WORDS, TIME_ZERO, _video_end, video_end_as_said
 from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIARIES, CHAT, CLAUSE_CONJUNCTIONS,
@@ -24,7 +24,7 @@ from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, AUXILIA
                                      GENERIC, GENERIC_NOUNS, HEADING_KEPT, IMAGINED_SAID, IMAGINING, IMAGINING_LABELS,
                                      INTERJECTIONS, LATER_TIMES, LOOKS, MATERIALS, MOTION_DESCRIPTIONS, MOTION_WORDS,
                                      NAMING, NEGATIONS, NOUNS_SAID, NUMBERS, OTHER_COLOURS, PARTICLES, PEOPLE, PLURALS,
-                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS,
+                                     QUERY_NOUNS, QUESTION_OPENERS, RESTING, REST_WORDS, SENTENCE_ENDS, SIGHT_WORDS,
                                      SPEAKER_AND_LISTENER, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES,
                                      START_WORDS, STATIC_SAID, STOP_CUES, STREAM_EMOTES, TIME_OPENERS, UNNAMED,
                                      YES_NO_OPENERS, asks_impact, impact_like, phrase_starts)
@@ -228,7 +228,7 @@ def _exclaimed(words: list[str], k: int) -> int:
 # ... and a streamer's or a presenter's audience, spoken to without a comma before ('paused here chat , is ...',
 # 'paused chat PauseChamp , is ...')
 AUDIENCES = {"chat", "guys", "folks"}
-AUDIENCE_AFTER = {"here", "there", "now", "again", "today", "tonight"}   # (not an Australian's 'flat chat')
+AUDIENCE_AFTER = {"here", "there", "now", "again", "today", "tonight", "-"}   # (not an Australian's 'flat chat')
 
 
 def _addressed(words: list[str]) -> list[range]:
@@ -1139,8 +1139,10 @@ def _topic_as_named(words: list[str], end: int, pronoun: str) -> tuple[list[str]
     if len(rest) > 4 and rest[-4:] in ([",", a, pronoun, "?"] for a in AUXILIARIES | {"will", "would"}) and \
             pronoun not in rest[:-4] and not set(rest[:-4]) & (QUESTION_OPENERS | SENTENCE_ENDS):
         return [rest[-3], *topic, *rest[:-4], "?"], read
-    start = rest.index(",") + 1 if rest[:1] and rest[0] in TIME_OPENERS | {"once", "after", "before"} and "," in rest \
-        else 0
+    # (the clause of time to its comma, or to the question's colon: 'the bus and the car , in the video : do they')
+    sep = next((j for j, w in enumerate(rest) if w in (",", ":")), None)
+    start = sep + 1 if rest[:1] and rest[0] in TIME_OPENERS | {"once", "after", "before", "over", "throughout"} and \
+        sep is not None else 0
     own = {"it": "its", "they": "their"}[pronoun]
     # (the first 'it', or the subject of the clause of time: 'the purple one , as soon as it appears , how quick is
     # it ...'; not in an inverted clause's: 'when into the purple wagon it bumped')
@@ -2236,3 +2238,95 @@ def script_cues_dropped(text: str) -> tuple[str, str] | None:
         return None
     dropped = [text[:start].strip(), text[cue.start():cue.end()].strip()]
     return (text[start:cue.start()] + text[cue.end():]).strip(), " ".join(filter(None, dropped))
+
+
+# A heading that describes its vehicles with a flourish before the question's colon (a menu's 'The purple biplane,
+# served sizzling off the grill at the start of the video: is it moving fast?'): what the question needs of it is
+# its vehicles, its time and a motion said first; the rest is read as nothing where it says nothing more
+DESCRIBED_TIMES = START_WORDS | START_ADJECTIVES | COMES_IN_WORDS | {"moment", "moments", "instant", "whole", "entire",
+                                                                     "course", "opens", "starts", "outset"}
+TIME_LEADS = {"at", "as", "when", "just", "in", "during", "over", "throughout", "from", "upon", "right", "once", "the",
+              "on"}
+DESCRIBED_KEEPS = (STATIC_SAID | REST_WORDS | SPEED_CLASS_WORDS | FLOATING_WORDS | NEGATIONS | CONDITION_OPENERS
+                   | CONDITION_WORDS | IMAGINED_SAID | IMAGINING | CONDITION_LABELS | FUTURE_CUES | COMPARING
+                   | PLURALS | NAMING | set(COLOR_NAMES) | OTHER_COLOURS | FILM_WORDS
+                   # (of the words that say a stop, those that say it without the video named: 'served sizzling off
+                   # the grill' is no cut)
+                   | STOP_CUES - {"in", "been", "has", "having", "goes", "gone", "went", "were", "between", "off",
+                                  "out", "falls", "fell", "silent", "early", "short", "abruptly", "broke", "breaks",
+                                  "broken", "drops", "dropped"}
+                   | SIGHT_WORDS | QUERY_NOUNS | {"how", "what", "which", "whether", "who"}
+                   | {"into", "slowly", "quickly", "engine", "accelerating", "speeding", "air", "sky", "?", "!", "name",
+                      "kind", "type", "sort"})
+# where a vehicle's name ends, the words after its colour ('the brown pickup') kept to the first of them
+DESCRIBED_BOUNDS = {"and", "or", "with", "of", "beside", "alongside", "near", "off", "to", "into", "across", "by"}
+
+
+def _time_in(segment: list[str]) -> tuple[int, int] | None:
+    """Where a part of a heading says a time ('served sizzling off the grill at the start of the video', 'captured
+    just as it strikes the bus'): from a word that leads a time to its end, or to an 'and' past which it says no time
+    and no vehicle."""
+    for o, w in enumerate(segment):
+        rest = segment[o:]
+        if w in TIME_LEADS and (w != "the" or rest[1:2] in (["moment"], ["instant"])) and (
+                DESCRIBED_TIMES & set(rest[1:6]) or asks_impact(rest) and {"as", "when", "moment", "instant"} & set(
+                    rest[:4])):
+            end = next((a for a in range(o + 1, len(segment)) if segment[a] == "and" and not mentions(segment[a:])
+                        and not DESCRIBED_TIMES & set(segment[a:]) and not asks_impact(segment[a:])), len(segment))
+            return o, end
+    return None
+
+
+def description_dropped(text: str) -> tuple[str, str] | None:
+    """'The purple biplane, served sizzling off the grill at the start of the video: is it moving fast?' -> ('The
+    purple biplane, at the start of the video: is it moving fast?', 'served sizzling off the grill'): in a heading
+    before the question's colon, the vehicles (from the first one's article to the last), the time (`_time_in`) and a
+    motion said before it are kept, and the rest read as nothing where it says nothing the question could need (no
+    state, speed, condition, stop, comparison, colour, film, property asked, or start, coming into view or collision
+    the question does not say); None where there is nothing to drop."""
+    if not isinstance(text, str) or ":" not in text or not text.rstrip().endswith("?"):
+        return None
+    heading, _, question = text.partition(":")
+    said, asked = catalogue_names(tokenize(heading))[0], tokenize(question)
+    # (the question after the colon one sentence: not 'Set v0(scooter) := fast. Does ...?')
+    if not said or not asked or re.search(r"[?!]", heading) or re.search(r"[.!;?]", question.rstrip()[:-1]) or \
+            not (mentions(said) or mentions(asked)):
+        return None
+    kept, dropped, k = [], [], 0
+    while k < len(said):
+        end = said.index(",", k) if "," in said[k:] else len(said)
+        segment, runs = said[k:end], mentions(said[k:end])
+        time = _time_in(segment)
+        keep = set()
+        if runs:
+            first = runs[0][0] - (runs[0][0] > 0 and segment[runs[0][0] - 1] in DETERMINERS | OWNERS)
+            # (with the noun after a colour that the parser reads later: 'the brown pickup', 'the purple one')
+            last = runs[-1][1]
+            while last < min(len(segment), runs[-1][1] + 2) and segment[last].isalpha() and \
+                    segment[last] not in TIME_LEADS | DESCRIBED_BOUNDS and not segment[last].endswith(("ed", "ing")):
+                last += 1
+            keep |= set(range(first, last))
+        if time:
+            # (and a motion said before it: 'Moving slowly at the start of the video')
+            motion = not runs and set(segment[:time[0]]) <= MOTION_WORDS | SPEED_CLASS_WORDS | {"slowly", "quickly"}
+            keep |= set(range(0 if motion else time[0], time[1]))
+        kept.append([w for j, w in enumerate(segment) if j in keep])
+        dropped.append([w for j, w in enumerate(segment) if j not in keep])
+        k = end + 1
+    # (not a time's 'over the whole video')
+    rest = [w for words in dropped for j, w in enumerate(words) if not (w == "over" and words[j + 1:j + 2] == ["the"])]
+    # (a start or a coming into view it drops, the question or what is kept says too)
+    said_too = set(asked) | {w for words in kept for w in words}
+    if not rest or DESCRIBED_KEEPS & set(rest) or mentions(rest) or asks_impact(rest) and not asks_impact(asked) or \
+            any(kind & set(rest) and not kind & said_too for kind in (START_WORDS | START_ADJECTIVES,
+                                                                        COMES_IN_WORDS)) or \
+            any(w[:-1] in OBJECT_WORDS or w[:-2] in OBJECT_WORDS for w in rest if w.endswith("s")):   # 'minivans'
+        return None
+    # a vehicle in a part of its own is another one, not the first named again ('The brown tandem bike, plated beside
+    # the green one ...' is two bikes)
+    heading, named = "", False
+    for words in filter(None, kept):
+        first = bool(mentions(words[:3]))
+        heading += (" and " if first and named else ", " if heading else "") + " ".join(words)
+        named |= first
+    return heading + ": " + question.strip(), " ... ".join(" ".join(words) for words in dropped if words)

@@ -52,9 +52,9 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, addressees_dropped, asides_dropped, calls_read,
-                                      corrections_dropped, digressions_dropped, dislocated_as_asked,
-                                      distractors_dropped, examination_as_asked, forecast_dropped, framing_dropped,
-                                      grumble_dropped, heading_dropped, hedges_dropped, hooks_dropped,
+                                      corrections_dropped, description_dropped, digressions_dropped,
+                                      dislocated_as_asked, distractors_dropped, examination_as_asked, forecast_dropped,
+                                      framing_dropped, grumble_dropped, heading_dropped, hedges_dropped, hooks_dropped,
                                       hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
                                       owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
                                       proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
@@ -256,12 +256,13 @@ class QuestionParser:
             if again.program:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
-        # ... and one refused with a remark after it, a simile closing it, a heading before it or a screenplay's
-        # scene heading and cue, read again without them
+        # ... and one refused with a remark after it, a simile closing it, a heading before it, a screenplay's
+        # scene heading and cue or a heading's flourish, read again without them
         for cutter, said in ((remark_after_dropped, "nothing, a remark after the question"),
                              (simile_closing_dropped, "nothing, a simile"),
                              (heading_dropped, "nothing, a heading that says nothing the question does not"),
-                             (script_cues_dropped, "nothing, a screenplay's heading and cue")):
+                             (script_cues_dropped, "nothing, a screenplay's heading and cue"),
+                             (description_dropped, "nothing, a heading's flourish")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 

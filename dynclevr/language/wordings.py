@@ -697,6 +697,15 @@ IDIOMS = phrase_table({
                                                                           ("poor",), ("hapless",))
        for n in ("victim", "target", "partner") for tail in ((), ("in", "the", "crash"), ("in", "the", "collision"))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
+    # a claim said right or correct is said true ('She asks whether it's right that the blue SUV was ...')
+    **{(*it, r, "that"): ("it", "is", "true", "that") for r in ("right", "correct")
+       for it in (("it", "'", "s"), ("it", "is"))},
+    **{("is", "it", r, "that"): ("is", "it", "true", "that") for r in ("right", "correct")},
+    # lagging behind in speed is going slower ('does the gray chopper lag in speed behind the yellow motorbike'; not
+    # 'lag behind' alone, which may say where it is)
+    **{(lag, *s, "behind"): (go, "slower", "than") for lag, go in (("lag", "go"), ("lags", "goes"), ("lagged", "went"),
+                                                                   ("lagging", "going"))
+       for s in (("in", "speed"), ("in", "pace"))},
     # speeding up 'more and more' is speeding up ('which kind of vehicle is speeding up more and more')
     **{(v, *u, "more", "and", "more"): (v, *u) for v, u in (("speeding", ("up",)), ("accelerating", ()),
                                                            ("picking", ("up", "speed")))},
