@@ -5401,3 +5401,35 @@ def test_a_menu_s_flourishes_a_claim_said_right_and_lagging_in_speed_are_read():
     assert description_dropped("Eyes on the cyan scooter as it rolls into view here: is it static, moving slowly or "
                                "moving fast?") == ("the cyan scooter as it rolls into view here: is it static, moving "
                                                   "slowly or moving fast?", "eyes on")
+
+
+def test_a_deposition_s_leading_questions_a_thread_s_emoji_and_a_eulogy_s_blessings_are_read():
+    parser = QuestionParser.load()
+    correct, agree, true, describe = parser.parse_batch([
+        "Q. Is it not correct that the blue cruiser's engine was on when the clip began?",
+        "Q. You would agree, would you not, that the cyan utility bike was stationary at the time it struck the gray "
+        "double-decker?",
+        "Q. It is true, is it not, that the brown biplane collided with another vehicle?",
+        "Q. Describe for us the speed of the yellow utility bike as the video starts: not moving, slow, or fast?"])
+    assert correct[-1] == "is_accelerating" and agree[-1] == "is_static" and true[-1] == "exist"
+    assert describe[-2:] == ["start", "query_moving_velocity"]
+    numbered, emoji, hot_take, true_or_false = parser.parse_batch([
+        "(9/74) does the gray pickup collide w/ anything at any point in the vid? yes/no pls",
+        "62/ at the moment the cyan school bus hits the green station wagon, which direction is the school bus going? "
+        "(bus emoji)",
+        "30/ hot take: the yellow chopper is tearing along fast right from the start. am I right?",
+        "19/ unpopular opinion incoming: when the clip opens, the red airliner is slower than the mountain bike. true "
+        "or false? lol"])
+    assert numbered[0] == "Events" and emoji[-1] == "query_moving_direction"
+    assert hot_take[-1] == "is_moving_velocity[fast]" and true_or_false[-1] == "slower_velocity"
+    peace, spared, unseen, subscribe = parser.parse_batch([
+        "Did the purple jet and the red motorbike ever meet in a collision during the video, may they both find peace?",
+        "Supposing the regular bus had started out slow, would it have struck the purple aeroplane, or would it have "
+        "been spared?",
+        "Once the video is stopped, in the time we are not allowed to see, will the gray motorbike collide with "
+        "anything?",
+        "Is the red car fast at the start? Hit like if you spotted it!"])
+    assert peace[0] == "Events" and "Counterfactual_moving_slow" in spared and unseen[0] == "futureEvents"
+    assert subscribe[-1] == "is_moving_velocity[fast]"
+    # a remark after the question that names a vehicle is no call to the viewers
+    assert remark_after_dropped("Is the red car fast at the start? Like the blue one below?") is None

@@ -633,7 +633,8 @@ HUNCHES = ("hunch", "gut", "guess", "bet", "forecast", "prediction", "feeling", 
 # A witness examined ('I put it to you that the bus was parked. Is that correct?', 'You'd concede, wouldn't you,
 # that ...', 'Would it be accurate to say that ...'): a statement put to be confirmed, the grammar's 'is it true that'
 _AGREE = ("agree", "accept", "concede", "admit", "acknowledge")
-_TAGGED = ([], [",", "would", "not", "you", ","], [",", "do", "not", "you", ","], [",", "will", "not", "you", ","])
+_TAGGED = ([], *([",", aux, *you_not, ","] for aux in ("would", "do", "will") for you_not in (["not", "you"],
+                                                                                              ["you", "not"])))
 # a report, heard ('Sources tell us the bus was parked; can we confirm that?'; 'Rumour has it the bus hit something,
 # darling, so what colour ...?': a premise, its question after it)
 HEARSAY = {(*said, *that) for said in (
@@ -659,8 +660,11 @@ CONFIRMING = {*((*you, verb, *tag, *that) for you in (["you"], ["you", "would"],
               *(("is", "it", "your", view, "that") for view in ("opinion", "view", "evidence", "testimony",
                                                                "position", "understanding", "belief", "assessment",
                                                                "contention", "recollection")),
-              *(("is", "it", "not", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
-              *(("is", "not", "it", case, "that") for case in (("true",), ("correct",), ("the", "case"))),
+              *(("is", "it", "not", *case, "that") for case in (("true",), ("correct",), ("right",), ("the", "case"))),
+              *(("is", "not", "it", *case, "that") for case in (("true",), ("correct",), ("right",), ("the", "case"))),
+              # ('It is true, is it not, that ...')
+              *(("it", "is", *case, ",", "is", "it", "not", ",", "that") for case in (("true",), ("correct",),
+                                                                                   ("right",), ("the", "case"))),
               ("is", "it", "the", "case", "that"),
               # British indirectness ('Am I right in thinking ...', 'I don't suppose the bus was ..., was it?')
               *((*am, right, "in", think, *that) for am in (("am", "i"), ("would", "i", "be")) for right in (
@@ -729,8 +733,9 @@ EXAMINATION_ASIDES = sorted({("in", "your", "own", "words"), ("if", "you", "know
 AUDIENCE = (["the", "court"], ["the", "jury"], ["the", "panel"], ["the", "tribunal"], ["the", "committee"], ["us"],
             ["me"])
 EXAMINATION_ASKS = sorted({*((verb, *a) for verb in ("tell", "show") for a in AUDIENCE if a != ["me"]),
-                           *(("explain", "to", *a) for a in AUDIENCE), *(("walk", *a, "through") for a in AUDIENCE),
-                           *(("describe", "to", *a) for a in AUDIENCE)}, key=len, reverse=True)
+                           *(("walk", *a, "through") for a in AUDIENCE),
+                           *((verb, to, *a) for verb in ("describe", "explain") for to in ("to", "for")
+                             for a in AUDIENCE)}, key=len, reverse=True)
 ATTENTION_TO = sorted({(verb, *whose, "attention", "to") for verb in ("directing", "direct", "turning", "turn",
                                                                     "drawing", "draw")
                        for whose in (["your"], ["the", "court", "'", "s"], ["the", "jury", "'", "s"])},
@@ -1410,6 +1415,9 @@ POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["
                ["serious", "question"], ["asking", "for", "a", "friend"], ["update"], ["edit"])
 
 
+EMOJI_WORDS = {"emoji", "emojis", "emoticon", "emoticons"}
+
+
 def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
     """'act as a physics expert and tell me how fast ...' -> 'tell me how fast ...'; 'yes or no only : is it ...' ->
     'is it ...'; '... ? a ( yes / no ) :' -> '... ?'. With the wrapping read as nothing, or the words as they are
@@ -1420,9 +1428,19 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                          and out[k + 1] in FILM_WORDS | {"image", "frames"}), None)) is not None:
         read.append((" ".join(out[held:held + 3]), "nothing, the video's place"))
         out = out[:held] + out[held + 3:]
-    # a post's labels said first ('thread', '1/', 'PSA', 'hot take:', 'genuine question:', 'asking for a friend')
+    # a post's emoji said in words, anywhere ('(airplane emoji)', '(bus emoji x2)', '(thinking face)')
+    while (held := next((k for k in range(len(out)) if out[k] == "(" and ")" in out[k + 2:k + 7] and (
+            EMOJI_WORDS & set(out[k + 1:out.index(")", k)]) or out[out.index(")", k) - 1] == "face")),
+                        None)) is not None:
+        close = out.index(")", held)
+        read.append((" ".join(out[held:close + 1]), "nothing, an emoji"))
+        out = out[:held] + out[close + 1:]
+    # a post's labels said first ('thread', '1/', '(9/74)', 'PSA', 'hot take:', 'genuine question:', 'asking for a
+    # friend')
     while label := next((p for p in POST_LABELS if out[:len(p)] == p), None) or \
-            (out[:2] if out[:1] and out[0].isdigit() and out[1:2] == ["/"] else None):
+            (out[:2] if out[:1] and out[0].isdigit() and out[1:2] == ["/"] else None) or \
+            (out[:5] if out[:1] == ["("] and out[2:3] == ["/"] and out[4:5] == [")"] and out[1].isdigit()
+             and out[3].isdigit() else None):
         read.append((" ".join(label), "nothing, a label"))
         out = out[len(label) + (out[len(label):len(label) + 1] == [":"]):]
     if out[:2] == ["act", "as"]:
@@ -2023,7 +2041,10 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 SPEAKER = {"i", "we", "my", "our", "me", "us"}
 CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", "oh", "because", "cause", "cos", "yet",
                 "though", "although", "which", "that", "since"}
-SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"])
+SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"],
+                  # ... and a blessing closing it ('..., may they both find peace?', '..., God keep them both?')
+                  *(["may", who] for who in ("they", "it", "he", "she", "both", "the")), ["god"], ["bless"],
+                  ["rest", "in", "peace"], ["heaven"], ["lord"])
 CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+|\s[-—–]+)\s+)")
 
 
@@ -2177,6 +2198,10 @@ TICKET_REMARKS = {"expected", "expecting", "actual", "actually", "got", "build",
                   "severity", "filed", "repro", "reproduced", "regression", "tool", "observed", "result"}
 
 
+CALLS_TO_VIEWERS = {"subscribe", "subscribed", "comment", "comments", "below", "like", "likes", "share", "bell",
+                    "notification", "notifications", "channel"}
+
+
 def remark_after_dropped(text: str) -> tuple[str, str] | None:
     """'Is the station wagon static at the start? looks parked but the motion estimate is noisy' -> ('Is the station
     wagon static at the start?', 'looks parked but the motion estimate is noisy'); None where nothing follows the
@@ -2188,6 +2213,11 @@ def remark_after_dropped(text: str) -> tuple[str, str] | None:
     words = tokenize(remark)
     if asked < 0 or not words:
         return None
+    # (a video maker's call to its viewers, whatever its verbs: '? Smash that subscribe button and tell me!', '? Hit
+    # like if you spotted it!')
+    if CALLS_TO_VIEWERS & set(words) and not mentions(words) and not (CONDITION_OPENERS | IMAGINED_SAID) - {"if"} & set(
+            words):
+        return text[:asked + 1], remark
     # (a bug report's expected and actual answers and its version: '? Expected yes/no, actual null. v3.8')
     if words[0] in TICKET_REMARKS or VERSION.match(remark):
         return None if (CONDITION_OPENERS | IMAGINED_SAID) & set(words) else (text[:asked + 1], remark)

@@ -14,13 +14,13 @@ from dynclevr.assets.catalogue import SUBTYPES
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.references import OBJECT_WORDS, generalises, mentions
 from dynclevr.language.times import END_SAID, FILM_WORDS, _at_cut, _video_continued, _video_end
-from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, COMES_IN_WORDS, CONDITION_LABELS, CONDITION_OPENERS,
-                                     COPULAS, DETERMINERS, END_TIMES, END_WORDS, FILLERS, GENERIC, GENERIC_NOUNS,
-                                     HEADING_KEPT, IMAGINED_BACK, IMAGINED_SAID, IMAGINING, IMPACT_STEMS, INTERJECTIONS,
-                                     LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING, NOUNS_SAID, OTHER_COLOURS,
-                                     PEOPLE, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS, SHAPE_ASKED,
-                                     SPEAKER_AND_LISTENER, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS, TIME_OPENERS,
-                                     UNMOVED, UNNAMED, YES_NO_OPENERS, _at, asks_impact)
+from dynclevr.language.words import (ASKING, CATEGORY_OF, CHAT, CHECKING_TAGS, COMES_IN_WORDS, CONDITION_LABELS,
+                                     CONDITION_OPENERS, COPULAS, DETERMINERS, END_TIMES, END_WORDS, FILLERS, GENERIC,
+                                     GENERIC_NOUNS, HEADING_KEPT, IMAGINED_BACK, IMAGINED_SAID, IMAGINING,
+                                     IMPACT_STEMS, INTERJECTIONS, LOOKS, MOTION_DESCRIPTIONS, MOTION_WORDS, NAMING,
+                                     NOUNS_SAID, OTHER_COLOURS, PEOPLE, QUERY_NOUNS, QUESTION_OPENERS, SENTENCE_ENDS,
+                                     SHAPE_ASKED, SPEAKER_AND_LISTENER, SPEED_CLASS_WORDS, SPEED_NOUNS, START_WORDS,
+                                     TIME_OPENERS, UNMOVED, UNNAMED, YES_NO_OPENERS, _at, asks_impact)
 
 # Context said before the question ('The yellow school bus is near the left edge. I couldn't tell whether it was
 # moving. How fast is it going right at the start?'). The question is the last sentence ending in '?'; the sentences
@@ -419,6 +419,16 @@ def _judged(question: list[str], said: list[str]) -> list[str] | None:
     return ["is", "it", "true", "that", *clause, "?"] if mentions(clause) else None
 
 
+def _checked(question: list[str], said: list[str]) -> list[str] | None:
+    """A statement, then asked whether it is right ('the yellow chopper is tearing along fast . am I right ?' -> 'the
+    yellow chopper is tearing along fast ?'); None where it is not."""
+    asked = [w for w in question if w not in ECHO_CLOSERS]
+    if question[-1:] != ["?"] or asked not in CHECKING_TAGS or not mentions(said) or \
+            said[0] in QUESTION_OPENERS | YES_NO_OPENERS or SENTENCE_ENDS & set(said[:-1]):
+        return None
+    return [*said[:-1], "?"] if said[-1] in SENTENCE_ENDS else [*said, "?"]
+
+
 def _wondered(question: list[str], said: list[str]) -> list[str] | None:
     """A question someone wondered, then asked of the reader ('My kid asked what color the thing floating ... is. Any
     idea?' -> 'what color the thing floating ... is ?'); None where it is not."""
@@ -723,8 +733,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
            for s, c in zip(context, conditions)) or back and not conditions[-1]:
         return words, ()
     tail = words[spans[asked_at][1]:]
-    question = _echoed(question, context[-1]) or _judged(question, context[-1]) or _wondered(question, context[-1]) \
-        or question
+    question = _echoed(question, context[-1]) or _judged(question, context[-1]) or _checked(question, context[-1]) \
+        or _wondered(question, context[-1]) or question
     condition = next((c for c in reversed(conditions) if c), None)
     own_condition = bool({"if", "suppose", "imagine", "had", "were"} & set(question))
     # a vehicle said 'he' or 'she', as learners and fond speakers do ('Does he crash with any other thing?')

@@ -19,12 +19,12 @@ from dynclevr.language.asides import ADDRESS_ADJECTIVES, ADDRESSED, VOCATIVES, _
 from dynclevr.language.context import PARTICIPLES, STATES_SAID
 from dynclevr.language.references import OBJECT_WORDS, mentions, phrase_table, phrases_as_said
 from dynclevr.language.times import FILM_WORDS, cut_premise
-from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, CLASS_NOUNS,
-                                     CLAUSE_CONJUNCTIONS, CLAUSE_MARKS, COMPARISONS, DEFINITE, DETERMINERS,
-                                     DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS, MOTION_WORDS, NAMING,
-                                     NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS, REVERSERS, SENTENCE_ENDS,
-                                     SHAPE_ASKED, SPEED_CHOICES, SPEED_CLASS_WORDS, START_ADJECTIVES, START_WORDS,
-                                     TIME_OPENERS, YES_NO_OPENERS, _head, asks_impact)
+from dynclevr.language.words import (AFLOAT_SAID, AGREEING_TAGS, ASKING, ATTRIBUTE_NOUNS, AUXILIARIES, CHECKING_TAGS,
+                                     CLASS_NOUNS, CLAUSE_CONJUNCTIONS, CLAUSE_MARKS, COMPARISONS, DEFINITE,
+                                     DETERMINERS, DIRECTION_CHOICES, IMAGINING, IMPERATIVES, MOTION_NOUNS,
+                                     MOTION_WORDS, NAMING, NEGATIONS, NOUNS_SAID, QUERY_NOUNS, QUESTION_OPENERS,
+                                     REVERSERS, SENTENCE_ENDS, SHAPE_ASKED, SPEED_CHOICES, SPEED_CLASS_WORDS,
+                                     START_ADJECTIVES, START_WORDS, TIME_OPENERS, YES_NO_OPENERS, _head, asks_impact)
 
 
 def type_of_category_as_vehicle(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -419,8 +419,9 @@ def negative_question_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple
     again = ((" ".join(words[-4:]), "?"),) if len(words) > 4 and words[-4] == words[-1] == "?" and \
         words[-3] == "or" and words[-2] in ("no", "not", "nah", "nope") else ()
     words = words[:-3] if again else words
-    # '... is it going fast ? is that right ?': a yes/no question, then asked whether its statement is right
-    checked = next((t for t in AGREEING_TAGS if len(t) > 2 and words[-len(t) - 2:] == ["?", *t, "?"]), None)
+    # '... is it going fast ? is that right ?': a yes/no question, then asked whether its statement is right (a
+    # statement so asked is `context._checked`'s)
+    checked = next((t for t in CHECKING_TAGS if words[-len(t) - 2:] == ["?", *t, "?"]), None)
     if checked and any(w in YES_NO_OPENERS and (k == 0 or words[k - 1] in (",", ".", "?"))
                        for k, w in enumerate(words[:-len(checked) - 2])):
         again += ((" ".join(checked) + " ?", "nothing, the question asked again"),)
@@ -697,6 +698,16 @@ IDIOMS = phrase_table({
                                                                           ("poor",), ("hapless",))
        for n in ("victim", "target", "partner") for tail in ((), ("in", "the", "crash"), ("in", "the", "collision"))},
     # a newsreel's 'pray tell', 'party to a bump', 'keeping aloft'; a farmer's 'butt heads'
+    # spared a collision is not in one, the question's other side ('would it have struck the bus, or would it have
+    # been spared?')
+    **{(",", "or", "would", w, "have", "been", "spared"): (",", "or", "not") for w in ("it", "both", "they", "he",
+                                                                                      "she")},
+    # the part of the video no one sees is after it ('in the moments we will never see', 'in the time we are not
+    # allowed to see', 'in the frames we don't get to see')
+    **{("in", "the", t, "we", *n, "see"): ("after", "the", "video", "ends")
+       for t in ("time", "moments", "frames", "part", "bit", "seconds")
+       for n in (("will", "never"), ("never",), ("are", "not", "allowed", "to"), ("do", "not", "get", "to"),
+                 ("never", "get", "to"), ("can", "not"), ("cannot",), ("do", "not"), ("will", "not"))},
     # a claim said right or correct is said true ('She asks whether it's right that the blue SUV was ...')
     **{(*it, r, "that"): ("it", "is", "true", "that") for r in ("right", "correct")
        for it in (("it", "'", "s"), ("it", "is"))},

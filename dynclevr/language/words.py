@@ -120,6 +120,8 @@ AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"
                  ["is", "that", "right"], ["is", "that", "correct"], ["am", "i", "right"], ["am", "i", "correct"],
                  ["would", "you", "say", "so"], ["right", "or", "wrong"], ["is", "that", "true"], ["is", "it", "true"],
                  ["straight", "up"], ["for", "real"], ["no", "cap"], ["deadass"], ["fr"])   # and slang's
+# ... of them, those that ask alone whether what was said before is right ('? Is that right?', '. True or false?')
+CHECKING_TAGS = [t for t in AGREEING_TAGS if len(t) > 2] + [["true", "or", "false"]]
 
 
 MOTION_NOUNS = {"speed", "velocity", "direction", "heading"}
