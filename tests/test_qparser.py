@@ -21,13 +21,13 @@ from dynclevr.language.corpus import synthesize
 from dynclevr.language.evaluate import typed_with_a_slip
 from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_named, asides_dropped,
-                                      corrections_dropped, description_dropped, digressions_dropped,
-                                      dislocated_as_asked, distractors_dropped, examination_as_asked, framing_dropped,
-                                      heading_dropped, hedges_dropped, hypothesis_as_asked, in_verse,
-                                      interjections_dropped, log_stamp_dropped, preamble_dropped, prompt_dropped,
-                                      proof_as_asked, radio_as_asked, remark_after_dropped, requested_as_asked,
-                                      script_cues_dropped, simile_closing_dropped, speaker_clauses_dropped,
-                                      ticket_fields_read, wagers_read)
+                                      corrections_dropped, dashed_aside_dropped, description_dropped,
+                                      digressions_dropped, dislocated_as_asked, distractors_dropped,
+                                      examination_as_asked, framing_dropped, heading_dropped, hedges_dropped,
+                                      hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
+                                      preamble_dropped, prompt_dropped, proof_as_asked, radio_as_asked,
+                                      remark_after_dropped, requested_as_asked, script_cues_dropped,
+                                      simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
                                       condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
                                       form_unasked, form_unmatched, future_unread, impact_unsaid,
@@ -5433,3 +5433,40 @@ def test_a_deposition_s_leading_questions_a_thread_s_emoji_and_a_eulogy_s_blessi
     assert subscribe[-1] == "is_moving_velocity[fast]"
     # a remark after the question that names a vehicle is no call to the viewers
     assert remark_after_dropped("Is the red car fast at the start? Like the blue one below?") is None
+
+
+def test_terse_prose_a_patent_s_claims_a_manual_s_parts_and_a_melodrama_s_asides_are_read():
+    parser = QuestionParser.load()
+    might, floated, remark, together = parser.parse_batch([
+        "The brown mountain bike might have started fast. Suppose it had. Would it have hit the bus?",
+        "The yellow fighter might have floated from the start. Held there in the air. If it had, would it have hit "
+        "the yellow biplane?",
+        "The yellow mountain bike and the grey fighter crash. It is bad. When they do, is the yellow mountain bike "
+        "going faster than the grey fighter?",
+        "The brown bus and the grey aeroplane come together. At that moment, is the brown bus faster than the grey "
+        "aeroplane?"])
+    assert might[4] == "Counterfactual_moving_fast" and floated[4] == "Counterfactual_floating"
+    assert remark[-1] == together[-1] == "faster_velocity" and "get_frame" in remark and "get_frame" in together
+    # what might have been is no condition where the question asks no collision, nor a collision supposed
+    assert parser.parse("The red car could have hit the bus. Would it have been going fast?") is None
+    said, stopping, parts, part = parser.parse_batch([
+        "15. Is said brown fighter jet, as depicted in the video, involved in a collision of any kind?",
+        "26. Will the yellow car, in the remaining frames subsequent to the stopping of the video, hit another object?",
+        "Step 2: At the outset, set [C] gray dirt bike next to [D] blue SUV. Check: is [C] slower than [D]?",
+        "Step 14: When the video begins, one part is stopped, not moving. What colour does that part have?"])
+    assert said[0] == "Events" and stopping[0] == "futureEvents"
+    assert parts == ["Objects", "filter_attributes[gray]", "filter_attributes[dirtbike]", "unique", "Objects",
+                     "filter_attributes[blue]", "filter_attributes[suv]", "unique", "start", "slower_velocity"]
+    assert part == ["Objects", "start", "filter_static", "unique", "query_attributes[color]"]
+    dashes, trailing, fate, last = parser.parse_batch([
+        "The red scooter — reckless, wild, untamed — is it racing fast the moment the video begins?",
+        "Had the SUV been racing fast from the very start... would there have been a collision between the SUV and "
+        "the yellow biplane?",
+        "If only the SUV had been moving slowly from the start... would it have collided with the yellow biplane, or "
+        "would fate have spared them?",
+        "After the last frame we're shown... does a collision await the biplane, with anything at all?"])
+    assert dashes[-1] == "is_moving_velocity[fast]" and trailing[3] == "Counterfactual_moving_fast"
+    assert fate[3] == "Counterfactual_moving_slow" and last[0] == "futureEvents"
+    # an aside between dashes that names a vehicle or a time stays
+    assert dashed_aside_dropped("Is the red car — like the blue bus — moving fast?") is None
+    assert dashed_aside_dropped("Is the red car — at the very start — moving fast?") is None

@@ -2360,3 +2360,21 @@ def description_dropped(text: str) -> tuple[str, str] | None:
         heading += (" and " if first and named else ", " if heading else "") + " ".join(words)
         named |= first
     return heading + ": " + question.strip(), " ... ".join(" ".join(words) for words in dropped if words)
+
+
+# An aside between dashes that says nothing the question could need ('The red scooter — reckless, wild, untamed — is
+# it racing fast ...?', 'What kind of vehicle — oh, the treachery! — is getting faster ...?')
+DASHED = re.compile(r"\s[—–-]{1,2}\s(.+?)\s[—–-]{1,2}\s")
+
+
+def dashed_aside_dropped(text: str) -> tuple[str, str] | None:
+    """'Does the green plane — so proud, so untouchable — ever slam into another vehicle?' -> ('Does the green plane
+    ever slam into another vehicle?', 'so proud, so untouchable'); None where there is no such aside, or it names a
+    vehicle, a time, a state or anything else the question could need (`DESCRIBED_KEEPS`)."""
+    if not isinstance(text, str) or not (m := DASHED.search(text)):
+        return None
+    aside = tokenize(m.group(1))
+    if not aside or mentions(aside) or DESCRIBED_KEEPS - {"!"} & set(aside) or asks_impact(aside) or \
+            any(kind & set(aside) for kind in (START_WORDS | START_ADJECTIVES, COMES_IN_WORDS, SIGHT_WORDS)):
+        return None
+    return text[:m.start()] + " " + text[m.end():], m.group(1)

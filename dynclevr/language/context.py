@@ -419,6 +419,19 @@ def _judged(question: list[str], said: list[str]) -> list[str] | None:
     return ["is", "it", "true", "that", *clause, "?"] if mentions(clause) else None
 
 
+FLAT_SUBJECTS = {"it", "that", "this"}
+
+
+def _flat_remark(said: list[str]) -> bool:
+    """Whether a sentence only remarks on what was told ('it is bad .', 'it is not gentle .', 'it happens .'): a
+    short one about 'it', naming no vehicle, motion, time, collision or condition."""
+    return said[:1] != [] and said[0] in FLAT_SUBJECTS and 2 <= len(said) <= 7 and said[-1] in SENTENCE_ENDS and \
+        not mentions(said) and not asks_impact(said) and not (
+            MOTION_DESCRIPTIONS | MOTION_WORDS | SPEED_CLASS_WORDS | SPEED_NOUNS | START_WORDS | COMES_IN_WORDS
+            | FILM_WORDS | IMAGINED_SAID | CONDITION_OPENERS | {"slowly", "quickly", "gently", "fast", "slow", "quick",
+                                                               "stopped", "stops", "ends", "would", "will"}) & set(said)
+
+
 def _checked(question: list[str], said: list[str]) -> list[str] | None:
     """A statement, then asked whether it is right ('the yellow chopper is tearing along fast . am I right ?' -> 'the
     yellow chopper is tearing along fast ?'); None where it is not."""
@@ -715,6 +728,8 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         out, read = context_as_question(words[:j] + ["."] + asked, known)
         return (out, read) if read else (words, ())
     context = [words[a:b] for a, b in spans[:asked_at]]
+    # a narrator's flat remark on a collision just told ('The bikes crash. It is bad. When they do, ...'): nothing
+    context = [s for j, s in enumerate(context) if not (j and asks_impact(context[j - 1]) and _flat_remark(s))]
     question = words[spans[asked_at][0]:spans[asked_at][1]]
     # ('Imagine this. The bike moves fast. Would ...?', 'Picture this. ...')
     conditions = [_condition_said(s, bool(j and ((IMAGINED_SAID | {"if"}) & set(context[j - 1])
@@ -1314,3 +1329,78 @@ def retold_as_imagined(words: list[str]) -> tuple[list[str], tuple[tuple[str, st
                 n = m + len(link)
                 return words[:k] + ["suppose", *words[n:]], ((" ".join(words[k:n]), "suppose"),)
     return words, ()
+
+
+# A change said as what might have been, then supposed ('The car might have started fast. Say it had. Would it ...?',
+# 'The fighter might have floated from the start. If it had, would it ...?'): the grammar's 'suppose ... had'
+MIGHT_HAVE = {"might", "could", "may"}
+SUPPOSED_SO = [[s, "it", v] for s in ("say", "suppose", "imagine", "assume") for v in ("had", "was", "did")]
+
+
+def possibility_as_supposed(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'the car might have started fast . say it had . would it have hit the bus ?' -> 'suppose the car had started
+    fast . would it have hit the bus ?': a first sentence of a vehicle that might have done otherwise, where the
+    question after it asks what would have been; the sentence that supposes it so ('say it had .', a question's 'if
+    it had ,') read as nothing. With the words read so, or the words as they are and ()."""
+    spans = _sentence_spans(words)
+    if len(spans) < 2 or "would" not in words[spans[-1][0]:] or words[-1:] != ["?"]:
+        return words, ()
+    a, b = spans[0]
+    k = next((k for k in range(a + 1, min(b - 2, a + 7)) if words[k] in MIGHT_HAVE and words[k + 1] == "have"), None)
+    # (a change of its motion, the question asking what it would have hit: not 'The car could have hit the bus.
+    # Would it have been going fast?')
+    if k is None or not mentions(words[a:k]) or set(words[a:k]) & (SENTENCE_ENDS | {",", "not"}) or \
+            "not" in words[k + 2:b] or asks_impact(words[k + 2:b]) or not asks_impact(words[spans[-1][0]:]):
+        return words, ()
+    said = ["suppose", *words[a:k], "had", *words[k + 2:b]]
+    read = [(" ".join(words[a:b]), " ".join(said))]
+    # ('Say it had.', 'Suppose it was.', and a question's 'If it had, would it ...?')
+    supposed = {j for c, d in spans[1:-1] if words[c:d - 1] in SUPPOSED_SO for j in range(c, d)} | \
+        (set(range(spans[-1][0], spans[-1][0] + 4)) if words[spans[-1][0]:spans[-1][0] + 4] == ["if", "it", "had", ","]
+         else set())
+    if supposed:
+        read.append((" ".join(words[j] for j in sorted(supposed)), "nothing, the change supposed"))
+    return [*said, *(w for j, w in enumerate(words[b:], b) if j not in supposed)], tuple(read)
+
+
+# A manual's parts, labelled in brackets ('[A] brown pickup', '[Part V] bicycle', '[E1] yellow dirt bike') and then
+# named by the label alone ('Is [A] moving slowly at impact?'); and a vehicle called a part ('one part is stopped',
+# 'what colour does that part have')
+PART_POINTERS = {"one", "that", "this", "which", "what", "each", "the"}
+
+
+def part_labels_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'set [ c ] gray dirtbike next to [ d ] blue suv . check : is [ c ] slower than [ d ] ?' -> 'set the gray
+    dirtbike next to the blue suv . check : is the gray dirtbike slower than the blue suv ?'. With the words read so,
+    or the words as they are and ()."""
+    labels, out, read, k = {}, [], [], 0
+    while k < len(words):
+        close = words.index("]", k) if words[k] == "[" and "]" in words[k + 2:k + 5] else None
+        label = tuple(w for w in words[k + 1:close] if w != "part") if close else ()
+        if not label or len(label) > 2 or not all(w.isalnum() and len(w) <= 6 for w in label):   # ('[B4]' is 'before')
+            out.append(words[k])
+            k += 1
+            continue
+        after = words[close + 1:]
+        runs = mentions(after[:6])
+        if runs and runs[0][0] == 0:
+            end = runs[0][1] + (after[runs[0][1]:runs[0][1] + 1] in (["one"], ["vehicle"]))
+            labels[label] = after[:end]
+            read.append((" ".join(words[k:close + 1]), "the"))
+            out += ["the"] if out[-1:] not in (["the"], ["a"]) else []
+            k = close + 1
+        elif label in labels:
+            read.append((" ".join(words[k:close + 1]), " ".join(["the", *labels[label]])))
+            out += ["the", *labels[label]]
+            k = close + 1
+        else:
+            return words, ()
+    # (where the parts are labelled or counted, 'one part is stopped'; not a part of the video: 'the part of the
+    # clip', 'part-way', 'the part where they collide', 'the part we don't get to see')
+    parts = [j for j, w in enumerate(out) if w == "part" and j and out[j - 1] in PART_POINTERS
+             and out[j + 1:j + 2] not in (["of"], ["-"], ["way"], ["through"], ["where"], ["when"])
+             and not (out[j + 1:j + 2] and out[j + 1] in SPEAKER_AND_LISTENER | {"they"})]
+    if parts and (labels or any(out[j - 1] == "one" for j in parts)):
+        read.append(("part", "vehicle"))
+        out = ["vehicle" if j in parts else w for j, w in enumerate(out)]
+    return (out, tuple(read)) if read else (words, ())

@@ -52,13 +52,13 @@ from dynclevr import WEIGHTS_DIR, DynclevrError
 from dynclevr.artifacts import ArtifactError, atomic_path, write_json_atomic
 from dynclevr.colors import COLOR_NAMES
 from dynclevr.language.asides import (addressed_as_named, addressees_dropped, asides_dropped, calls_read,
-                                      corrections_dropped, description_dropped, digressions_dropped,
-                                      dislocated_as_asked, distractors_dropped, examination_as_asked, forecast_dropped,
-                                      framing_dropped, grumble_dropped, heading_dropped, hedges_dropped, hooks_dropped,
-                                      hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
-                                      owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
-                                      proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
-                                      requested_as_asked, restatements_read, script_cues_dropped,
+                                      corrections_dropped, dashed_aside_dropped, description_dropped,
+                                      digressions_dropped, dislocated_as_asked, distractors_dropped,
+                                      examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
+                                      heading_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked, in_verse,
+                                      interjections_dropped, log_stamp_dropped, owners_dropped, person_remark_dropped,
+                                      preamble_dropped, prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
+                                      remark_after_dropped, requested_as_asked, restatements_read, script_cues_dropped,
                                       simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
                                       speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
                                       word_given_dropped)
@@ -79,9 +79,9 @@ from dynclevr.language.code import code_as_said
 from dynclevr.language.context import (afterthoughts_read, change_as_imagined, check_ins_stated, closing_mark_added,
                                        context_as_question, found_then_asked, fragments_joined,
                                        impact_given_as_context, impact_said_first, inverted_condition_as_if,
-                                       retold_as_imagined, scenario_as_asked, settings_as_imagined,
-                                       someone_as_something, told_otherwise_as_imagined, transcript_as_asked,
-                                       variables_named)
+                                       part_labels_read, possibility_as_supposed, retold_as_imagined,
+                                       scenario_as_asked, settings_as_imagined, someone_as_something,
+                                       told_otherwise_as_imagined, transcript_as_asked, variables_named)
 from dynclevr.language.english import real_words
 from dynclevr.language.params import QParserParams
 from dynclevr.language.references import (OBJECT_WORDS, attributes_as_named, catalogue_names, concrete_program,
@@ -257,12 +257,13 @@ class QuestionParser:
                 said = "nothing, a verse's filler" if in_verse(texts[i]) else "nothing, the speaker's own words"
                 parses[i] = replace(again, read_as=((dropped, said), *again.read_as))
         # ... and one refused with a remark after it, a simile closing it, a heading before it, a screenplay's
-        # scene heading and cue or a heading's flourish, read again without them
+        # scene heading and cue, a heading's flourish or an aside between dashes, read again without them
         for cutter, said in ((remark_after_dropped, "nothing, a remark after the question"),
                              (simile_closing_dropped, "nothing, a simile"),
                              (heading_dropped, "nothing, a heading that says nothing the question does not"),
                              (script_cues_dropped, "nothing, a screenplay's heading and cue"),
-                             (description_dropped, "nothing, a heading's flourish")):
+                             (description_dropped, "nothing, a heading's flourish"),
+                             (dashed_aside_dropped, "nothing, an aside between dashes")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 
@@ -370,6 +371,7 @@ class QuestionParser:
         if symbol := time_symbol_said(words):
             return [], symbol, (), []
         words = rejoined(words, self.readable, SPELLINGS)
+        words, parts = part_labels_read(words)   # (before a label is read as a word: '[B4]' is no 'before')
         # 'sloooow', 'sooo': chat's held letters; 'rnotorbike', 's1ower': a scanner's misread print (read only as a
         # word the parser knows, never a synonym's: 'tell' is two confusions from 'teh')
         held = {w: stretched(w, self.readable) or dropped_g(w, self.readable) or scanned(w, self.known, SPELLINGS)
@@ -414,6 +416,7 @@ class QuestionParser:
         by_ear += remark + her + scenery
         shorthand = coded + tuple(held.items()) + starred + printed + shorthand + heard + sounded + by_ear
         words, named = catalogue_names(words)
+        named = parts + named
         words, fragments = fragments_joined(words)
         words, addressees = addressees_dropped(words)
         named = shared + named + fragments + addressees
@@ -466,8 +469,9 @@ class QuestionParser:
         # (a vehicle spoken to in a sentence before the question: 'Brown aircraft, you hit the cyan chopper. Were you
         # slow at the moment of impact?')
         words, spoken_to = addressed_as_named(words)
+        words, supposed = possibility_as_supposed(words)
         words, context = context_as_question(words, self.known)
-        context = checked + spoken_to + context
+        context = checked + spoken_to + supposed + context
         context = prompted + kind + restated + context
         words, after = afterthoughts_read(words, self.known)
         words, impact = impact_said_first(words)

@@ -289,10 +289,12 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
                     and said[k - 2:k] not in (["in", "your"], ["in", "my"])), None)   # 'in your opinion': a hedge
     if opinion:
         return f"the question asks an opinion ('{opinion}'), which no question here asks (they ask what happens)"
-    # (not 'after the video stops', nor a speed offered: 'slow or fast or stop ?')
+    # (not 'after the video stops', nor a speed offered: 'slow or fast or stop ?', nor 'the stopping of the video')
     stop = next((w for k, w in enumerate(said) if w in ("stop", "stops", "stopping") and k
                  and said[k - 1] not in FILM_WORDS and not ("or" in (said[k - 1], said[k + 1:k + 2] and said[k + 1])
-                                                         and {"slow", "fast"} & set(said[k - 4:k + 5]))), None)
+                                                         and {"slow", "fast"} & set(said[k - 4:k + 5]))
+                 and not (said[k + 1:k + 3] == ["of", "the"] and said[k + 3:k + 4] and said[k + 3] in FILM_WORDS)),
+                None)
     if stop:
         return (f"the question asks whether a vehicle comes to a stop ('{stop}'), which no question here asks (they "
                 "ask whether it is static at the start or at a collision)")

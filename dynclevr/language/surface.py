@@ -18,7 +18,7 @@ from dynclevr.language.tokenize import SPELLINGS
 from dynclevr.language.vocab import slips, sounded
 from dynclevr.language.words import (CLOSING_INTERJECTIONS, COMPARISONS, DETERMINERS, DIRECTION_CHOICES, GENERIC,
                                      GENERIC_NOUNS, NAMING, NEGATIONS, OTHER_COLOURS, OTHER_VEHICLES, QUERY_NOUNS,
-                                     QUESTION_OPENERS, SPEED_CHOICES, START_WORDS, asks_impact)
+                                     QUESTION_OPENERS, SPEED_CHOICES, START_WORDS, YES_NO_OPENERS, asks_impact)
 
 # A worksheet's or an exam paper's print around its question ('9. ... ? A) static B) slow C) fast [1 mark]', 'True or
 # false: the red sedan is moving fast.', 'Circle one: static / slow / fast', 'it is moving ______ (static/slow/fast).')
@@ -411,8 +411,9 @@ def trailing_off_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
     """A speaker's stage directions and trailing off, read as the grammar's marks: '* soft whisper * when ...' ->
     'when ...' (two words or more between stars, naming no vehicle: one starred word is a correction, read by
     `corrections_starred`); 'which way is it moving . . . left , right ...' -> '... moving , left , right ...' (the
-    choices after it), and 'faster . . . and faster' -> 'faster and faster'. Elsewhere trailing off ends a sentence, as
-    it is read. With the words read so, or the words as they are and ()."""
+    choices after it), 'faster . . . and faster' -> 'faster and faster', and 'had the bus stood still . . . would it
+    ...' -> 'had the bus stood still , would it ...' (and a time: 'after the last frame . . . does ...'). Elsewhere
+    trailing off ends a sentence, as it is read. With the words read so, or the words as they are and ()."""
     read, out, k = [], [], 0
     while k < len(words):
         close = next((j for j in range(k + 3, min(len(words), k + 7)) if words[j] == "*"), None) \
@@ -424,8 +425,14 @@ def trailing_off_read(words: list[str]) -> tuple[list[str], tuple[tuple[str, str
             read.append((" ".join(words[k:close + 1]), "nothing, a stage direction"))
             k = close + 1 + (words[close + 1:close + 2] in ([","], [":"], ["."]))
             continue
+        # (and a condition or a time trailing off before the question: 'Had the bus stood still ... would it ...?',
+        # 'After the last frame we're shown ... does a collision await ...?')
+        start = max((j + 1 for j, w in enumerate(out) if w in (".", "?", "!")), default=0)
         offered = words[k + 3:k + 4] == ["and"] and out[-1:] and out[-1] in COMPARISONS or \
-            words[k + 3:k + 4] and words[k + 3] in SLASHED and words[k + 4:k + 5] in ([","], ["or"])
+            words[k + 3:k + 4] and words[k + 3] in SLASHED and words[k + 4:k + 5] in ([","], ["or"]) or \
+            words[k + 3:k + 4] in (["would"], ["will"]) and out[start:start + 1] in (["had"], ["if"], ["suppose"]) or \
+            words[k + 3:k + 4] and words[k + 3] in YES_NO_OPENERS and out[start:start + 1] in (
+                ["after"], ["once"], ["past"], ["beyond"]) and not mentions(out[start:])
         if words[k:k + 3] == [".", ".", "."] and out and offered:
             said = [] if words[k + 3] == "and" or out[-1] in (",", ":", ";") else [","]
             read.append((". . .", " ".join(said) or "nothing"))

@@ -702,6 +702,12 @@ IDIOMS = phrase_table({
     # been spared?')
     **{(",", "or", "would", w, "have", "been", "spared"): (",", "or", "not") for w in ("it", "both", "they", "he",
                                                                                       "she")},
+    **{(",", "or", "would", f, "have", "spared", o): (",", "or", "not") for f in ("fate", "luck", "chance", "fortune")
+       for o in ("them", "it", "her", "him")},
+    # past the last frame shown is after the video ('After the last frame we're shown... does a collision await ...')
+    **{(p, "the", "last", f, *shown): ("after", "the", "video", "ends") for p in ("after", "past", "beyond")
+       for f in ("frame", "frames") for shown in (("we", "'", "re", "shown"), ("we", "are", "shown"), ("shown",),
+                                                   ("we", "see"), ("we", "get"))},
     # the part of the video no one sees is after it ('in the moments we will never see', 'in the time we are not
     # allowed to see', 'in the frames we don't get to see')
     **{("in", "the", t, "we", *n, "see"): ("after", "the", "video", "ends")
@@ -720,6 +726,10 @@ IDIOMS = phrase_table({
     # speeding up 'more and more' is speeding up ('which kind of vehicle is speeding up more and more')
     **{(v, *u, "more", "and", "more"): (v, *u) for v, u in (("speeding", ("up",)), ("accelerating", ()),
                                                            ("picking", ("up", "speed")))},
+    # a patent's 'said vehicle' is the vehicle, and ', as depicted in the video,' says nothing the question does not
+    **{("said", w): ("the", w) for w in (*OBJECT_WORDS, *COLOR_NAMES, "vehicle", "object", "one")},
+    **{(",", "as", v, *tail, ","): () for v in ("depicted", "shown", "recorded", "seen", "captured", "filmed")
+       for tail in ((), *((p, "the", f) for p in ("in", "on") for f in ("video", "clip", "footage", "recording")))},
     # a textbook's 'is observed to collide' says it collides, and its 'a second body' is another object, not a time
     **{(b, o, "to", v): (h,) for b in ("is", "was") for o in ("observed", "seen", "found")
        for v, h in (("collide", "collides"), ("hit", "hits"), ("strike", "strikes"))},
@@ -1209,7 +1219,8 @@ IDIOMS = phrase_table({
         ("bump", "collide"), ("come", "collide"), ("came", "collided"))},
     ("in", "mid", "-", "air"): ("in", "the", "air"), ("in", "midair"): ("in", "the", "air"),
     # a physics class's and a simulation's words for the start, floating and collisions
-    **{p: _START for p in (("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
+    **{p: _START for p in (("in", "its", "initial", "state"), ("in", "their", "initial", "states"),
+                           ("under", "the", "initial", "conditions"), ("under", "initial", "conditions"),
                            ("at", "the", "first", "timestep"), ("at", "the", "first", "time", "step"),
                            ("at", "the", "initial", "timestep"), ("at", "the", "first", "time", "-", "step"),
                            ("in", "the", "initial", "conditions"))},

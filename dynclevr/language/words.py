@@ -381,10 +381,12 @@ def impact_like(word: str) -> bool:
 
 
 def asks_impact(words: list[str]) -> bool:
-    """Whether the question is about collisions: an impact's word ('collides', 'struck'), or 'into' not of coming
-    into view ('runs into', 'bangs into')."""
+    """Whether the question is about collisions: an impact's word ('collides', 'struck'), 'into' not of coming
+    into view ('runs into', 'bangs into'), or 'come together'."""
     return any(w.startswith(IMPACT_STEMS) and not w.startswith(NOT_IMPACTS)
-               or w == "into" and not set(words[k + 1:k + 3]) & SIGHT_WORDS for k, w in enumerate(words))
+               or w == "into" and not set(words[k + 1:k + 3]) & SIGHT_WORDS
+               or w == "together" and words[k - 1:k] in (["come"], ["comes"], ["came"], ["coming"])   # 'come together'
+               for k, w in enumerate(words))
 
 
 def _head(words: list[str]) -> list[str]:
