@@ -28,10 +28,11 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       preamble_dropped, prompt_dropped, proof_as_asked, radio_as_asked,
                                       remark_after_dropped, requested_as_asked, script_cues_dropped,
                                       simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
-from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, comparison_imagined,
-                                      condition_subject, condition_subject_first, direction_unasked, floating_unsaid,
-                                      form_unasked, form_unmatched, future_unread, impact_unsaid,
-                                      motion_unfiltered, named_attribute, reversed_reading, speed_unsaid, time_unasked)
+from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, collision_unread,
+                                      comparison_imagined, condition_subject, condition_subject_first,
+                                      direction_unasked, floating_unsaid, form_unasked, form_unmatched, future_unread,
+                                      impact_unsaid, motion_unfiltered, named_attribute, reversed_reading,
+                                      speed_unsaid, time_unasked)
 from dynclevr.language.context import (afterthoughts_read, check_ins_stated, context_as_question,
                                        impact_said_first, told_otherwise_as_imagined, transcript_as_asked)
 from dynclevr.language.parse import (Parse, QuestionParser, _chosen, clause_time, program_shape, synonyms,
@@ -5470,3 +5471,17 @@ def test_terse_prose_a_patent_s_claims_a_manual_s_parts_and_a_melodrama_s_asides
     # an aside between dashes that names a vehicle or a time stays
     assert dashed_aside_dropped("Is the red car — like the blue bus — moving fast?") is None
     assert dashed_aside_dropped("Is the red car — at the very start — moving fast?") is None
+
+
+def test_a_paper_s_figure_is_read_as_nothing_and_a_collision_is_never_read_as_coming_into_view():
+    parser = QuestionParser.load()
+    figure, hit = parser.parse_batch([
+        "Upon its entry into the field of view (Fig. 1a), which speed class, static, slow or fast, is observed for the "
+        "gray biplane?",
+        "Red plane hit motorbike. Red plane stand still, go slow, or go fast when hit?"])
+    assert figure[-2:] == ["come_in_frame", "query_moving_velocity"]
+    # ('when hit' was read as the plane coming into view: refused rather than read so)
+    assert hit is None
+    assert collision_unread(["how", "fast", "is", "it", "when", "hit", "?"],
+                            ["Objects", "filter_attributes[red]", "unique", "Objects", "filter_attributes[red]",
+                             "unique", "come_in_frame", "query_moving_velocity"])

@@ -1416,6 +1416,7 @@ POST_LABELS = (["thread"], ["psa"], ["hot", "take"], ["genuine", "question"], ["
 
 
 EMOJI_WORDS = {"emoji", "emojis", "emoticon", "emoticons"}
+FIGURE_WORDS = {"fig", "figs", "figure", "figures", "table", "eq", "supplementary"}
 
 
 def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -1428,12 +1429,15 @@ def prompt_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
                          and out[k + 1] in FILM_WORDS | {"image", "frames"}), None)) is not None:
         read.append((" ".join(out[held:held + 3]), "nothing, the video's place"))
         out = out[:held] + out[held + 3:]
-    # a post's emoji said in words, anywhere ('(airplane emoji)', '(bus emoji x2)', '(thinking face)')
+    # a post's emoji said in words, anywhere ('(airplane emoji)', '(bus emoji x2)', '(thinking face)'), and a paper's
+    # figure ('(Fig. 1a)', '(see Table 2)')
     while (held := next((k for k in range(len(out)) if out[k] == "(" and ")" in out[k + 2:k + 7] and (
-            EMOJI_WORDS & set(out[k + 1:out.index(")", k)]) or out[out.index(")", k) - 1] == "face")),
+            EMOJI_WORDS & set(out[k + 1:out.index(")", k)]) or out[out.index(")", k) - 1] == "face"
+            or out[k + 1] in FIGURE_WORDS or out[k + 1:k + 3] in (["see", f] for f in FIGURE_WORDS))),
                         None)) is not None:
         close = out.index(")", held)
-        read.append((" ".join(out[held:close + 1]), "nothing, an emoji"))
+        read.append((" ".join(out[held:close + 1]), "nothing, an emoji" if out[held + 1] not in FIGURE_WORDS | {"see"}
+                     else "nothing, a figure"))
         out = out[:held] + out[close + 1:]
     # a post's labels said first ('thread', '1/', '(9/74)', 'PSA', 'hot take:', 'genuine question:', 'asking for a
     # friend')

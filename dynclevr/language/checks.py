@@ -351,14 +351,21 @@ LEAVING = {"leave", "leaves", "leaving", "left", "exit", "exits", "exiting", "ex
            "disappearing", "disappeared", "vanish", "vanishes", "vanished", "departs", "departed"}
 
 
+COLLIDING = ("collid", "collision", "hit", "crash", "struck", "strik", "smash", "slam")
+
+
 def collision_unread(words: list[str], program: list[str]) -> str:
-    """Why a reading at the start is not the question's ('' when it is): the question (as said: 'by any chance' is
-    no 'bump') also speaks of a collision ('is the red car at the start faster than the bus at the collision?' was
-    read at the start alone)."""
-    if "start" not in program or COLLISION_OPERATIONS.intersection(map(operation, program)) or not asks_impact(words):
+    """Why a reading at the start or as a vehicle comes into view is not the question's ('' when it is): the question
+    (as said: 'by any chance' is no 'bump') also speaks of a collision ('is the red car at the start faster than the
+    bus at the collision?' was read at the start alone, 'red plane go fast when hit?' as it comes into view)."""
+    moment = next((m for m in ("start", "come_in_frame") if m in program), None)
+    # (as it comes into view, only an impact's own verb: 'slides into view', 'bang on the drum' say none)
+    if moment is None or COLLISION_OPERATIONS.intersection(map(operation, program)) or not asks_impact(words) or \
+            moment == "come_in_frame" and not any(w.startswith(COLLIDING) for w in words):
         return ""
-    return ("the question speaks of a collision, but its nearest reading asks at the start alone: no question here "
-            "reads both")
+    said = "at the start" if moment == "start" else "as it comes into view"
+    return (f"the question speaks of a collision, but its nearest reading asks {said} alone: no question here reads "
+            "both")
 
 
 GOING = {"go", "goes", "going", "went"}   # 'pushing it to go faster'
