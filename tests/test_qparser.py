@@ -5485,3 +5485,16 @@ def test_a_paper_s_figure_is_read_as_nothing_and_a_collision_is_never_read_as_co
     assert collision_unread(["how", "fast", "is", "it", "when", "hit", "?"],
                             ["Objects", "filter_attributes[red]", "unique", "Objects", "filter_attributes[red]",
                              "unique", "come_in_frame", "query_moving_velocity"])
+
+
+def test_a_note_to_self_s_shorthand_and_a_proverb_before_the_question_are_read():
+    parser = QuestionParser.load()
+    first, hypothesis, proverb = parser.parse_batch([
+        "- car, 1st shows up → static, slow or fast?",
+        "- yellow double-decker not moving at first (hypoth.) → bumps blue SUV?",
+        "Where the heart goes, the meeting follows. At the moment it hits the brown scooter, which way is the cyan "
+        "cruiser heading? Lucky numbers 6, 27, 33."])
+    # ('1st' was read at the start, '(hypoth.)' as a collision of the SUV alone, and the proverb's 'it' as the scooter)
+    assert first[-2:] == ["come_in_frame", "query_moving_velocity"]
+    assert hypothesis[4] == "Counterfactual_static"
+    assert proverb[:4] == ["Objects", "filter_attributes[cyan]", "filter_attributes[cruiser]", "unique"]

@@ -830,12 +830,17 @@ def context_as_question(words: list[str], known=None) -> tuple[list[str], tuple[
         # said before the question's own mentions, it may be one of them ('Had it been floating ..., would the jet
         # and the bike ...?')
         meant = next((r for r in latest if not _named(r, named)), latest[0] if latest else None)
-        if meant is None:
+        # (where the context names no vehicle, 'it' in a clause said first is the one the question names after it:
+        # 'Where the heart goes, the meeting follows. At the moment it hits the brown scooter, which way is the cyan
+        # cruiser heading?')
+        if meant is None and not (not every and out[:1] and out[0] in TIME_OPENERS and "," in out[pronoun:]
+                                  and named):
             return words, ()
-        read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
-        out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
-        used.add(meant)
-        named = mentions(out)
+        if meant is not None:
+            read.append((out[pronoun], " ".join(_said(meant)) + "'s" * (out[pronoun] == "its")))
+            out[pronoun:pronoun + 1] = _said(meant) + ["'", "s"] * (out[pronoun] == "its")
+            used.add(meant)
+            named = mentions(out)
     # 'it' hit by the vehicle the question names: the context's other one ('The cyan jet bonks the yellow airliner.
     # Was the jet slow when it collided with it?')
     struck = next((k for k, w in enumerate(out) if w == "it" and k and (out[k - 1] in ("with", "into", "against") or

@@ -13,7 +13,8 @@ SPELLINGS = {"grey": "gray", "colour": "color", "colours": "colors", "airplane":
              "vid": "video", "spd": "speed", "dir": "direction", "@": "at",   # and a note's ('spd @ start')
              "vel": "velocity", "mtn": "mountain",
              "wat": "what", "wut": "what", "wht": "what", "rly": "really", "secs": "seconds",
-             "b4": "before", "r": "are", "smth": "something", "sth": "something", "bc": "because"}   # and a text's
+             "b4": "before", "r": "are", "smth": "something", "sth": "something", "bc": "because",   # and a text's
+             "hypoth": "hypothetical"}   # and a note to self's ('(hypoth.)')
 _QUOTES = str.maketrans({"\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2013": "-", "\u2014": "-"})
 # Negations written short, as the grammar says them in full ("isn't moving" is "is not moving"), also typed without
 # the apostrophe ("isnt", "didnt"); "'s" stays, being a possessive as often as "is".
@@ -41,6 +42,8 @@ _IT_HAVE = re.compile(r"\b(it|they|we|you|i)'ve\b")
 # a briefing's hour of the start ('at H-hour', 'from T-zero'), and mission control's loss of signal, the video's end
 # ('Post-LOS projection: ...', read before a heading's words are weighed)
 _ZERO_HOUR = re.compile(r"\b(?:h-hour|t-zero|t-0|h hour)\b")
+# a note's '1st' (not a word of SPELLINGS, which a misread print would reach: 'ist' is one confusion from it)
+_FIRST = re.compile(r"\b1st\b")
 _SIGNAL_LOST = re.compile(r"\b(?:post|after)[- ]?los\b|\bafter (?:the )?loss of signal\b")
 # 'faster an' faster', 'the car an' the bus'
 _AN = re.compile(r"\ban'(?=\s|$)")
@@ -86,7 +89,7 @@ def tokenize(text: str) -> list[str]:
     text = _NOT.sub(lambda m: _NOT_STEMS.get(m.group(1), m.group(1)) + " not", text)
     text = _SIGNAL_LOST.sub("after the video ends", text)
     text = _GIVER.sub(lambda m: _GONE_ALL_OUT[m.group(1)], _TH.sub(lambda m: (m.group(1) or "") + "thing", text))
-    text = _DROPPED_G.sub(r"\1g", _AN.sub("and", _ZERO_HOUR.sub("the start", text)))
+    text = _DROPPED_G.sub(r"\1g", _AN.sub("and", _FIRST.sub("first", _ZERO_HOUR.sub("the start", text))))
     text = _ELISION.sub(lambda m: _ELIDED[m.group(0)], text)
     text = _THAT_IS.sub(r"\1 is", _HAD.sub(r"\1 had", _IT_HAVE.sub(r"\1 have", _LEAD.sub("", text))))
     text = _KAOMOJI.sub(" ", _HONORIFIC.sub("", text))
