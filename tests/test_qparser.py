@@ -23,10 +23,10 @@ from dynclevr.language.params import qparser_params
 from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_named, asides_dropped,
                                       corrections_dropped, dashed_aside_dropped, description_dropped,
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
-                                      examination_as_asked, framing_dropped, heading_dropped, hedges_dropped,
-                                      hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
-                                      preamble_dropped, prompt_dropped, proof_as_asked, radio_as_asked,
-                                      remark_after_dropped, requested_as_asked, script_cues_dropped,
+                                      examination_as_asked, framing_dropped, heading_dropped, headlines_dropped,
+                                      hedges_dropped, hypothesis_as_asked, in_verse, interjections_dropped,
+                                      log_stamp_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
+                                      radio_as_asked, remark_after_dropped, requested_as_asked, script_cues_dropped,
                                       simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, collision_unread,
                                       comparison_imagined, condition_subject, condition_subject_first,
@@ -5498,3 +5498,20 @@ def test_a_note_to_self_s_shorthand_and_a_proverb_before_the_question_are_read()
     assert first[-2:] == ["come_in_frame", "query_moving_velocity"]
     assert hypothesis[4] == "Counterfactual_static"
     assert proverb[:4] == ["Objects", "filter_attributes[cyan]", "filter_attributes[cruiser]", "unique"]
+
+
+def test_a_ticker_s_headlines_are_read_as_nothing_where_the_question_says_all_they_say():
+    parser = QuestionParser.load()
+    still, forecast = parser.parse_batch([
+        "STANDSTILL WATCH /// OPENING SECONDS /// Was the red motorbike sitting completely still when the clip began?",
+        "FOOTAGE FROZEN MID-CLIP /// FORECAST DESK /// Will the yellow plane and the green car collide after the "
+        "cut-off?"])
+    assert still == ["Objects", "filter_attributes[red]", "filter_attributes[motorbike]", "unique", "start",
+                     "is_static"]
+    assert forecast[0] == "futureEvents" and forecast[-1] == "exist"
+    # a headline that says a time, a vehicle or a state the question does not stays
+    assert headlines_dropped("AT THE START /// Is the red car fast?") is None
+    assert headlines_dropped("RED CAR /// Is the sedan moving fast at the start?") is None
+    assert headlines_dropped("HOVER WATCH • Is the red plane fast at the start?") is None
+    assert headlines_dropped("BUS NEWS >>> Is the red bus static at the start?") == (
+        "Is the red bus static at the start?", "BUS NEWS")

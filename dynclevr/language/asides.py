@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 
 from dynclevr.colors import COLOR_NAMES
+from dynclevr.language.checks import SPEEDING_UP
 from dynclevr.language.context import _sentence_spans, coordinated_subject
 from dynclevr.language.references import EVERYDAY_NAMES, OBJECT_WORDS, catalogue_names, generalises, mentions
 from dynclevr.language.tokenize import tokenize
@@ -2382,3 +2383,46 @@ def dashed_aside_dropped(text: str) -> tuple[str, str] | None:
             any(kind & set(aside) for kind in (START_WORDS | START_ADJECTIVES, COMES_IN_WORDS, SIGHT_WORDS)):
         return None
     return text[:m.start()] + " " + text[m.end():], m.group(1)
+
+
+# A news ticker's headlines in capitals before the question, each closed by a separator ('STANDSTILL WATCH ///
+# OPENING SECONDS /// Was the red motorbike sitting completely still when the clip began?')
+HEADLINE_MARK = re.compile(r"\s*(?:/{2,}|>{2,}|\+{2,}|\*{2,}|-{2,3}|[•—–|:])\s*")
+# the kinds of thing a headline may say that the question must say too, each in any of its words ('HOVER WATCH' and
+# 'floating', 'OPENING SECONDS' and 'began')
+HEADLINE_KINDS = (START_WORDS | START_ADJECTIVES | {"outset", "opens", "starts", "kickoff", "gun", "gate", "grid", "early"},
+                  COMES_IN_WORDS | SIGHT_WORDS | {"sighting", "enters", "entry"},
+                  FLOATING_WORDS | AFLOAT_SAID | {"aloft", "hovered", "lift", "sky", "high"},
+                  STATIC_SAID | REST_WORDS | {"standstill", "parked"},
+                  SPEEDING_UP | {"acceleration", "accelerating", "accelerates"},
+                  SPEED_CLASS_WORDS, NEGATIONS, COMPARING - {"more", "less"},
+                  CONDITION_OPENERS | CONDITION_WORDS | IMAGINED_SAID | IMAGINING | CONDITION_LABELS
+                  | {"hypothetical", "scenario", "alternate", "imagine", "what-if"},
+                  FUTURE_CUES | END_WORDS | {"forecast", "outlook", "halted", "frozen", "cut", "after"})
+
+
+def headlines_dropped(text: str) -> tuple[str, str] | None:
+    """'CLIP HALTED • BLUE BUS OUTLOOK • Will the blue bus collide with anything after the video stops?' -> ('Will the
+    blue bus collide ...?', 'CLIP HALTED • BLUE BUS OUTLOOK'): headlines in capitals, each closed by a separator,
+    read as nothing where every vehicle they name the question names too (`generalises`) and every kind of thing they
+    say (a time, a state, a comparison, a condition, a collision: `HEADLINE_KINDS`) the question says too; None where
+    there are no such headlines."""
+    if not isinstance(text, str) or not text.rstrip().endswith("?"):
+        return None
+    end = 0
+    while (mark := HEADLINE_MARK.search(text, end)) and re.search(r"[A-Z]", text[end:mark.start()]) and \
+            not re.search(r"[a-z]", text[end:mark.start()]):
+        end = mark.end()
+    question = text[end:]
+    if not end or not re.match(r"[A-Z][a-z]", question):
+        return None
+    said = catalogue_names(tokenize(text[:end].lower()))[0]
+    if FILM_WORDS & set(said):
+        said = [w for w in said if w not in STATIC_SAID | REST_WORDS]   # (the film's: 'FOOTAGE FROZEN MID-CLIP')
+    asked = catalogue_names(tokenize(question))[0]
+    named = [r for _, _, r in mentions(asked)]
+    if not all(any(generalises(r, full) for full in named) for _, _, r in mentions(said)) or \
+            asks_impact(said) and not asks_impact(asked) or \
+            any(kind & set(said) and not kind & set(asked) for kind in HEADLINE_KINDS):
+        return None
+    return question, HEADLINE_MARK.sub(" / ", text[:end]).strip(" /")

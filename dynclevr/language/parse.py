@@ -55,10 +55,11 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       corrections_dropped, dashed_aside_dropped, description_dropped,
                                       digressions_dropped, dislocated_as_asked, distractors_dropped,
                                       examination_as_asked, forecast_dropped, framing_dropped, grumble_dropped,
-                                      heading_dropped, hedges_dropped, hooks_dropped, hypothesis_as_asked, in_verse,
-                                      interjections_dropped, log_stamp_dropped, owners_dropped, person_remark_dropped,
-                                      preamble_dropped, prompt_dropped, proof_as_asked, radio_as_asked, ramble_dropped,
-                                      remark_after_dropped, requested_as_asked, restatements_read, script_cues_dropped,
+                                      heading_dropped, headlines_dropped, hedges_dropped, hooks_dropped,
+                                      hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
+                                      owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
+                                      proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
+                                      requested_as_asked, restatements_read, script_cues_dropped,
                                       simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
                                       speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
                                       word_given_dropped)
@@ -263,7 +264,8 @@ class QuestionParser:
                              (heading_dropped, "nothing, a heading that says nothing the question does not"),
                              (script_cues_dropped, "nothing, a screenplay's heading and cue"),
                              (description_dropped, "nothing, a heading's flourish"),
-                             (dashed_aside_dropped, "nothing, an aside between dashes")):
+                             (dashed_aside_dropped, "nothing, an aside between dashes"),
+                             (headlines_dropped, "nothing, a ticker's headlines")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 
