@@ -2390,7 +2390,8 @@ def dashed_aside_dropped(text: str) -> tuple[str, str] | None:
 HEADLINE_MARK = re.compile(r"\s*(?:/{2,}|>{2,}|\+{2,}|\*{2,}|-{2,3}|[•—–|:])\s*")
 # the kinds of thing a headline may say that the question must say too, each in any of its words ('HOVER WATCH' and
 # 'floating', 'OPENING SECONDS' and 'began')
-HEADLINE_KINDS = (START_WORDS | START_ADJECTIVES | {"outset", "opens", "starts", "kickoff", "gun", "gate", "grid", "early"},
+HEADLINE_KINDS = (START_WORDS | START_ADJECTIVES | {"outset", "opens", "starts", "kickoff", "gun", "gate", "grid",
+                                                   "early"},
                   COMES_IN_WORDS | SIGHT_WORDS | {"sighting", "enters", "entry"},
                   FLOATING_WORDS | AFLOAT_SAID | {"aloft", "hovered", "lift", "sky", "high"},
                   STATIC_SAID | REST_WORDS | {"standstill", "parked"},
@@ -2402,8 +2403,8 @@ HEADLINE_KINDS = (START_WORDS | START_ADJECTIVES | {"outset", "opens", "starts",
 
 
 def headlines_dropped(text: str) -> tuple[str, str] | None:
-    """'CLIP HALTED • BLUE BUS OUTLOOK • Will the blue bus collide with anything after the video stops?' -> ('Will the
-    blue bus collide ...?', 'CLIP HALTED • BLUE BUS OUTLOOK'): headlines in capitals, each closed by a separator,
+    """'CLIP HALTED • BLUE BUS OUTLOOK • Will the blue bus collide with anything after the video stops?' -> ('Will
+    the blue bus collide ...?', 'CLIP HALTED / BLUE BUS OUTLOOK'): headlines in capitals, each closed by a separator,
     read as nothing where every vehicle they name the question names too (`generalises`) and every kind of thing they
     say (a time, a state, a comparison, a condition, a collision: `HEADLINE_KINDS`) the question says too; None where
     there are no such headlines."""
