@@ -5515,3 +5515,25 @@ def test_a_ticker_s_headlines_are_read_as_nothing_where_the_question_says_all_th
     assert headlines_dropped("HOVER WATCH • Is the red plane fast at the start?") is None
     assert headlines_dropped("BUS NEWS >>> Is the red bus static at the start?") == (
         "Is the red bus static at the start?", "BUS NEWS")
+
+
+def test_a_sphinx_s_unveiled_scene_and_stopped_frames_and_an_infomercial_s_asides_are_read():
+    parser = QuestionParser.load()
+    unveiled, beyond, bangs, watcher, something = parser.parse_batch([
+        "When the scene is first unveiled, what is the motion of the gray double-decker, traveller: static, slow, or "
+        "fast?",
+        "Pluto, keeper of hidden futures, knows what lies beyond the stopped frames: will the blue SUV hit the brown "
+        "bendy bus afterwards?",
+        "The cyan road bike bangs right into the brown bus, can you believe it? At that moment of impact, is the cyan "
+        "road bike standing completely still?",
+        "How fast goes the gray scooter when first it appears before the watcher, traveller? Static, slow or fast?",
+        "Feast your eyes on the green motorbike, isn't it something? At the beginning, which direction is it moving? "
+        "Call now!"])
+    # (the scene unveiled was read as the bus coming into view)
+    assert unveiled == ["Objects", "filter_attributes[gray]", "filter_attributes[double_bus]", "unique", "start",
+                        "query_moving_velocity"]
+    assert beyond[0] == "futureEvents" and bangs[-2:] == ["get_frame", "is_static"]
+    assert watcher[-2:] == ["come_in_frame", "query_moving_velocity"] and something[-2:] == ["start",
+                                                                                            "query_moving_direction"]
+    # before another vehicle is still an order, which no question asks
+    assert parser.parse("Does the red car appear before the blue bus?") is None

@@ -216,8 +216,9 @@ def unknown_property(words: list[str], known, said: list[str]) -> str:
     order = next((" ".join(said[k:k + 2]) for k, w in enumerate(said) if w in COMES_IN_WORDS and
                   said[k + 1:k + 2] in (["before"], ["after"], ["first"], ["last"]) and not (
                       said[k + 1] == "after" and FILM_WORDS & set(said[k + 2:k + 4])
-                      or said[k + 1] == "before" and said[k + 2:k + 3] in (["us"], ["me"], ["you"], ["our"], ["my"],
-                                                                            ["your"]))), None)   # in sight
+                      or said[k + 1] == "before" and (said[k + 2:k + 3] in (["us"], ["me"], ["you"], ["our"], ["my"],
+                                                                             ["your"]) or said[k + 2:k + 3] == ["the"]
+                                                      and said[k + 3:k + 4] in WATCHERS))), None)   # in sight
     if order:
         return (f"the question asks the order in which vehicles appear ('{order}'), which no question here asks (they "
                 "ask how fast a vehicle is moving when it comes into view)")
@@ -440,6 +441,8 @@ RELATIVE_MOTION = {"overtake", "overtakes", "overtook", "overtaking", "chase", "
 PASSING = {"pass", "passes", "passing", "passed"}
 VEHICLE_SAID = OBJECT_WORDS | {"it", "another", "vehicle", "object", "one", "thing"}
 NEAR_MISS = {"nearly", "almost", "narrowly", "barely"}   # 'does it nearly hit the bus?' asks whether it does not
+# before whom a vehicle appears, not before which other vehicle ('when it first appears before the watcher')
+WATCHERS = [["watcher"], ["watchers"], ["viewer"], ["viewers"], ["camera"], ["eye"], ["eyes"], ["lens"], ["audience"]]
 PATH_SHAPES = {"straight", "circle", "circles", "circular", "curve", "curves", "curved", "curving", "zigzag", "zigzags",
                "zigzagging", "diagonally", "diagonal", "sideways", "loop", "loops", "arc", "swerving", "lap", "laps",
                "circuit", "circuits", "route", "routes", "path", "paths"}

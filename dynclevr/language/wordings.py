@@ -994,6 +994,15 @@ IDIOMS = phrase_table({
     **{(d, "along"): (m,) for d, m in (("drifting", "moving"), ("drifts", "moves"), ("drifted", "moved"))},
     # a dialect's 'right' before a speed says it more ('goin' right fast'), no direction
     **{("right", s): (s,) for s in ("fast", "slow", "slowly")},
+    # an advertiser's 'for a limited time only' (no time of the video)
+    **{("for", "a", "limited", "time", *only): () for only in ((), ("only",))},
+    # 'bangs right into the brown bus' ('right' is no direction there)
+    **{(v, "right", into): (v, into) for into in ("into", "in", "at") for v in (
+        "crash", "crashes", "crashed", "crashing", "bang", "bangs", "banged", "banging", "slam", "slams", "slammed",
+        "slamming", "smash", "smashes", "smashed", "smashing", "run", "runs", "ran", "running", "drive", "drives",
+        "drove", "driving", "plough", "ploughs", "ploughed", "plow", "plows", "plowed", "bump", "bumps", "bumped",
+        "ram", "rams", "rammed", "barrel", "barrels", "barrelled", "barreled", "go", "goes", "went", "fly", "flies",
+        "flew", "careen", "careens", "careened")},
     # a Scot's 'no' of a motion ('the one that's no movin at aw')
     **{(be, "no", v): (be, "not", v) for be in ("is", "s", "was") for v in (
         "moving", "going", "driving", "flying", "floating", "speeding", "accelerating", "hovering")},
@@ -1079,6 +1088,7 @@ IDIOMS = phrase_table({
     # a rhetorical aside after the question ('... at the start - wasn't it obvious?', '- didn't it stand out?')
     **{(sep, aux, "not", "it", *plain): () for sep in ("-", ",") for aux in ("is", "was", "did", "does")
        for plain in (("obvious",), ("clear",), ("plain",), ("evident",), ("easy", "to", "spot"), ("easy", "to", "see"),
+                     ("something",), ("amazing",), ("incredible",), ("beautiful",), ("gorgeous",),
                      ("easy", "to", "tell"), ("stand", "out"), ("stick", "out"))},
     # a speed as a database's attribute ('the vehicle whose speed is fast at the start')
     **{("whose", speed, be): ("that", be) for speed in ("speed", "pace", "velocity", "motion", "state")
@@ -1091,6 +1101,12 @@ IDIOMS = phrase_table({
     # 'when first the scene begins to play', a poet's start
     **{("when", "first", "the", film, begins): _START for film in ("scene", "video", "clip", "film", "play", "show")
        for begins in ("begins", "starts", "opens", "began", "started", "opened", "beginneth", "openeth")},
+    # ... and 'when the scene is first unveiled' (the video's, not a vehicle's coming into view), and what lies past
+    # a video stopped ('beyond the stopped frames'; 'stopped' was read as a vehicle's)
+    **{(past, "the", stopped, film): ("after", "the", "video", "ends") for past in ("after", "beyond", "past")
+       for stopped in ("stopped", "halted", "frozen", "paused") for film in ("frames", "vision", *FILM_WORDS)},
+    **{("when", "the", film, be, "first", shown): _START for film in ("scene", "video", "clip", "film", "footage")
+       for be in ("is", "was") for shown in ("shown", "unveiled", "revealed", "played", "screened", "opened")},
     # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'
     **{("the", "picture", *v): ("the", "video", *v) for v in (
         ("began",), ("begins",), ("started",), ("starts",), ("opened",), ("opens",), ("first", "began"),
