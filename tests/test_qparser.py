@@ -5537,3 +5537,24 @@ def test_a_sphinx_s_unveiled_scene_and_stopped_frames_and_an_infomercial_s_aside
                                                                                             "query_moving_direction"]
     # before another vehicle is still an order, which no question asks
     assert parser.parse("Does the red car appear before the blue bus?") is None
+
+
+def test_a_quiz_host_s_points_and_final_answer_and_a_letter_s_news_are_read_as_nothing():
+    parser = QuestionParser.load()
+    points, final, demon, news = parser.parse_batch([
+        "Contestants, the cyan dirt bike slams into something! For 500 points, what kind of vehicle did it hit?",
+        "Here's a sneaky one! At the moment the brown pickup collides with the cyan bus, is the pickup standing "
+        "still? Final answer?",
+        "The category is Need for Speed! One vehicle is racing along at the start of the video. What colour is that "
+        "speed demon?",
+        "My dear, the vicar's wife made a trifle that nobody could finish; suppose the yellow dirt bike had started "
+        "off fast, would it have run into the yellow cruiser?"])
+    # ('points' was read as which way a vehicle faces)
+    assert points[-3:] == ["get_all_col_partners", "unique", "query_attributes[shape]"]
+    assert final[-2:] == ["get_frame", "is_static"]
+    assert demon == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+    assert news[:5] == ["Objects", "filter_attributes[yellow]", "filter_attributes[dirtbike]", "unique",
+                        "Counterfactual_moving_fast"]
+    # a letter's news that names a vehicle or the film is not dropped as news
+    assert speaker_clauses_dropped("Dear, the red bus was parked by the gate; is it fast at the start?",
+                                   {"gate"}) is None

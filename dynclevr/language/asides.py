@@ -1363,7 +1363,8 @@ def radio_as_asked(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
 LABEL_WORDS = {"q", "question", "quick", "simple", "short", "small", "one", "another", "next", "last", "final",
                "first", "second", "third", "follow", "up", "-", "#", "no", "number", "a", "my", "here", "s", "'",
                "is", "the", "an", "easy", "hard", "tough", "tricky", "bonus", "query", "check", "hypothetical",
-               "from", "newbie", "noob", "novice", "beginner", "rookie", "newcomer"}   # 'Quick one from a newbie:'
+               "from", "newbie", "noob", "novice", "beginner", "rookie", "newcomer",   # 'Quick one from a newbie:'
+               "sneaky", "toughie", "stumper", "doozy", "teaser"}   # (a quiz host's 'Here's a sneaky one!')
 # ('Here's an easy one:': 'easy' is slow; 'Hi, quick check - is ...': a greeting before it, 'quick' is fast)
 ASIDE_WORDS = {"the", "a", "an", "that", "this", "one", "vehicle", "thing", "object"} | NOUNS_SAID
 
@@ -1719,7 +1720,7 @@ def asides_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], 
         read.append(("this", "the"))
         words = ["the" if w == "this" and b in OBJECT_WORDS else w for w, b in zip(words, words[1:] + [""])]
     # ('Quick one, is ...': the label's comma, where 'quick' would be read as a speed)
-    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-") or
+    end = next((k for k, w in enumerate(words[:9]) if w in (":", ".", "-", "!") or
                 w == "," and k == 2 and words[0] == "quick" and words[1] in QUICK_LABELS), None)
     if end and all(_label(w) or w in INTERJECTIONS | VOCATIVES | CLIP_NAMED for w in words[:end]) and \
             any(map(_label, words[:end])) and words[end + 1:end + 2] and \
@@ -2051,6 +2052,7 @@ SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"],
                   *(["may", who] for who in ("they", "it", "he", "she", "both", "the")), ["god"], ["bless"],
                   ["rest", "in", "peace"], ["heaven"], ["lord"])
 CLAUSE_BREAK = re.compile(r"((?:[,;:.!?…]+|\s[-—–]+)\s+)")
+LETTER = re.compile(r"(?:my\s+)?(?:dear|dearest|darling|sweetheart)\b[^,;:.!?]{0,20},", re.I)   # 'Dear heart,'
 
 
 # A question written as verse, its line breaks written ' / ' ('A cyan car, one fine day, / Hit the brown one, oh,
@@ -2080,6 +2082,14 @@ def _filler(words: list[str], unknown: set[str]) -> bool:
         set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"})
 
 
+def _news(words: list[str], unknown: set[str]) -> bool:
+    """Whether a letter's clause before its question holds a word of `unknown` and names no vehicle, colour, film or
+    collision: its family's news ('I've finally finished that enormous jigsaw', 'the vicar's wife made a trifle that
+    nobody could finish'), whose 'it', 'that' and 'finish' are not the question's."""
+    return bool(set(words) & unknown) and not mentions(words) and not asks_impact(words) and not set(words) & (
+        set(COLOR_NAMES) | OTHER_COLOURS | OBJECT_WORDS | FILM_WORDS | UNREMARKED - {"it", "that", "this"} | {"?"})
+
+
 def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
     """'Something runs into the gray minivan , and I want to know : what kind of vehicle is it ?' -> 'Something runs
     into the gray minivan , what kind of vehicle is it ?': the text without the clauses of the speaker's own (or a
@@ -2094,8 +2104,12 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
     if asked is None:
         asked = next((k for k, m in enumerate(marks) if "." in m and mentions(tokenize(" ".join(clauses[:k + 1])))),
                      len(clauses))
-    # (a heading before the question's colon or dash: a bug report's 'Regression since 2.0.5 --')
+    # (a heading before the question's colon or dash: a bug report's 'Regression since 2.0.5 --'; in a letter, its
+    # news before the question's sentence: 'Dear one, the plums are ripe and I've made jam; suppose ...?')
     heading = next((k for k, m in enumerate(marks[:asked]) if ":" in m or m.strip()[:1] in ("-", "—", "–")), -1)
+    letter = bool(LETTER.match(text))
+    if letter:
+        heading = max([heading] + [k for k, m in enumerate(marks[:asked]) if re.search(r"[.;!:]", m)])
     dropped = []
     for k, clause in enumerate(clauses):
         words = tokenize(VERSION.sub(" version ", clause))   # ('on 1.8.0', 'v3.8': no time)
@@ -2109,7 +2123,7 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         ours = words[:1] in (["before"], ["while"], ["until"]) and words[1:2] and words[1] in SPEAKER
         if ours and _filler(words[2:], unknown):
             own, words = True, words[2:]
-        if not own or not _filler(words, unknown):
+        if not own or not (_news(words, unknown) if letter and k <= heading else _filler(words, unknown)):
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
             if like and head.strip() and _filler(tokenize(like + tail), unknown):
                 dropped.append((like + tail).strip())

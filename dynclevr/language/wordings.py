@@ -994,7 +994,12 @@ IDIOMS = phrase_table({
     **{(d, "along"): (m,) for d, m in (("drifting", "moving"), ("drifts", "moves"), ("drifted", "moved"))},
     # a dialect's 'right' before a speed says it more ('goin' right fast'), no direction
     **{("right", s): (s,) for s in ("fast", "slow", "slowly")},
-    # an advertiser's 'for a limited time only' (no time of the video)
+    ("speed", "demon"): ("fast", "vehicle"),
+    # an advertiser's 'for a limited time only' (no time of the video), a quiz host's 'For 500 points' (no way it
+    # faces) and 'Final answer?'
+    **{("for", n, "points"): () for n in ("100", "200", "250", "300", "400", "500", "600", "800", "1000", "a", "the",
+                                          "ten", "twenty", "fifty", "double", "bonus", "extra", "all")},
+    **{("?", *your, "final", "answer", "?"): ("?",) for your in ((), ("is", "that", "your"), ("your",))},
     **{("for", "a", "limited", "time", *only): () for only in ((), ("only",))},
     # 'bangs right into the brown bus' ('right' is no direction there)
     **{(v, "right", into): (v, into) for into in ("into", "in", "at") for v in (
