@@ -26,8 +26,9 @@ from dynclevr.language.asides import (_courtesy, _remarked_after, addressed_as_n
                                       examination_as_asked, framing_dropped, heading_dropped, headlines_dropped,
                                       hedges_dropped, hypothesis_as_asked, in_verse, interjections_dropped,
                                       log_stamp_dropped, preamble_dropped, prompt_dropped, proof_as_asked,
-                                      radio_as_asked, remark_after_dropped, requested_as_asked, script_cues_dropped,
-                                      simile_closing_dropped, speaker_clauses_dropped, ticket_fields_read, wagers_read)
+                                      radio_as_asked, reference_dropped, remark_after_dropped, requested_as_asked,
+                                      riddles_dropped, script_cues_dropped, simile_closing_dropped,
+                                      speaker_clauses_dropped, ticket_fields_read, wagers_read)
 from dynclevr.language.checks import (anything_unasked, clock_unasked, collision_at_start, collision_unread,
                                       comparison_imagined, condition_subject, condition_subject_first,
                                       direction_unasked, floating_unsaid, form_unasked, form_unmatched, future_unread,
@@ -5558,3 +5559,24 @@ def test_a_quiz_host_s_points_and_final_answer_and_a_letter_s_news_are_read_as_n
     # a letter's news that names a vehicle or the film is not dropped as news
     assert speaker_clauses_dropped("Dear, the red bus was parked by the gate; is it fast at the start?",
                                    {"gate"}) is None
+
+
+def test_a_desk_s_ticket_a_member_s_minister_a_voicemail_s_news_and_a_koan_s_riddle_are_read():
+    parser = QuestionParser.load()
+    ticket, confirm, minister, voicemail, koan = parser.parse_batch([
+        "I'm sorry to hear about the trouble you've had. For ticket #27159, which type of vehicle is accelerating at "
+        "the beginning?",
+        "Hello, and thank you for contacting support regarding ticket 31148. Could you please confirm the colour of "
+        "the vehicle that is moving fast when the video begins?",
+        "Will the Minister kindly tell this House the colour of the thing that is hovering in the opening frames?",
+        "Hey it's me, I've been sitting in the garden all day, anyway, when the chopper first comes into view, is it "
+        "stationary, slow or fast? Call me back.",
+        "Does the wind touch the pine, or the pine the wind? Did the bus crash into any other object in the video?"])
+    assert ticket == ["Objects", "start", "filter_accelerating", "unique", "query_attributes[shape]"]
+    assert confirm == ["Objects", "start", "filter_moving_velocity[fast]", "unique", "query_attributes[color]"]
+    assert minister == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    assert voicemail[-2:] == ["come_in_frame", "query_moving_velocity"] and koan[0] == "Events"
+    # a frame's number is no ticket's, and a riddle that says a time or a state the question does not stays
+    assert reference_dropped(["is", "it", "fast", "at", "frame", "120", "?"])[1] == ()
+    assert riddles_dropped("What happens at the start? Is the red car fast?") is None
+    assert riddles_dropped("Something was parked. Is the red car fast at the start?") is None

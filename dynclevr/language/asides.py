@@ -2082,12 +2082,20 @@ def _filler(words: list[str], unknown: set[str]) -> bool:
         set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"})
 
 
-def _news(words: list[str], unknown: set[str]) -> bool:
+def _news(words: list[str], unknown: set[str], kept: set[str] = frozenset()) -> bool:
     """Whether a letter's clause before its question holds a word of `unknown` and names no vehicle, colour, film or
-    collision: its family's news ('I've finally finished that enormous jigsaw', 'the vicar's wife made a trifle that
-    nobody could finish'), whose 'it', 'that' and 'finish' are not the question's."""
+    collision (nor a word of `kept`): its family's news ('I've finally finished that enormous jigsaw', 'the vicar's
+    wife made a trifle that nobody could finish'), whose 'it', 'that' and 'finish' are not the question's."""
     return bool(set(words) & unknown) and not mentions(words) and not asks_impact(words) and not set(words) & (
-        set(COLOR_NAMES) | OTHER_COLOURS | OBJECT_WORDS | FILM_WORDS | UNREMARKED - {"it", "that", "this"} | {"?"})
+        set(COLOR_NAMES) | OTHER_COLOURS | OBJECT_WORDS | FILM_WORDS | UNREMARKED - {"it", "that", "this"} | {"?"}
+        | kept)
+
+
+# what the speaker's own clause may not say to be read as its news ('I'm just sitting in the garden', 'I've got to
+# run to a meeting in a sec': 'just', 'run' and 'sec' are the speaker's, not a vehicle's), where it names nothing
+SPEAKER_KEEPS = (UNREMARKED | START_WORDS | START_ADJECTIVES | END_WORDS | END_SAID | COMES_IN_WORDS | SIGHT_WORDS
+                 | CONDITION_OPENERS | CONDITION_WORDS | IMAGINING | IMAGINED_SAID | NEGATIONS | STATIC_SAID
+                 | REST_WORDS | SPEED_CLASS_WORDS | FLOATING_WORDS | PEOPLE | {"when", "as", "moment", "instant"})
 
 
 def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | None:
@@ -2123,7 +2131,9 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         ours = words[:1] in (["before"], ["while"], ["until"]) and words[1:2] and words[1] in SPEAKER
         if ours and _filler(words[2:], unknown):
             own, words = True, words[2:]
-        if not own or not (_news(words, unknown) if letter and k <= heading else _filler(words, unknown)):
+        news = _news(words, unknown) if letter and k <= heading else \
+            _filler(words, unknown) or opening in SPEAKER and _news(words, unknown, SPEAKER_KEEPS)
+        if not own or not news:
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
             if like and head.strip() and _filler(tokenize(like + tail), unknown):
                 dropped.append((like + tail).strip())
@@ -2202,6 +2212,33 @@ def heading_dropped(text: str) -> tuple[str, str] | None:
 # A log's clock stamp before its entry ('0615h. Yellow biplane under continuous watch. ...'): the hour of the log, not
 # the video's time (a watch log's '0000 hours' is its start: `times.TIME_ZERO`)
 LOG_STAMP = re.compile(r"\d{3,4}(?:h|hrs|hours)")
+
+
+# A support desk's reference to its ticket ('For ticket #27159, which type ...', 'Per case 12954,', 'regarding ticket
+# 31148'): its number is no time or count of the video's
+REFERENCE_LEADS = {"for", "per", "re", "regarding", "on", "about", "concerning", "under", "progress", "in", "with"}
+REFERENCED = {"ticket", "case", "incident", "request", "ref", "reference", "claim", "issue", "complaint", "enquiry",
+              "inquiry", "query"}
+
+
+def reference_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
+    """'for ticket # 27159 , which type ...' -> 'which type ...'; 'to progress ticket # 34467 , could ...' -> 'could
+    ...'. With each reference read as nothing, or the words as they are and ()."""
+    out, read, k = [], [], 0
+    while k < len(words):
+        number = k + 2 + (words[k + 2:k + 3] == ["#"])
+        if words[k] in REFERENCE_LEADS and words[k + 1:k + 2] and words[k + 1] in REFERENCED and \
+                re.fullmatch(r"\d{3,}", words[number] if number < len(words) else ""):
+            start = k - (words[k] == "progress" and out[-1:] == ["to"])
+            out = out[:len(out) - (k - start)]
+            # (its comma with it where it opens a clause)
+            end = number + 1 + (words[number + 1:number + 2] == [","] and (not out or out[-1] in CLAUSE_MARKS))
+            read.append((" ".join(words[start:end]), "nothing, a ticket's number"))
+            k = end
+            continue
+        out.append(words[k])
+        k += 1
+    return (out, tuple(read)) if read else (words, ())
 
 
 def log_stamp_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], ...]]:
@@ -2434,10 +2471,41 @@ def headlines_dropped(text: str) -> tuple[str, str] | None:
     said = catalogue_names(tokenize(text[:end].lower()))[0]
     if FILM_WORDS & set(said):
         said = [w for w in said if w not in STATIC_SAID | REST_WORDS]   # (the film's: 'FOOTAGE FROZEN MID-CLIP')
-    asked = catalogue_names(tokenize(question))[0]
-    named = [r for _, _, r in mentions(asked)]
-    if not all(any(generalises(r, full) for full in named) for _, _, r in mentions(said)) or \
-            asks_impact(said) and not asks_impact(asked) or \
-            any(kind & set(said) and not kind & set(asked) for kind in HEADLINE_KINDS):
+    if not _said_too(said, catalogue_names(tokenize(question))[0]):
         return None
     return question, HEADLINE_MARK.sub(" / ", text[:end]).strip(" /")
+
+
+def _said_too(said: list[str], asked: list[str]) -> bool:
+    """Whether the question `asked` names every vehicle `said` names (`generalises`) and says every kind of thing it
+    says (a time, a state, a comparison, a condition, a collision: `HEADLINE_KINDS`)."""
+    named = [r for _, _, r in mentions(asked)]
+    return all(any(generalises(r, full) for full in named) for _, _, r in mentions(said)) and \
+        not (asks_impact(said) and not asks_impact(asked)) and \
+        not any(kind & set(said) and not kind & set(asked) for kind in HEADLINE_KINDS)
+
+
+# A koan's riddle before the question ('Does the wind touch the pine, or the pine the wind? Did the bus crash into any
+# other object in the video?'): sentences naming no vehicle, that say nothing the question does not say too
+RIDDLE_SENTENCE = re.compile(r"(?<=[.?!])\s+(?=[A-Z])")
+RIDDLE_TIMES = {"moment", "moments", "instant", "time", "frame", "frames", "last", "first", "second", "seconds", "point",
+                "now", "later", "earlier"}
+
+
+def riddles_dropped(text: str) -> tuple[str, str] | None:
+    """'Who strikes the bell, and who is the bell? What kind of vehicle is it that bangs into the cyan utility bike?'
+    -> ('What kind of vehicle ...?', 'Who strikes the bell, and who is the bell?'): the sentences before the last one,
+    read as nothing where they name no vehicle and say nothing the question does not say too (`_said_too`); None where
+    there are none."""
+    if not isinstance(text, str) or not text.rstrip().endswith("?"):
+        return None
+    sentences = RIDDLE_SENTENCE.split(text.strip())
+    if len(sentences) < 2:
+        return None
+    said, asked = catalogue_names(tokenize(" ".join(sentences[:-1])))[0], catalogue_names(tokenize(sentences[-1]))[0]
+    # (nor the film or a moment the question points back at: 'Think about the last moment of the clip. Is the grey
+    # station wagon slower than the school bus then?')
+    if mentions(said) or set(said) & (FILM_WORDS | RIDDLE_TIMES) or set(asked) & {"then", "there"} or \
+            not _said_too(said, asked):
+        return None
+    return sentences[-1], " ".join(sentences[:-1])

@@ -58,11 +58,11 @@ from dynclevr.language.asides import (addressed_as_named, addressees_dropped, as
                                       heading_dropped, headlines_dropped, hedges_dropped, hooks_dropped,
                                       hypothesis_as_asked, in_verse, interjections_dropped, log_stamp_dropped,
                                       owners_dropped, person_remark_dropped, preamble_dropped, prompt_dropped,
-                                      proof_as_asked, radio_as_asked, ramble_dropped, remark_after_dropped,
-                                      requested_as_asked, restatements_read, script_cues_dropped,
-                                      simile_closing_dropped, soothing_dropped, speaker_asides_dropped,
-                                      speaker_clauses_dropped, ticket_fields_read, verse_joined, wagers_read,
-                                      word_given_dropped)
+                                      proof_as_asked, radio_as_asked, ramble_dropped, reference_dropped,
+                                      remark_after_dropped, requested_as_asked, restatements_read, riddles_dropped,
+                                      script_cues_dropped, simile_closing_dropped, soothing_dropped,
+                                      speaker_asides_dropped, speaker_clauses_dropped, ticket_fields_read,
+                                      verse_joined, wagers_read, word_given_dropped)
 from dynclevr.language.checks import (acceleration_unread, acceleration_unsaid, answer_form_unmatched, anything_unasked,
                                       attribute_unsaid, both_imagined, class_asked_as_which, clock_unasked,
                                       collision_at_start, collision_time_dropped, collision_unread, compared_unsaid,
@@ -265,7 +265,8 @@ class QuestionParser:
                              (script_cues_dropped, "nothing, a screenplay's heading and cue"),
                              (description_dropped, "nothing, a heading's flourish"),
                              (dashed_aside_dropped, "nothing, an aside between dashes"),
-                             (headlines_dropped, "nothing, a ticker's headlines")):
+                             (headlines_dropped, "nothing, a ticker's headlines"),
+                             (riddles_dropped, "nothing, a riddle before the question")):
             self._read_cut(texts, parses, cutter, said)
         return parses
 
@@ -383,7 +384,8 @@ class QuestionParser:
         words, trailed = trailing_off_read(words)
         words, given = word_given_dropped(words)
         words, stamped = log_stamp_dropped(words)
-        given += stamped
+        words, referenced = reference_dropped(words)
+        given += stamped + referenced
         trailed += given
         words = closing_mark_added(words)
         words, clause_comma = clause_comma_added(words)

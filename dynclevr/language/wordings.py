@@ -995,6 +995,16 @@ IDIOMS = phrase_table({
     # a dialect's 'right' before a speed says it more ('goin' right fast'), no direction
     **{("right", s): (s,) for s in ("fast", "slow", "slowly")},
     ("speed", "demon"): ("fast", "vehicle"),
+    # a member's question to a minister ('Will the Minister kindly tell this House the colour ...', 'Can the Minister
+    # tell honourable Members which kind ...') and a desk's 'could you please confirm the colour' asks to be told
+    **{(aux, "the", role, *manner, verb, *house): ("tell", "me") for aux in ("will", "would", "can", "could")
+       for role in ("minister", "secretary", "government") for manner in ((), ("kindly",), ("please",),
+                                                                         ("be", "good", "enough", "to"))
+       for verb in ("tell", "inform", "advise") for house in ((), ("the", "house"), ("this", "house"),
+                                                              ("honourable", "members"), ("members",))},
+    **{(aux, "you", *please, confirm, what): ("tell", "me", what) for aux in ("can", "could", "would")
+       for please in ((), ("please",), ("kindly",)) for confirm in ("confirm", "verify")
+       for what in ("the", "what", "which")},
     # an advertiser's 'for a limited time only' (no time of the video), a quiz host's 'For 500 points' (no way it
     # faces) and 'Final answer?'
     **{("for", n, "points"): () for n in ("100", "200", "250", "300", "400", "500", "600", "800", "1000", "a", "the",
