@@ -2488,8 +2488,8 @@ def _said_too(said: list[str], asked: list[str]) -> bool:
 # A koan's riddle before the question ('Does the wind touch the pine, or the pine the wind? Did the bus crash into any
 # other object in the video?'): sentences naming no vehicle, that say nothing the question does not say too
 RIDDLE_SENTENCE = re.compile(r"(?<=[.?!])\s+(?=[A-Z])")
-RIDDLE_TIMES = {"moment", "moments", "instant", "time", "frame", "frames", "last", "first", "second", "seconds", "point",
-                "now", "later", "earlier"}
+RIDDLE_TIMES = {"moment", "moments", "instant", "time", "frame", "frames", "last", "first", "second", "seconds",
+                "point", "now", "later", "earlier"}
 
 
 def riddles_dropped(text: str) -> tuple[str, str] | None:
