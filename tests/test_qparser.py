@@ -5580,3 +5580,25 @@ def test_a_desk_s_ticket_a_member_s_minister_a_voicemail_s_news_and_a_koan_s_rid
     assert reference_dropped(["is", "it", "fast", "at", "frame", "120", "?"])[1] == ()
     assert riddles_dropped("What happens at the start? Is the red car fast?") is None
     assert riddles_dropped("Something was parked. Is the red car fast at the start?") is None
+
+
+def test_a_narrator_s_asides_and_similes_and_a_best_man_s_story_are_read_as_nothing():
+    parser = QuestionParser.load()
+    astonished, composure, least, story = parser.parse_batch([
+        "When the utility bike and the grey double-decker collide, is the utility bike, to the considerable "
+        "astonishment of all who observe it, faster than the grey double-decker?",
+        "Is the green fighter jet floating in the air at the beginning, with all the serene composure of a lady above "
+        "reproach?",
+        "Was the red one standing perfectly still, not moving in the least, at the moment it collides with the cyan "
+        "dirtbike?",
+        "Tom once tried skydiving and screamed the whole way down; anyway, which colour is the vehicle floating at the "
+        "start?"])
+    assert astonished[-2:] == ["get_frame", "faster_velocity"]
+    assert composure == ["Objects", "filter_attributes[green]", "filter_attributes[fighter]", "unique", "start",
+                         "is_floating"]
+    # ('the least' was read as ranking a vehicle among all)
+    assert least[-2:] == ["get_frame", "is_static"]
+    assert story == ["Objects", "start", "filter_floating", "unique", "query_attributes[color]"]
+    # a story that says a state, or an aside that says a time the rest does not, stays
+    assert speaker_clauses_dropped("Tom was parked all day; is the red car fast at the start?", {"tom"}) is None
+    assert speaker_clauses_dropped("Is the red car, as the minutes tick, fast at the start?", {"tick"}) is None

@@ -2047,7 +2047,8 @@ def person_remark_dropped(words: list[str]) -> tuple[list[str], tuple[tuple[str,
 SPEAKER = {"i", "we", "my", "our", "me", "us"}
 CLAUSE_LINKS = {"and", "but", "so", "for", "then", "now", "okay", "ok", "well", "oh", "because", "cause", "cos", "yet",
                 "though", "although", "which", "that", "since"}
-SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"],
+SIMILE_OPENERS = (["like"], ["just", "like"], ["the", "way"], ["sure", "as"], ["as", "though"], ["as", "if"],
+                  ["with", "all", "the"],   # a narrator's ('..., with all the serene composure of a lady?')
                   # ... and a blessing closing it ('..., may they both find peace?', '..., God keep them both?')
                   *(["may", who] for who in ("they", "it", "he", "she", "both", "the")), ["god"], ["bless"],
                   ["rest", "in", "peace"], ["heaven"], ["lord"])
@@ -2080,6 +2081,14 @@ def _filler(words: list[str], unknown: set[str]) -> bool:
     """Whether a clause holds a word of `unknown` and says nothing of the domain."""
     return bool(set(words) & unknown) and not mentions(words) and not _says_something(words) and not set(words) & (
         set(COLOR_NAMES) | OTHER_COLOURS | PEOPLE | OBJECT_WORDS | UNREMARKED | {"?"})
+
+
+# what opens an aside between commas ('as some in the village fear', 'so eager and so impatient', 'with all the
+# sobriety one hopes for', 'an event which must surely be the talk of the county'), and what it may not say
+ASIDE_OPENERS = {"as", "to", "with", "so", "an", "which", "by", "in", "much", "being"}
+ASIDE_KEEPS = NEGATIONS | CONDITION_OPENERS | IMAGINING | IMAGINED_SAID | DURATIONS | {
+    "then", "there", "when", "while", "until", "moment", "moments", "instant", "time", "frame", "frames", "second",
+    "seconds", "minute", "minutes", "now", "later", "earlier"}
 
 
 def _news(words: list[str], unknown: set[str], kept: set[str] = frozenset()) -> bool:
@@ -2115,9 +2124,12 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
     # (a heading before the question's colon or dash: a bug report's 'Regression since 2.0.5 --'; in a letter, its
     # news before the question's sentence: 'Dear one, the plums are ripe and I've made jam; suppose ...?')
     heading = next((k for k, m in enumerate(marks[:asked]) if ":" in m or m.strip()[:1] in ("-", "—", "–")), -1)
+    # (and anyone's news before it that names nothing and says no time or state: 'Tom once tried skydiving and
+    # screamed the whole way down; anyway, which colour ...?')
+    told = max([-1] + [k for k, m in enumerate(marks[:asked]) if re.search(r"[.;!:]", m)])
     letter = bool(LETTER.match(text))
     if letter:
-        heading = max([heading] + [k for k, m in enumerate(marks[:asked]) if re.search(r"[.;!:]", m)])
+        heading = max(heading, told)
     dropped = []
     for k, clause in enumerate(clauses):
         words = tokenize(VERSION.sub(" version ", clause))   # ('on 1.8.0', 'v3.8': no time)
@@ -2131,9 +2143,16 @@ def speaker_clauses_dropped(text: str, unknown: set[str]) -> tuple[str, str] | N
         ours = words[:1] in (["before"], ["while"], ["until"]) and words[1:2] and words[1] in SPEAKER
         if ours and _filler(words[2:], unknown):
             own, words = True, words[2:]
-        news = _news(words, unknown) if letter and k <= heading else \
-            _filler(words, unknown) or opening in SPEAKER and _news(words, unknown, SPEAKER_KEEPS)
-        if not own or not news:
+        # ... and an aside between commas that says nothing the rest does not say too ('Is the utility bike, to the
+        # considerable astonishment of all who observe it, faster than ...?')
+        aside = 0 < k < len(clauses) - 1 and marks[k - 1].strip() == marks[k].strip() == "," and \
+            opening in ASIDE_OPENERS
+        own = own or k <= told
+        news = own and (_news(words, unknown) if letter and k <= heading else _filler(words, unknown)) or \
+            (own and opening in SPEAKER or k <= told) and _news(words, unknown, SPEAKER_KEEPS) or \
+            aside and _news(words, unknown, ASIDE_KEEPS) and _said_too(words, tokenize(" ".join(
+                c for j, c in enumerate(clauses) if j != k)))
+        if not news:
             head, like, tail = clause.partition(" like ")   # a simile closing a clause ('engine open like my old ...')
             if like and head.strip() and _filler(tokenize(like + tail), unknown):
                 dropped.append((like + tail).strip())

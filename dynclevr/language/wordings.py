@@ -995,6 +995,8 @@ IDIOMS = phrase_table({
     # a dialect's 'right' before a speed says it more ('goin' right fast'), no direction
     **{("right", s): (s,) for s in ("fast", "slow", "slowly")},
     ("speed", "demon"): ("fast", "vehicle"),
+    # 'not moving in the least', 'without the least hurry' (no ranking among all)
+    ("in", "the", "least"): ("at", "all"), ("without", "the", "least"): ("without", "any"),
     # a member's question to a minister ('Will the Minister kindly tell this House the colour ...', 'Can the Minister
     # tell honourable Members which kind ...') and a desk's 'could you please confirm the colour' asks to be told
     **{(aux, "the", role, *manner, verb, *house): ("tell", "me") for aux in ("will", "would", "can", "could")
