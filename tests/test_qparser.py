@@ -5602,3 +5602,20 @@ def test_a_narrator_s_asides_and_similes_and_a_best_man_s_story_are_read_as_noth
     # a story that says a state, or an aside that says a time the rest does not, stays
     assert speaker_clauses_dropped("Tom was parked all day; is the red car fast at the start?", {"tom"}) is None
     assert speaker_clauses_dropped("Is the red car, as the minutes tick, fast at the start?", {"tick"}) is None
+
+
+def test_a_texter_s_afterthought_never_narrows_a_vehicle_to_its_category_and_spelt_emoji_are_decorations():
+    parser = QuestionParser.load()
+    drama, emoji, unseen, stopping = parser.parse_batch([
+        "is the gray mountain bike slower than the blue motorbike initially? bike drama fr",
+        "sparkles emoji sparkles emoji what kind of vehicle is floating at the very beginning of the vid",
+        "The footage stops here, like a rope team halted below the Hillary Step. In the frames we cannot yet see, "
+        "will the aeroplane collide with anything?",
+        "Does the red car hit the bus after the stopping?"])
+    # (the afterthought's 'bike' made the mountain bike any bicycle)
+    assert drama[:4] == ["Objects", "filter_attributes[gray]", "filter_attributes[mountain_bike]", "unique"]
+    assert emoji == ["Objects", "start", "filter_floating", "unique", "query_attributes[shape]"]
+    assert unseen[0] == stopping[0] == "futureEvents"
+    # an afterthought that names another kind still corrects the question
+    assert parser.parse("Is the red car fast at the start? The sedan, I mean.")[:3] == [
+        "Objects", "filter_attributes[red]", "filter_attributes[sedan]"]

@@ -968,9 +968,11 @@ def _one_vehicle(words: list[str]) -> tuple | None:
 
 
 def _meant(ref: tuple, meant: tuple) -> tuple:
-    """A mention's values with what the words after the question say of it instead."""
+    """A mention's values with what the words after the question say of it instead (a kind that only says the
+    mention's again, more broadly, is none: '... the gray mountain bike ...? bike drama fr' is no bicycle)."""
     colour = [v for v in meant if v in COLOR_NAMES] or [v for v in ref if v in COLOR_NAMES]
-    kind = [v for v in meant if v not in COLOR_NAMES] or [v for v in ref if v not in COLOR_NAMES]
+    kind = [v for v in meant if v not in COLOR_NAMES and not generalises((v,), ref)] or \
+        [v for v in ref if v not in COLOR_NAMES]
     return tuple(colour + kind)
 
 

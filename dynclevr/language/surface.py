@@ -500,8 +500,17 @@ def emoji_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
     """The emoji that say words (`EMOJI_WORDS`, `EMOJI_CLASSES`, '💥', '⏱️', '⏭️', '❓') read as those words.
     With the words read so, or the words as they are and ()."""
     out = [w for w in words if w != "\ufe0f"]   # (the emoji presentation selector)
+    # an emoji written out in words decorates ('sparkles emoji sparkles emoji what kind ...', 'plane emoji, the red
+    # jet: ...'): it is no vehicle
+    # (one in brackets is a post's: `asides.prompt_dropped`)
+    named = [k for k in range(len(out) - 1) if out[k + 1] in ("emoji", "emojis") and out[k].isalpha()
+             and out[:k].count("(") <= out[:k].count(")")]
+    spelt = tuple((" ".join(out[k:k + 2]), "nothing, a decoration") for k in named)
+    out = [w for k, w in enumerate(out) if k not in named and k - 1 not in named]
+    if spelt and out[:1] == [","]:
+        out = out[1:]
     if not set(out) & {*EMOJI_WORDS, *EMOJI_CLASSES, "💥", "⏱", "🎬", "⏭", "❓"}:
-        return words, ()
+        return (out, spelt) if spelt else (words, ())
     timed = bool(START_WORDS & set(out)) or "after" in out
     # after the question's mark, or beside the vehicle's own name ('... at the start?? 🚗💨', 'the green airliner
     # ✈️'), an emoji only decorates
@@ -527,7 +536,7 @@ def emoji_as_said(words: list[str]) -> tuple[list[str], tuple[tuple[str, str], .
             continue
         read.append((w, word))
         said += word.split()
-    return (said, tuple(read)) if read else (words, ())
+    return (said, spelt + tuple(read)) if read or spelt else (words, ())
 
 
 # A telegram's marks and words ('RED SEDAN SPEED AT START QUERY', 'FILM STOPPED PART WAY STOP WILL ... COLLIDE

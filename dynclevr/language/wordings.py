@@ -1066,9 +1066,11 @@ IDIOMS = phrase_table({
     **{(scrub, "through", "the", *whole, film): ("in", "the", "video")
        for scrub in ("scrubbing", "scrolling", "skimming", "watching", "looking")
        for whole in ((), ("entire",), ("whole",)) for film in ("shot", "clip", "video", "footage", "reel", "take")},
-    **{(*within, "the", part, *who, "do", "not", *get, "see"): ("after", "the", "video", "ends")
-       for within in (("in",), ()) for part in ("part", "bit", "stretch")
-       for who in (("we",), ("you",), ("that", "we"), ("that", "you")) for get in (("get", "to"), ())},
+    **{(*within, "the", part, *who, *cannot, *get, "see"): ("after", "the", "video", "ends")
+       for within in (("in",), ()) for part in ("part", "bit", "stretch", "frames")
+       for who in (("we",), ("you",), ("that", "we"), ("that", "you"))
+       for cannot in (("do", "not"), ("can", "not", "yet"), ("cannot", "yet"), ("do", "not", "yet"))
+       for get in (("get", "to"), ())},
     **{(past, "the", last, "frame", *of): ("after", "the", "video", "ends")
        for past in ("past", "beyond", "after") for last in ("final", "last")
        for of in ((), *(("of", the, *cut, film) for the in ("the", "this") for cut in ((), ("truncated",), ("cut",))
@@ -1122,6 +1124,8 @@ IDIOMS = phrase_table({
     # a video stopped ('beyond the stopped frames'; 'stopped' was read as a vehicle's)
     **{(past, "the", stopped, film): ("after", "the", "video", "ends") for past in ("after", "beyond", "past")
        for stopped in ("stopped", "halted", "frozen", "paused") for film in ("frames", "vision", *FILM_WORDS)},
+    **{(past, "the", stopping): ("after", "the", "video", "ends") for past in ("after", "beyond", "past")
+       for stopping in ("stopping", "pausing", "cutoff")},
     **{("when", "the", film, be, "first", shown): _START for film in ("scene", "video", "clip", "film", "footage")
        for be in ("is", "was") for shown in ("shown", "unveiled", "revealed", "played", "screened", "opened")},
     # 'the picture' as older people say the film ('when the picture first began'), not 'comes into the picture'

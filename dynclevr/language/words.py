@@ -119,6 +119,7 @@ ASKING_FOR = (*IMPERATIVES, ["identify"], ["determine"], ["report"], ["find"], [
 AGREEING_TAGS = (["right"], ["correct"], ["true"], ["yes"], ["no"], ["or", "not"], ["or", "nah"], ["or", "nope"],
                  ["is", "that", "right"], ["is", "that", "correct"], ["am", "i", "right"], ["am", "i", "correct"],
                  ["would", "you", "say", "so"], ["right", "or", "wrong"], ["is", "that", "true"], ["is", "it", "true"],
+                 ["is", "that", "the", "truth"], ["is", "that", "the", "truth", "of", "it"],
                  ["straight", "up"], ["for", "real"], ["no", "cap"], ["deadass"], ["fr"])   # and slang's
 # ... of them, those that ask alone whether what was said before is right ('? Is that right?', '. True or false?')
 CHECKING_TAGS = [t for t in AGREEING_TAGS if len(t) > 2] + [["true", "or", "false"]]
