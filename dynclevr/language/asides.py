@@ -2086,9 +2086,11 @@ def _filler(words: list[str], unknown: set[str]) -> bool:
 # what opens an aside between commas ('as some in the village fear', 'so eager and so impatient', 'with all the
 # sobriety one hopes for', 'an event which must surely be the talk of the county'), and what it may not say
 ASIDE_OPENERS = {"as", "to", "with", "so", "an", "which", "by", "in", "much", "being"}
-ASIDE_KEEPS = NEGATIONS | CONDITION_OPENERS | IMAGINING | IMAGINED_SAID | DURATIONS | {
-    "then", "there", "when", "while", "until", "moment", "moments", "instant", "time", "frame", "frames", "second",
-    "seconds", "minute", "minutes", "now", "later", "earlier"}
+# the words that say a moment, which an aside or a riddle before the question may not say
+MOMENTS = {"moment", "moments", "instant", "time", "frame", "frames", "last", "first", "second", "seconds", "minute",
+           "minutes", "point", "now", "later", "earlier"}
+ASIDE_KEEPS = NEGATIONS | CONDITION_OPENERS | IMAGINING | IMAGINED_SAID | DURATIONS | MOMENTS | {
+    "then", "there", "when", "while", "until"}
 
 
 def _news(words: list[str], unknown: set[str], kept: set[str] = frozenset()) -> bool:
@@ -2507,8 +2509,6 @@ def _said_too(said: list[str], asked: list[str]) -> bool:
 # A koan's riddle before the question ('Does the wind touch the pine, or the pine the wind? Did the bus crash into any
 # other object in the video?'): sentences naming no vehicle, that say nothing the question does not say too
 RIDDLE_SENTENCE = re.compile(r"(?<=[.?!])\s+(?=[A-Z])")
-RIDDLE_TIMES = {"moment", "moments", "instant", "time", "frame", "frames", "last", "first", "second", "seconds",
-                "point", "now", "later", "earlier"}
 
 
 def riddles_dropped(text: str) -> tuple[str, str] | None:
@@ -2524,7 +2524,7 @@ def riddles_dropped(text: str) -> tuple[str, str] | None:
     said, asked = catalogue_names(tokenize(" ".join(sentences[:-1])))[0], catalogue_names(tokenize(sentences[-1]))[0]
     # (nor the film or a moment the question points back at: 'Think about the last moment of the clip. Is the grey
     # station wagon slower than the school bus then?')
-    if mentions(said) or set(said) & (FILM_WORDS | RIDDLE_TIMES) or set(asked) & {"then", "there"} or \
+    if mentions(said) or set(said) & (FILM_WORDS | MOMENTS) or set(asked) & {"then", "there"} or \
             not _said_too(said, asked):
         return None
     return sentences[-1], " ".join(sentences[:-1])
